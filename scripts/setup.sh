@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs what hullkit needs on a Debian machine with Node and npm: the Debian packages that are
+# missing, then the npm dependencies. Safe to run again; it does nothing when all is in place.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+debian_packages=(
+  cmake g++ make          # native build
+  emscripten              # the wasm build (emcc, emcmake)
+  catch2 libgmp-dev       # C++ tests (GMP: exact rational checks)
+  libglm-dev              # vector math
+  qhull-bin               # rbox/qconvex: test inputs and cross-checks
+  chromium                # browser tests (driven by playwright-core)
+)
+
+missing=()
+for package in "${debian_packages[@]}"; do
+  case "$package" in \#*) continue ;; esac
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing Debian packages: ${missing[*]}"
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# npm dependencies, when node_modules is missing or older than the lock file.
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: installing npm dependencies"
+  npm ci --no-audit --no-fund --loglevel=error
+fi

@@ -1,0 +1,129 @@
+// Independent checks of a hull for the tests: exact rational arithmetic (GMP), nothing shared
+// with the library's own side tests.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hullkit/hull.hpp"
+
+namespace hullkit_test {
+
+/// Exact sign of ((b-a) x (c-a)) . (d-a); a double filter with a generous bound, then GMP.
+inline int exact_orient3d(const double* a, const double* b, const double* c, const double* d) {
+    const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
+    const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+    const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
+    const double det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+    const double permanent = std::fabs(dx) * (std::fabs(by * cz) + std::fabs(bz * cy)) +
+                             std::fabs(dy) * (std::fabs(bz * cx) + std::fabs(bx * cz)) +
+                             std::fabs(dz) * (std::fabs(bx * cy) + std::fabs(by * cx));
+    // Far above the rounding error of this expression (about 1e-15 * permanent, differences included).
+    if (std::fabs(det) > 1e-10 * permanent && std::isfinite(permanent)) return det > 0 ? 1 : -1;
+    auto q = [](double v) { return mpq_class(v); };
+    const mpq_class ebx = q(b[0]) - q(a[0]), eby = q(b[1]) - q(a[1]), ebz = q(b[2]) - q(a[2]);
+    const mpq_class ecx = q(c[0]) - q(a[0]), ecy = q(c[1]) - q(a[1]), ecz = q(c[2]) - q(a[2]);
+    const mpq_class edx = q(d[0]) - q(a[0]), edy = q(d[1]) - q(a[1]), edz = q(d[2]) - q(a[2]);
+    const mpq_class exact =
+        edx * (eby * ecz - ebz * ecy) + edy * (ebz * ecx - ebx * ecz) + edz * (ebx * ecy - eby * ecx);
+    return sgn(exact);
+}
+
+/// Exact test that c lies on the line through a and b.
+inline bool exact_collinear(const double* a, const double* b, const double* c) {
+    auto q = [](double v) { return mpq_class(v); };
+    const mpq_class ex = q(b[0]) - q(a[0]), ey = q(b[1]) - q(a[1]), ez = q(b[2]) - q(a[2]);
+    const mpq_class fx = q(c[0]) - q(a[0]), fy = q(c[1]) - q(a[1]), fz = q(c[2]) - q(a[2]);
+    return ey * fz - ez * fy == 0 && ez * fx - ex * fz == 0 && ex * fy - ey * fx == 0;
+}
+
+/// Everything wrong with `hull` as the convex hull of `points`; empty when it is right:
+/// - indices in range, no zero-area triangle;
+/// - a closed two-manifold: every directed edge once and its reverse once, V - E + F = 2;
+/// - every input point on or below every face plane (exact), and the hull has volume.
+inline std::vector<std::string> hull_problems(const std::vector<double>& points, const hullkit::Hull& hull) {
+    std::vector<std::string> problems;
+    auto fail = [&](const std::string& what) {
+        if (problems.size() < 20) problems.push_back(what);
+    };
+    const std::size_t n = points.size() / 3;
+    const auto& t = hull.triangles;
+    if (!hull.ok()) return {"hull failed: " + hull.error};
+    if (t.empty() || t.size() % 3 != 0) return {"triangle array size " + std::to_string(t.size())};
+    for (std::uint32_t i : t)
+        if (i >= n) return {"index " + std::to_string(i) + " out of range"};
+    auto at = [&](std::uint32_t i) { return &points[3 * i]; };
+
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (std::size_t f = 0; f < t.size(); f += 3) {
+        if (exact_collinear(at(t[f]), at(t[f + 1]), at(t[f + 2])))
+            fail("triangle " + std::to_string(f / 3) + " has zero area");
+        for (int k = 0; k < 3; ++k) ++directed[{t[f + k], t[f + (k + 1) % 3]}];
+    }
+    for (const auto& [edge, count] : directed) {
+        const auto reverse = directed.find({edge.second, edge.first});
+        if (count != 1 || reverse == directed.end() || reverse->second != 1)
+            fail("edge " + std::to_string(edge.first) + "->" + std::to_string(edge.second) +
+                 " is not used once each way");
+    }
+    std::set<std::uint32_t> used(t.begin(), t.end());
+    const long long v = static_cast<long long>(used.size());
+    const long long f = static_cast<long long>(t.size() / 3);
+    const long long e = static_cast<long long>(directed.size() / 2);
+    if (v - e + f != 2) fail("Euler characteristic " + std::to_string(v - e + f));
+    if (std::vector<std::uint32_t>(used.begin(), used.end()) != hull.vertices) fail("vertices differ from the triangles' corners");
+
+    for (std::size_t face = 0; face < t.size(); face += 3) {
+        for (std::uint32_t p = 0; p < n; ++p) {
+            if (exact_orient3d(at(t[face]), at(t[face + 1]), at(t[face + 2]), at(p)) > 0) {
+                fail("point " + std::to_string(p) + " is above face " + std::to_string(face / 3));
+                break;
+            }
+        }
+    }
+    if (!(hull.volume > 0)) fail("volume " + std::to_string(hull.volume));
+    return problems;
+}
+
+inline std::string join(const std::vector<std::string>& lines) {
+    std::ostringstream out;
+    for (const auto& line : lines) out << line << "\n";
+    return out.str();
+}
+
+/// Seeded point clouds shared by the tests and benchmarks.
+enum class Cloud { Cube, Ball, Sphere };
+
+inline std::vector<double> random_cloud(Cloud kind, std::size_t n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::normal_distribution<double> gauss;
+    std::vector<double> xyz;
+    xyz.reserve(3 * n);
+    while (xyz.size() < 3 * n) {
+        double p[3];
+        if (kind == Cloud::Sphere) {
+            for (double& c : p) c = gauss(rng);
+            const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            if (r == 0) continue;
+            for (double& c : p) c /= r;
+        } else {
+            for (double& c : p) c = unit(rng);
+            if (kind == Cloud::Ball && p[0] * p[0] + p[1] * p[1] + p[2] * p[2] > 1.0) continue;
+        }
+        xyz.insert(xyz.end(), p, p + 3);
+    }
+    return xyz;
+}
+
+}  // namespace hullkit_test

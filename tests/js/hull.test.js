@@ -1,0 +1,120 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync, rmSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+import createHullkit, { HullkitError } from '../../wasm/hullkit.js';
+import { hullProblems, randomBall, seededRandom } from './exact.js';
+
+const root = fileURLToPath(new URL('../..', import.meta.url));
+const cli = join(root, 'build/native/hullkit');
+const hullkit = await createHullkit();
+
+function cubeCorners(half = 1) {
+  const xyz = [];
+  for (let i = 0; i < 8; i++) xyz.push(i & 1 ? half : -half, i & 2 ? half : -half, i & 4 ? half : -half);
+  return new Float64Array(xyz);
+}
+
+test('hull: tetrahedron gives 4 outward triangles, volume and area', () => {
+  const result = hullkit.hull(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]));
+  assert.ok(result.triangles instanceof Uint32Array);
+  assert.ok(result.vertices instanceof Uint32Array);
+  assert.equal(result.triangles.length, 12);
+  assert.deepEqual([...result.vertices], [0, 1, 2, 3]);
+  assert.ok(Math.abs(result.volume - 1 / 6) < 1e-15);
+  assert.ok(Math.abs(result.area - (1.5 + Math.sqrt(3) / 2)) < 1e-15);
+  assert.deepEqual(hullProblems(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]), result), []);
+});
+
+test('hull: cube corners give 12 triangles of volume 8', () => {
+  const xyz = cubeCorners();
+  const result = hullkit.hull(xyz, { algorithm: 'giftwrap' });
+  assert.equal(result.triangles.length / 3, 12);
+  assert.equal(result.volume, 8);
+  assert.equal(result.area, 24);
+  assert.deepEqual(hullProblems(xyz, result), []);
+});
+
+test('hull: random ball, exact containment checked with BigInt arithmetic', () => {
+  for (const seed of [1, 2, 3]) {
+    const xyz = randomBall(1500, seed);
+    const result = hullkit.hull(xyz);
+    assert.deepEqual(hullProblems(xyz, result), [], `seed ${seed}`);
+    assert.equal(result.triangles.length / 3, 2 * result.vertices.length - 4);
+    assert.ok(result.volume > 0.85 * (4 / 3) * Math.PI && result.volume < (4 / 3) * Math.PI);
+  }
+});
+
+test('hull: results are owned by the caller, not views into wasm memory', () => {
+  const first = hullkit.hull(randomBall(500, 4));
+  const copy = first.triangles.slice();
+  // Later calls (with heap growth) must not change an earlier result.
+  for (let i = 0; i < 3; i++) hullkit.hull(randomBall(20000, 10 + i));
+  assert.deepEqual(first.triangles, copy);
+  assert.notEqual(first.triangles.buffer.byteLength, 0);
+});
+
+test('hull: plain arrays are accepted', () => {
+  const fromArray = hullkit.hull([...cubeCorners()]);
+  assert.deepEqual(fromArray, hullkit.hull(cubeCorners()));
+});
+
+test('hull: bad input throws HullkitError with a clear message', () => {
+  assert.throws(() => hullkit.hull(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0])), {
+    name: 'HullkitError', message: /at least 4 points, got 3/,
+  });
+  assert.throws(() => hullkit.hull(new Float64Array(10)), { message: /10 coordinates is not a whole number/ });
+  assert.throws(() => hullkit.hull(new Float64Array(12).fill(1)), { message: /identical/ });
+  assert.throws(() => hullkit.hull([0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3]), { message: /collinear/ });
+  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), { message: /coplanar/ });
+  const withNaN = cubeCorners();
+  withNaN[3 * 6 + 2] = NaN;
+  assert.throws(() => hullkit.hull(withNaN), (error) => {
+    assert.ok(error instanceof HullkitError);
+    assert.match(error.message, /point 6 has a non-finite z coordinate \(nan\)/);
+    assert.equal(error.pointIndex, 6);
+    return true;
+  });
+  assert.throws(() => hullkit.hull(cubeCorners(), { algorithm: 'qhull' }), { message: /unknown algorithm "qhull" \(known: giftwrap\)/ });
+  assert.throws(() => hullkit.hull(cubeCorners(), { algoritm: 'giftwrap' }), { message: /unknown option "algoritm"/ });
+  assert.throws(() => hullkit.hull('1 2 3'), TypeError);
+  assert.throws(() => hullkit.hull(null), TypeError);
+  // The module keeps working after errors.
+  assert.equal(hullkit.hull(cubeCorners()).volume, 8);
+});
+
+test('hull: wasm and the native CLI return the same triangles', (t) => {
+  assert.ok(existsSync(cli), `native CLI missing at ${cli}: run npm run build`);
+  const dir = mkdtempSync(join(tmpdir(), 'hullkit-js-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
+  const random = seededRandom(99);
+  const inputs = {
+    ball: randomBall(3000, 5),
+    cube: cubeCorners(3),
+    gaussianish: Float64Array.from({ length: 3 * 800 }, () => random() + random() + random() - 1.5),
+  };
+  for (const [name, xyz] of Object.entries(inputs)) {
+    const file = join(dir, `${name}.txt`);
+    const lines = [];
+    // %.17g-equivalent: JS prints the shortest string that reads back to the same double.
+    for (let i = 0; i < xyz.length; i += 3) lines.push(`${xyz[i]} ${xyz[i + 1]} ${xyz[i + 2]}`);
+    writeFileSync(file, lines.join('\n') + '\n');
+    const json = JSON.parse(execFileSync(cli, ['hull', file, '--format', 'json'], { encoding: 'utf8' }));
+    const wasm = hullkit.hull(xyz);
+    assert.deepEqual([...wasm.triangles], json.triangles.flat(), name);
+    assert.deepEqual([...wasm.vertices], json.vertices, name);
+    assert.equal(wasm.volume, json.volume, name);
+    assert.equal(wasm.area, json.area, name);
+  }
+  // The same error for the same bad input.
+  const flat = join(dir, 'flat.txt');
+  writeFileSync(flat, '0 0 0\n1 0 0\n0 1 0\n1 1 0\n');
+  const run = spawnSync(cli, ['hull', flat], { encoding: 'utf8' });
+  assert.equal(run.status, 2);
+  assert.match(run.stderr, /coplanar/);
+  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), /coplanar/);
+});
