@@ -7,7 +7,7 @@ what=${1:-all}
 jobs=$(nproc)
 
 if [ "$what" = all ] || [ "$what" = native ]; then
-  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DHULLKIT_BENCH=OFF >/dev/null
   cmake --build build/native -j "$jobs"
 fi
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what hullkit needs on a Debian machine with Node and npm: the Debian packages that are
 # missing, then the npm dependencies. Safe to run again; it does nothing when all is in place.
+# `scripts/setup.sh bench` also installs the peer libraries the benchmarks compare against.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,6 +13,10 @@ debian_packages=(
   qhull-bin               # rbox/qconvex: test inputs and cross-checks
   chromium                # browser tests (driven by playwright-core)
 )
+
+if [ "${1:-}" = bench ]; then
+  debian_packages+=(libqhull-dev libcgal-dev libmpfr-dev)
+fi
 
 missing=()
 for package in "${debian_packages[@]}"; do

@@ -116,9 +116,11 @@ TEST_CASE("giftwrap: the single-pass scan finds the same hull as the seed's rest
           hullkit::giftwrap(cube, GiftwrapScan::Restart).triangles);
 }
 
-TEST_CASE("giftwrap: bad input is reported, not computed") {
-    auto error_of = [](const std::vector<double>& xyz) { return hullkit::giftwrap(xyz).error; };
-    CHECK_THAT(error_of({}), Catch::Contains("at least 4 points, got 0"));
+TEST_CASE("giftwrap: the seed's epsilon reports degenerate input instead of computing it") {
+    hullkit::HullOptions seed;
+    seed.algorithm = hullkit::Algorithm::Giftwrap;
+    seed.side_test = hullkit::SideTest::Seed;
+    auto error_of = [&](const std::vector<double>& xyz) { return hullkit::hull(xyz, seed).error; };
     CHECK_THAT(error_of({0, 0, 0, 1, 0, 0, 0, 1, 0}), Catch::Contains("at least 4 points, got 3"));
     CHECK_THAT(error_of({1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3}), Catch::Contains("identical"));
     CHECK_THAT(error_of({0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, -5, -5, -5}), Catch::Contains("collinear"));
@@ -128,7 +130,12 @@ TEST_CASE("giftwrap: bad input is reported, not computed") {
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j) tilted.insert(tilted.end(), {double(i), double(j), 2.0 * i + 3.0 * j - 1.0});
     CHECK_THAT(error_of(tilted), Catch::Contains("coplanar"));
+    // In general position it finds the exact hull.
+    const auto ball = hullkit_test::random_cloud(Cloud::Ball, 1000, 3);
+    CHECK(hullkit::hull(ball, seed).triangles == hullkit::giftwrap(ball).triangles);
+}
 
+TEST_CASE("giftwrap: non-finite coordinates are reported with the point's index") {
     auto xyz = cube_corners();
     xyz[3 * 5 + 1] = std::numeric_limits<double>::quiet_NaN();
     const auto nan = hullkit::giftwrap(xyz);
@@ -148,5 +155,7 @@ TEST_CASE("giftwrap: hullkit::hull dispatches to gift wrapping") {
     hullkit::Algorithm parsed{};
     CHECK(hullkit::parse_algorithm("giftwrap", &parsed));
     CHECK(std::string(hullkit::algorithm_name(parsed)) == "giftwrap");
+    CHECK(hullkit::parse_algorithm("quickhull", &parsed));
+    CHECK(std::string(hullkit::algorithm_name(parsed)) == "quickhull");
     CHECK_FALSE(hullkit::parse_algorithm("qhull", &parsed));
 }

@@ -29,7 +29,8 @@ inline int exact_orient3d(const double* a, const double* b, const double* c, con
                              std::fabs(dy) * (std::fabs(bz * cx) + std::fabs(bx * cz)) +
                              std::fabs(dz) * (std::fabs(bx * cy) + std::fabs(by * cx));
     // Far above the rounding error of this expression (about 1e-15 * permanent, differences included).
-    if (std::fabs(det) > 1e-10 * permanent && std::isfinite(permanent)) return det > 0 ? 1 : -1;
+    // Trusted only far from underflow and overflow (1e-250 < permanent < 1e250).
+    if (permanent > 1e-250 && permanent < 1e250 && std::fabs(det) > 1e-10 * permanent) return det > 0 ? 1 : -1;
     auto q = [](double v) { return mpq_class(v); };
     const mpq_class ebx = q(b[0]) - q(a[0]), eby = q(b[1]) - q(a[1]), ebz = q(b[2]) - q(a[2]);
     const mpq_class ecx = q(c[0]) - q(a[0]), ecy = q(c[1]) - q(a[1]), ecz = q(c[2]) - q(a[2]);

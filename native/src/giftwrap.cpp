@@ -1,8 +1,6 @@
 #include "hullkit/giftwrap.hpp"
 
 #include <algorithm>
-#include <cfloat>
-#include <cmath>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -11,73 +9,15 @@
 #include <glm/glm.hpp>
 
 #include "hull_internal.hpp"
+#include "planar.hpp"
+#include "sides.hpp"
 
-namespace hullkit {
+namespace hullkit::detail {
 namespace {
 
 using Index = std::uint32_t;
 constexpr Index kNone = ~Index{0};
 
-glm::dvec3 vec(const double* p) { return {p[0], p[1], p[2]}; }
-
-/// The seed document's side tests: signed distances (unit normals) compared with an epsilon
-/// scaled to the taxicab extent of the cloud. Signs: +1 above/left, -1 below/right, 0 within eps.
-class SeedEpsilon {
-public:
-    explicit SeedEpsilon(PointSpan points) {
-        glm::dvec3 lo(0.0), hi(0.0);
-        if (points.count > 0) lo = hi = vec(points[0]);
-        for (std::size_t i = 1; i < points.count; ++i) {
-            lo = glm::min(lo, vec(points[i]));
-            hi = glm::max(hi, vec(points[i]));
-        }
-        const glm::dvec3 extent = hi - lo;
-        eps_2d_ = DBL_EPSILON * (extent.x + extent.y);
-        eps_3d_ = DBL_EPSILON * (extent.x + extent.y + extent.z);
-    }
-
-    /// Step 2's test on the flattened points: side of c from the directed line a->b in x-y.
-    int orient_xy(const double* a, const double* b, const double* c) const {
-        return orient_projected(a, b, c, 0, 1, eps_2d_);
-    }
-
-    /// Side of c from a->b after dropping one axis, (i, j) the kept axes in cyclic order.
-    int orient_in_plane(const double* a, const double* b, const double* c, int i, int j) const {
-        return orient_projected(a, b, c, i, j, eps_3d_);
-    }
-
-    /// Side of d from the plane of a, b, c; "above" is where (b-a) x (c-a) points.
-    int orient3d(const double* a, const double* b, const double* c, const double* d) const {
-        const glm::dvec3 pa = vec(a);
-        const glm::dvec3 n = glm::cross(vec(b) - pa, vec(c) - vec(b));
-        const double length = glm::length(n);
-        if (length == 0.0) return 0;
-        return sign(glm::dot(n, vec(d) - pa) / length, eps_3d_);
-    }
-
-    /// Whether c lies on the line through a and b (within eps_3D).
-    bool collinear(const double* a, const double* b, const double* c) const {
-        const glm::dvec3 e = vec(b) - vec(a);
-        const double length = glm::length(e);
-        if (length == 0.0) return true;
-        return glm::length(glm::cross(e, vec(c) - vec(a))) / length <= eps_3d_;
-    }
-
-private:
-    static int sign(double distance, double eps) { return distance > eps ? 1 : (distance < -eps ? -1 : 0); }
-
-    static int orient_projected(const double* a, const double* b, const double* c, int i, int j,
-                                double eps) {
-        const double ex = b[i] - a[i];
-        const double ey = b[j] - a[j];
-        const double length = std::hypot(ex, ey);
-        if (length == 0.0) return 0;
-        return sign((ex * (c[j] - a[j]) - ey * (c[i] - a[i])) / length, eps);
-    }
-
-    double eps_2d_ = 0.0;
-    double eps_3d_ = 0.0;
-};
 
 std::uint64_t edge_key(Index a, Index b) {
     if (a > b) std::swap(a, b);
@@ -91,43 +31,44 @@ public:
     GiftWrapper(PointSpan points, std::vector<Index> ids, const Predicates& predicates, GiftwrapScan scan)
         : points_(points), ids_(std::move(ids)), pred_(predicates), scan_(scan) {}
 
-    Hull run() {
-        if (std::string why = volume_check(); !why.empty()) return detail::failure(why);
-
+    /// The faces, or false with `error` set.
+    bool run(Polygons& faces, std::string& error) {
+        if (std::string why = volume_check(); !why.empty()) {
+            error = why;
+            return false;
+        }
         std::vector<Index> polygon;
-        if (!first_face(polygon) || !add_face(polygon)) return detail::failure(error_);
+        bool ok = first_face(polygon) && add_face(polygon, faces);
         // Step 4: pop an edge whose other side is unknown and wrap across it.
-        while (!stack_.empty()) {
+        while (ok && !stack_.empty()) {
             const auto [u, v] = stack_.back();
             stack_.pop_back();
             if (edge_faces_[edge_key(u, v)] >= 2) continue;  // found meanwhile from another edge
-            if (!face_across(u, v, polygon) || !add_face(polygon)) return detail::failure(error_);
+            ok = face_across(u, v, polygon) && add_face(polygon, faces);
         }
-        if (std::string why = closure_check(); !why.empty()) return detail::failure(why);
-
-        Hull result;
-        result.triangles = std::move(triangles_);
-        detail::finish_hull(points_, result);
-        return result;
+        if (ok) error_ = closure_check(faces);
+        error = error_;
+        return error.empty();
     }
 
 private:
     const double* at(Index i) const { return points_[i]; }
 
     /// Reports input without volume, naming the case: identical, collinear or coplanar points.
+    /// (With exact sides the caller has settled this; the seed's epsilon may see it differently.)
     std::string volume_check() const {
         const std::string all = "all " + std::to_string(points_.count) + " points ";
-        if (ids_.size() == 1) return all + "are identical: the hull has no volume";
+        if (ids_.size() == 1) return all + "are identical within the seed's epsilon";
         const Index p0 = ids_[0];
         const Index p1 = ids_[1];
         auto off_line = std::find_if(ids_.begin() + 2, ids_.end(),
                                      [&](Index q) { return !pred_.collinear(at(p0), at(p1), at(q)); });
-        if (off_line == ids_.end()) return all + "are collinear: the hull has no volume";
+        if (off_line == ids_.end()) return all + "are collinear within the seed's epsilon";
         const Index p2 = *off_line;
         auto off_plane = std::find_if(ids_.begin() + 2, ids_.end(), [&](Index q) {
             return pred_.orient3d(at(p0), at(p1), at(p2), at(q)) != 0;
         });
-        if (off_plane == ids_.end()) return all + "are coplanar: the hull has no volume";
+        if (off_plane == ids_.end()) return all + "are coplanar within the seed's epsilon";
         return {};
     }
 
@@ -168,10 +109,10 @@ private:
             if (pred_.orient3d(at(u), at(v), at(apart), at(inside)) > 0) std::swap(u, v);
             if (pred_.orient3d(at(u), at(v), at(apart), at(inside)) >= 0)
                 return fail("inconsistent side tests on the first face");
-            return planar_polygon(on_vertical, u, v, apart, polygon);
+            return polygon_of(on_vertical, u, v, apart, polygon);
         }
         // The vertical plane touches the hull along a segment: its two end points form a hull edge.
-        const glm::dvec3 direction = glm::abs(vec(at(b)) - vec(at(a)));
+        const glm::dvec3 direction = glm::abs(vec3(at(b)) - vec3(at(a)));
         const int axis = direction.x >= direction.y ? (direction.x >= direction.z ? 0 : 2)
                                                     : (direction.y >= direction.z ? 1 : 2);
         auto along = [&](Index p, Index q) { return at(p)[axis] < at(q)[axis]; };
@@ -189,7 +130,7 @@ private:
         coplanar_.push_back(u);
         coplanar_.push_back(v);
         coplanar_.push_back(c);
-        if (!planar_polygon(coplanar_, u, v, c, polygon)) return false;
+        if (!polygon_of(coplanar_, u, v, c, polygon)) return false;
         const auto start = std::find(polygon.begin(), polygon.end(), u);
         if (start == polygon.end()) return fail("edge " + edge_name(u, v) + " fell off its face");
         std::rotate(polygon.begin(), start, polygon.end());
@@ -238,51 +179,14 @@ private:
         return kNone;
     }
 
-    /// The strictly convex polygon (2D hull) of the coplanar `members`, counter-clockwise seen
-    /// from the side (b - a) x (c - a) points to.
-    bool planar_polygon(std::vector<Index> members, Index a, Index b, Index c, std::vector<Index>& polygon) {
-        // Drop the axis along which the plane's normal is largest; its sign orients the result.
-        const glm::dvec3 normal = glm::abs(glm::cross(vec(at(b)) - vec(at(a)), vec(at(c)) - vec(at(a))));
-        int order[3] = {0, 1, 2};
-        std::sort(order, order + 3, [&](int p, int q) { return normal[p] > normal[q]; });
-        int i = 0, j = 0, orientation = 0;
-        for (int dropped : order) {
-            i = (dropped + 1) % 3;
-            j = (dropped + 2) % 3;
-            orientation = pred_.orient_in_plane(at(a), at(b), at(c), i, j);
-            if (orientation != 0) break;
-        }
-        if (orientation == 0) return fail("degenerate face at edge " + edge_name(a, b));
-
-        std::sort(members.begin(), members.end(), [&](Index p, Index q) {
-            if (at(p)[i] != at(q)[i]) return at(p)[i] < at(q)[i];
-            if (at(p)[j] != at(q)[j]) return at(p)[j] < at(q)[j];
-            return p < q;
-        });
-        members.erase(std::unique(members.begin(), members.end()), members.end());
-        // Andrew's monotone chain, dropping points on polygon edges (strict turns only).
-        polygon.clear();
-        auto turns_left = [&](Index p, Index q, Index r) { return pred_.orient_in_plane(at(p), at(q), at(r), i, j) > 0; };
-        auto chain = [&](auto first, auto last) {
-            const std::size_t floor = polygon.size();
-            for (auto it = first; it != last; ++it) {
-                while (polygon.size() >= floor + 2 &&
-                       !turns_left(polygon[polygon.size() - 2], polygon.back(), *it))
-                    polygon.pop_back();
-                polygon.push_back(*it);
-            }
-            polygon.pop_back();  // the chain's last point starts the other chain
-        };
-        chain(members.begin(), members.end());
-        chain(members.rbegin(), members.rend());
-        if (polygon.size() < 3) return fail("degenerate face at edge " + edge_name(a, b));
-        if (orientation < 0) std::reverse(polygon.begin(), polygon.end());
-        return true;
+    bool polygon_of(const std::vector<Index>& members, Index a, Index b, Index c, std::vector<Index>& polygon) {
+        if (convex_polygon(points_, pred_, members, a, b, c, polygon)) return true;
+        return fail("degenerate face at edge " + edge_name(a, b));
     }
 
-    /// Records a face: its triangles (a fan), and for each of its edges whose other side is still
+    /// Records a face, and for each of its edges whose other side is still
     /// unknown, that edge reversed on the stack (step 4's "two new edges", for a whole polygon).
-    bool add_face(const std::vector<Index>& polygon) {
+    bool add_face(const std::vector<Index>& polygon, Polygons& faces) {
         const std::size_t m = polygon.size();
         for (std::size_t k = 0; k < m; ++k) {
             const Index p = polygon[k];
@@ -291,16 +195,12 @@ private:
             if (faces > 2) return fail("edge " + edge_name(p, q) + " found on a third face");
             if (faces == 1) stack_.emplace_back(q, p);
         }
-        for (std::size_t k = 1; k + 1 < m; ++k) {
-            triangles_.push_back(polygon[0]);
-            triangles_.push_back(polygon[k]);
-            triangles_.push_back(polygon[k + 1]);
-        }
+        faces.add(polygon.begin(), polygon.end());
         return true;
     }
 
     /// Every edge must border exactly two faces and the surface must be a sphere (V - E + F = 2).
-    std::string closure_check() const {
+    std::string closure_check(const Polygons& faces) const {
         for (const auto& [key, faces] : edge_faces_) {
             if (faces != 2) {
                 return "gift wrapping did not close: edge " +
@@ -308,21 +208,21 @@ private:
                        std::to_string(faces) + " face(s)";
             }
         }
-        std::vector<Index> used(triangles_);
+        std::vector<Index> used(faces.vertices);
         std::sort(used.begin(), used.end());
-        const auto vertices = static_cast<long long>(std::unique(used.begin(), used.end()) - used.begin());
-        const auto faces = static_cast<long long>(triangles_.size() / 3);
-        const long long edges = faces * 3 / 2;
-        if (vertices - edges + faces != 2)
+        const auto v = static_cast<long long>(std::unique(used.begin(), used.end()) - used.begin());
+        const auto f = static_cast<long long>(faces.size());
+        const auto e = static_cast<long long>(edge_faces_.size());
+        if (v - e + f != 2)
             return "gift wrapping produced a surface that is not a sphere (V - E + F = " +
-                   std::to_string(vertices - edges + faces) + ")";
+                   std::to_string(v - e + f) + ")";
         return {};
     }
 
     static std::string edge_name(Index a, Index b) { return std::to_string(a) + "-" + std::to_string(b); }
 
     bool fail(std::string message) {
-        error_ = "near-degenerate input defeats the epsilon side tests: " + std::move(message);
+        error_ = "near-degenerate input defeats the seed's epsilon side tests: " + std::move(message);
         return false;
     }
 
@@ -334,16 +234,19 @@ private:
     std::vector<std::pair<Index, Index>> stack_;           // directed edges u -> v to wrap across
     std::unordered_map<std::uint64_t, int> edge_faces_;    // unordered edge -> faces found on it
     std::vector<Index> coplanar_;                          // scratch: ties of the current apex
-    std::vector<Index> triangles_;
     std::string error_;
 };
 
 }  // namespace
 
-Hull giftwrap(PointSpan points, GiftwrapScan scan) {
-    if (Hull invalid = detail::validate_input(points); !invalid.ok()) return invalid;
-    const SeedEpsilon predicates(points);
-    return GiftWrapper<SeedEpsilon>(points, detail::distinct_points(points), predicates, scan).run();
+bool giftwrap_faces(PointSpan points, GiftwrapScan scan, bool seed_epsilon, Polygons& faces, std::string& error) {
+    const std::vector<Index> ids = distinct_points(points);
+    if (seed_epsilon) {
+        const SeedEpsilon sides(points);
+        return GiftWrapper<SeedEpsilon>(points, ids, sides, scan).run(faces, error);
+    }
+    const ExactSides sides;
+    return GiftWrapper<ExactSides>(points, ids, sides, scan).run(faces, error);
 }
 
-}  // namespace hullkit
+}  // namespace hullkit::detail

@@ -1,3 +1,5 @@
+// hullkit::hull: checks and scales the input, settles its dimension exactly, runs the chosen 3D
+// algorithm and brings every result into one canonical form.
 #include "hullkit/hull.hpp"
 
 #include <algorithm>
@@ -9,6 +11,9 @@
 
 #include "hull_internal.hpp"
 #include "hullkit/giftwrap.hpp"
+#include "hullkit/predicates.hpp"
+#include "planar.hpp"
+#include "sides.hpp"
 
 namespace hullkit {
 
@@ -19,29 +24,6 @@ Hull failure(std::string message, std::int64_t point) {
     result.error = std::move(message);
     result.error_point = point;
     return result;
-}
-
-Hull validate_input(PointSpan points) {
-    if (points.count > std::numeric_limits<std::uint32_t>::max()) {
-        return failure("too many points: " + std::to_string(points.count) +
-                       " (at most 4294967295 fit 32-bit indices)");
-    }
-    for (std::size_t i = 0; i < points.count; ++i) {
-        const double* p = points[i];
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!std::isfinite(p[axis])) {
-                static const char* const kAxis[] = {"x", "y", "z"};
-                const char* what = std::isnan(p[axis]) ? "nan" : (p[axis] > 0 ? "inf" : "-inf");
-                return failure("point " + std::to_string(i) + " has a non-finite " + kAxis[axis] +
-                                   " coordinate (" + what + ")",
-                               static_cast<std::int64_t>(i));
-            }
-        }
-    }
-    if (points.count < 4) {
-        return failure("a 3D hull needs at least 4 points, got " + std::to_string(points.count));
-    }
-    return Hull{};
 }
 
 std::vector<std::uint32_t> distinct_points(PointSpan points) {
@@ -70,39 +52,272 @@ std::vector<std::uint32_t> distinct_points(PointSpan points) {
     return kept;
 }
 
-void finish_hull(PointSpan points, Hull& hull) {
-    hull.vertices.assign(hull.triangles.begin(), hull.triangles.end());
-    std::sort(hull.vertices.begin(), hull.vertices.end());
-    hull.vertices.erase(std::unique(hull.vertices.begin(), hull.vertices.end()), hull.vertices.end());
+Simplex find_simplex(PointSpan points) {
+    Simplex s;
+    const auto n = static_cast<std::uint32_t>(points.count);
+    if (n == 0) return s;
+    auto at = [&](std::uint32_t i) { return vec3(points[i]); };
 
-    auto at = [&](std::uint32_t i) { return glm::dvec3(points[i][0], points[i][1], points[i][2]); };
-    // Tetrahedra from one hull vertex to every face: the reference point's own faces add zero.
-    const glm::dvec3 origin = hull.vertices.empty() ? glm::dvec3(0.0) : at(hull.vertices.front());
+    // The lowest and highest point along each axis (lowest index on ties).
+    std::uint32_t extreme[6] = {0, 0, 0, 0, 0, 0};
+    for (std::uint32_t i = 1; i < n; ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            if (points[i][axis] < points[extreme[2 * axis]][axis]) extreme[2 * axis] = i;
+            if (points[i][axis] > points[extreme[2 * axis + 1]][axis]) extreme[2 * axis + 1] = i;
+        }
+    }
+    // The farthest pair of them (rounded distances choose; equality of points is exact).
+    double best = -1.0;
+    for (int i = 0; i < 6; ++i) {
+        for (int j = i + 1; j < 6; ++j) {
+            const glm::dvec3 d = at(extreme[j]) - at(extreme[i]);
+            if (const double d2 = glm::dot(d, d); d2 > best) {
+                best = d2;
+                s.p[0] = std::min(extreme[i], extreme[j]);
+                s.p[1] = std::max(extreme[i], extreme[j]);
+            }
+        }
+    }
+    s.dimension = 0;
+    const double* a = points[s.p[0]];
+    const double* b = points[s.p[1]];
+    if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) {  // the bounding box is a point
+        s.p[0] = 0;
+        return s;
+    }
+    s.dimension = 1;
+
+    // The point farthest from the line a-b, else any point off it.
+    const glm::dvec3 pa = at(s.p[0]);
+    const glm::dvec3 ab = at(s.p[1]) - pa;
+    best = -1.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const glm::dvec3 c = glm::cross(ab, at(i) - pa);
+        if (const double c2 = glm::dot(c, c); c2 > best) {
+            best = c2;
+            s.p[2] = i;
+        }
+    }
+    if (collinear3d(a, b, points[s.p[2]])) {
+        std::uint32_t i = 0;
+        while (i < n && collinear3d(a, b, points[i])) ++i;
+        if (i == n) return s;
+        s.p[2] = i;
+    }
+    s.dimension = 2;
+
+    // The point farthest from the plane a, b, c, else any point off it.
+    const double* c = points[s.p[2]];
+    const glm::dvec3 normal = glm::cross(ab, at(s.p[2]) - pa);
+    best = -1.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (const double h = std::fabs(glm::dot(normal, at(i) - pa)); h > best) {
+            best = h;
+            s.p[3] = i;
+        }
+    }
+    if (orient3d(a, b, c, points[s.p[3]]) == 0) {
+        std::uint32_t i = 0;
+        while (i < n && orient3d(a, b, c, points[i]) == 0) ++i;
+        if (i == n) return s;
+        s.p[3] = i;
+    }
+    s.dimension = 3;
+    return s;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::Polygons;
+using detail::Simplex;
+
+/// Non-finite coordinates and too many points; else an ok() Hull.
+Hull check_input(PointSpan points) {
+    if (points.count > std::numeric_limits<std::uint32_t>::max()) {
+        return detail::failure("too many points: " + std::to_string(points.count) +
+                               " (at most 4294967295 fit 32-bit indices)");
+    }
+    for (std::size_t i = 0; i < points.count; ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double value = points[i][axis];
+            if (!std::isfinite(value)) {
+                static const char* const kAxis[] = {"x", "y", "z"};
+                const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+                return detail::failure("point " + std::to_string(i) + " has a non-finite " + kAxis[axis] +
+                                           " coordinate (" + what + ")",
+                                       static_cast<std::int64_t>(i));
+            }
+        }
+    }
+    return Hull{};
+}
+
+/// The power of two that brings the coordinates into the predicates' exact range (0 if they are
+/// in it); false when no single power of two can.
+bool scale_exponent(PointSpan points, int* exponent) {
+    double largest = 0.0;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 3 * points.count; ++i) {
+        const double magnitude = std::fabs(points.xyz[i]);
+        largest = std::max(largest, magnitude);
+        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+    }
+    *exponent = 0;
+    if (predicates_range_ok(largest, smallest)) return true;
+    return predicates_scale_exponent(largest, smallest, exponent);
+}
+
+/// Rotates each polygon to start at its lowest index.
+void rotate_to_lowest(Polygons& faces) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto first = faces.vertices.begin() + faces.offsets[f];
+        const auto last = faces.vertices.begin() + faces.offsets[f + 1];
+        std::rotate(first, std::min_element(first, last), last);
+    }
+}
+
+/// Triangles fanned from each polygon's first corner; sorted vertex list; volume and area.
+void fill_from_polygons(PointSpan points, const Polygons& faces, int exponent, Hull& hull) {
+    hull.triangles.clear();
+    hull.triangles.reserve(3 * (faces.vertices.size() - 2 * faces.size()));
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
+        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
+        for (std::size_t k = 1; k + 1 < m; ++k) {
+            hull.triangles.insert(hull.triangles.end(), {corners[0], corners[k], corners[k + 1]});
+        }
+    }
+    std::vector<std::uint8_t> is_vertex(points.count, 0);
+    for (std::uint32_t v : faces.vertices) is_vertex[v] = 1;
+    hull.vertices.clear();
+    for (std::uint32_t i = 0; i < points.count; ++i) {
+        if (is_vertex[i]) hull.vertices.push_back(i);
+    }
+
+    // Tetrahedra from one hull vertex to every face; measured on the scaled points, then unscaled.
+    auto at = [&](std::uint32_t i) { return detail::vec3(points[i]); };
+    const glm::dvec3 origin = at(hull.vertices.front());
     double six_volume = 0.0;
     double twice_area = 0.0;
-    for (std::size_t t = 0; t + 2 < hull.triangles.size(); t += 3) {
+    for (std::size_t t = 0; t < hull.triangles.size(); t += 3) {
         const glm::dvec3 a = at(hull.triangles[t]) - origin;
         const glm::dvec3 b = at(hull.triangles[t + 1]) - origin;
         const glm::dvec3 c = at(hull.triangles[t + 2]) - origin;
         six_volume += glm::dot(a, glm::cross(b, c));
         twice_area += glm::length(glm::cross(b - a, c - a));
     }
-    hull.volume = six_volume / 6.0;
-    hull.area = twice_area / 2.0;
+    hull.volume = std::ldexp(six_volume / 6.0, -3 * exponent);
+    hull.area = std::ldexp(twice_area / 2.0, -2 * exponent);
 }
 
-}  // namespace detail
-
-Hull hull(PointSpan points, const HullOptions& options) {
-    switch (options.algorithm) {
-        case Algorithm::Giftwrap:
-            return giftwrap(points, options.giftwrap_scan);
+Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
+    Hull hull;
+    hull.dimension = s.dimension;
+    if (s.dimension < 0) return hull;  // no points
+    if (s.dimension == 0) {
+        hull.vertices = {s.p[0]};
+        return hull;
     }
-    return detail::failure("unknown algorithm");
+    if (s.dimension == 1) {
+        // Along the axis where the segment moves most, coordinates order the points on the line.
+        const glm::dvec3 d = glm::abs(detail::vec3(points[s.p[1]]) - detail::vec3(points[s.p[0]]));
+        const int axis = d.x >= d.y ? (d.x >= d.z ? 0 : 2) : (d.y >= d.z ? 1 : 2);
+        std::uint32_t lo = 0, hi = 0;
+        for (std::uint32_t i = 1; i < points.count; ++i) {
+            if (points[i][axis] < points[lo][axis]) lo = i;
+            if (points[i][axis] > points[hi][axis]) hi = i;
+        }
+        hull.vertices = {std::min(lo, hi), std::max(lo, hi)};
+        return hull;
+    }
+    // A convex polygon in the plane of the simplex's first three points.
+    std::vector<std::uint32_t> all(points.count), polygon;
+    std::iota(all.begin(), all.end(), 0u);
+    detail::convex_polygon(points, detail::ExactSides{}, std::move(all), s.p[0], s.p[1], s.p[2], polygon);
+    Polygons faces;
+    faces.add(polygon.begin(), polygon.end());
+    rotate_to_lowest(faces);
+    fill_from_polygons(points, faces, exponent, hull);
+    hull.vertices = faces.vertices;  // in order around the polygon
+    hull.volume = 0.0;
+    const glm::dvec3 a = detail::vec3(points[s.p[0]]);
+    const glm::dvec3 normal = glm::cross(detail::vec3(points[s.p[1]]) - a, detail::vec3(points[s.p[2]]) - a);
+    const glm::dvec3 unit = glm::normalize(normal);
+    std::copy(&unit.x, &unit.x + 3, hull.normal);
+    return hull;
+}
+
+}  // namespace
+
+Hull hull(PointSpan input, const HullOptions& options) {
+    if (Hull invalid = check_input(input); !invalid.ok()) return invalid;
+    const bool seed = options.side_test == SideTest::Seed;
+    if (seed && options.algorithm != Algorithm::Giftwrap)
+        return detail::failure("the seed's epsilon side tests exist for gift wrapping only");
+
+    int exponent = 0;
+    if (!scale_exponent(input, &exponent)) {
+        return detail::failure(
+            "coordinates span too many orders of magnitude: the nonzero |coordinates| must fit within "
+            "a factor of 2^585 (about 1e176) of each other for exact predicates");
+    }
+    std::vector<double> scaled;
+    PointSpan points = input;
+    if (exponent != 0) {  // multiplying by a power of two is exact
+        scaled.resize(3 * input.count);
+        for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = std::ldexp(input.xyz[i], exponent);
+        points = PointSpan(scaled.data(), input.count);
+    }
+
+    Polygons faces;
+    std::string error;
+    if (seed) {
+        // The seed's own behaviour, for comparison: its epsilon also judges degeneracy.
+        if (points.count < 4) return detail::failure("a 3D hull needs at least 4 points, got " + std::to_string(points.count));
+        if (!detail::giftwrap_faces(points, options.giftwrap_scan, true, faces, error)) return detail::failure(error);
+    } else {
+        const Simplex simplex = detail::find_simplex(points);
+        if (simplex.dimension < 3) {
+            Hull result = lower_dimensional(points, simplex, exponent);
+            if (options.merge_coplanar && result.dimension == 2) {
+                result.face_offsets = {0, static_cast<std::uint32_t>(result.vertices.size())};
+                result.face_vertices = result.vertices;
+            }
+            return result;
+        }
+        if (options.algorithm == Algorithm::Giftwrap) {
+            if (!detail::giftwrap_faces(points, options.giftwrap_scan, false, faces, error)) return detail::failure(error);
+        } else {
+            std::vector<std::uint32_t> triangles, twins;
+            if (!detail::quickhull_triangles(points, simplex, triangles, twins, error)) return detail::failure(error);
+            faces = detail::merge_coplanar_triangles(points, triangles, twins);
+        }
+    }
+
+    Hull result;
+    result.dimension = 3;
+    rotate_to_lowest(faces);
+    fill_from_polygons(points, faces, exponent, result);
+    if (options.merge_coplanar) {
+        result.face_offsets = std::move(faces.offsets);
+        result.face_vertices = std::move(faces.vertices);
+    }
+    return result;
+}
+
+Hull giftwrap(PointSpan points, GiftwrapScan scan) {
+    HullOptions options;
+    options.algorithm = Algorithm::Giftwrap;
+    options.giftwrap_scan = scan;
+    return hull(points, options);
 }
 
 const char* algorithm_name(Algorithm algorithm) {
     switch (algorithm) {
+        case Algorithm::Quickhull:
+            return "quickhull";
         case Algorithm::Giftwrap:
             return "giftwrap";
     }
@@ -110,6 +325,10 @@ const char* algorithm_name(Algorithm algorithm) {
 }
 
 bool parse_algorithm(const std::string& name, Algorithm* out) {
+    if (name == "quickhull") {
+        *out = Algorithm::Quickhull;
+        return true;
+    }
     if (name == "giftwrap") {
         *out = Algorithm::Giftwrap;
         return true;

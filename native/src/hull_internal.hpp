@@ -1,25 +1,61 @@
-// Private helpers shared by the hull algorithms.
+// Private pieces shared by the hull algorithms and hull.cpp, which runs them.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hullkit/hull.hpp"
 
 namespace hullkit::detail {
 
-/// Checks what every algorithm requires of its input: at least 4 points, fewer than 2^32,
-/// finite coordinates. Returns a failed Hull describing the first problem, or an ok() one.
-Hull validate_input(PointSpan points);
+/// Convex polygons stored flat: polygon k is vertices[offsets[k]] ... vertices[offsets[k + 1] - 1].
+struct Polygons {
+    std::vector<std::uint32_t> offsets{0};
+    std::vector<std::uint32_t> vertices;
 
-/// Fills `vertices`, `volume` and `area` of a hull whose `triangles` are set.
-void finish_hull(PointSpan points, Hull& hull);
+    std::size_t size() const { return offsets.size() - 1; }
+    template <class It>
+    void add(It first, It last) {
+        vertices.insert(vertices.end(), first, last);
+        offsets.push_back(static_cast<std::uint32_t>(vertices.size()));
+    }
+};
+
+/// Four points spanning the cloud's affine hull: `dimension` + 1 of them are meaningful.
+struct Simplex {
+    int dimension = -1;
+    std::uint32_t p[4] = {0, 0, 0, 0};
+};
 
 /// A failed Hull carrying `message` (and the index of the point to blame, if any).
 Hull failure(std::string message, std::int64_t point = -1);
 
+/// Exact affine dimension of the points and a well-spread simplex (far-apart points, rounded
+/// distances only choose among candidates; every decision about degeneracy is exact). Of
+/// identical candidates the lowest index is chosen.
+Simplex find_simplex(PointSpan points);
+
 /// Indices of the distinct points (exact coordinate equality), the lowest index of each group of
 /// identical points, in ascending order.
 std::vector<std::uint32_t> distinct_points(PointSpan points);
+
+/// Gift wrapping of a cloud with volume: the hull's faces as convex polygons, counter-clockwise
+/// seen from outside. Exact sides unless `seed_epsilon`. False with `error` set on failure
+/// (only possible with the seed's epsilon).
+bool giftwrap_faces(PointSpan points, GiftwrapScan scan, bool seed_epsilon, Polygons& faces, std::string& error);
+
+/// Quickhull of a cloud with volume, starting from `simplex`: hull triangles, counter-clockwise
+/// seen from outside, and for each half-edge 3 * t + k (edge k of triangle t) its opposite
+/// half-edge in `twins`. Adjacent triangles may be coplanar and a vertex may lie inside a face or
+/// an edge (ties are legal in exact arithmetic): merge_coplanar_triangles() settles both.
+bool quickhull_triangles(PointSpan points, const Simplex& simplex, std::vector<std::uint32_t>& triangles,
+                         std::vector<std::uint32_t>& twins, std::string& error);
+
+/// Groups the triangles of a closed convex surface (with half-edge `twins` as above) into planar
+/// faces (exactly coplanar, edge connected) and returns each as its strictly convex polygon, so
+/// that only extreme points remain corners.
+Polygons merge_coplanar_triangles(PointSpan points, const std::vector<std::uint32_t>& triangles,
+                                  const std::vector<std::uint32_t>& twins);
 
 }  // namespace hullkit::detail

@@ -9,16 +9,17 @@
 //    (its 2D hull inside the plane), which is then fanned into triangles. Every edge the wrap pivots
 //    on is therefore a true hull edge, and coplanar points (a cube's faces) cannot produce
 //    overlapping or inconsistent triangles.
-// Side tests use the seed's epsilon: a point counts as above a plane only when its signed distance
-// exceeds eps_3D = DBL_EPSILON * (dx + dy + dz) (taxicab extent of the cloud), and as off a line
-// in 2D only beyond eps_2D = DBL_EPSILON * (dx + dy).
+// Side tests are exact by default. HullOptions::side_test = SideTest::Seed uses the seed's epsilon
+// instead: a point counts as above a plane only when its signed distance exceeds
+// eps_3D = DBL_EPSILON * (dx + dy + dz) (taxicab extent of the cloud), and as off a line in 2D only
+// beyond eps_2D = DBL_EPSILON * (dx + dy); near-degenerate input can then fail (reported as such).
 #pragma once
 
 #include "hullkit/hull.hpp"
 
 namespace hullkit {
 
-/// Gift-wraps `points` (see the file comment). Same contract as hullkit::hull().
+/// Gift-wraps `points` with exact side tests: hullkit::hull() with Algorithm::Giftwrap.
 Hull giftwrap(PointSpan points, GiftwrapScan scan = GiftwrapScan::SinglePass);
 
 }  // namespace hullkit

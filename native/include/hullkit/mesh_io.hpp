@@ -1,0 +1,93 @@
+// hullkit: reading point sets and writing hulls as text. No geometry lives here.
+//
+// Readers take the whole text in memory plus a `source` name (a file name or "<stdin>") that
+// every error message starts with. Errors are a single line "source:LINE: what is wrong"
+// (LINE 1-based), or "source: what is wrong" when no single line is to blame (empty input).
+#pragma once
+
+#include "hullkit/hull.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hullkit {
+
+/// Points read from text, flat x0 y0 z0 x1 y1 z1 ... (size always a multiple of 3).
+struct PointsResult {
+    std::vector<double> xyz;
+    std::string error;  ///< empty on success; on failure `xyz` is empty
+
+    bool ok() const { return error.empty(); }
+    std::size_t count() const { return xyz.size() / 3; }
+};
+
+/// Parses points, detecting the format from the first line that is not blank or a '#' comment:
+///   - "OFF" ........................ OFF: "nv nf ne", then nv lines "x y z"; faces are ignored.
+///   - an OBJ keyword (v, vn, f, o, ...) OBJ: each "v x y z [w]" is a point (also the common
+///                                    "v x y z r g b" colour extension); other records ignored.
+///   - one integer, optionally followed by a non-numeric comment ("3 rbox 1000 s D3"):
+///                                    qhull/rbox: dimension (must be 3), point count, points.
+///   - anything else .................. plain "x y z" lines, separated by whitespace or one comma.
+/// In every format blank lines are skipped and '#' starts a comment that runs to the end of
+/// the line. Coordinates are parsed like strtod but the whole token must be a number; "nan"
+/// and "inf" are accepted here (hullkit::hull reports them with the point's index).
+/// An input without a single point is an error.
+PointsResult parse_points(const std::string& text, const std::string& source);
+
+/// A triangle mesh read from an OFF file: points plus 3 indices per triangle.
+struct MeshResult {
+    std::vector<double> xyz;
+    std::vector<std::uint32_t> triangles;
+    std::string error;  ///< empty on success; on failure the other fields are empty
+
+    bool ok() const { return error.empty(); }
+    std::size_t point_count() const { return xyz.size() / 3; }
+    std::size_t triangle_count() const { return triangles.size() / 3; }
+};
+
+/// Reads an OFF mesh (as written by write_off). Faces with more than 3 vertices are
+/// fan-triangulated (v0 v1 v2, v0 v2 v3, ...); trailing per-face colour values are ignored.
+/// Errors: not OFF, bad counts, bad numbers, a face index out of range, fewer faces or
+/// vertices than the header declares, or content after the last face.
+MeshResult read_off_mesh(const std::string& text, const std::string& source);
+
+/// Reads a whole file (binary-safe). Returns false and sets *error to
+/// "PATH: cannot open: REASON" / "PATH: cannot read: REASON" on failure.
+bool read_file(const std::string& path, std::string* out, std::string* error);
+
+// ---- writers ----
+// All writers emit only the hull's vertices, in the order of Hull::vertices, with coordinates
+// to 17 significant digits so that reading them back gives the same doubles. A hull of lower
+// dimension (a polygon, segment or point) is written the same way: its triangles, if any, and
+// its vertices. They throw std::invalid_argument if `hull` does not fit `points` (an index out
+// of range, a vertex listed twice, or a triangle corner not listed in Hull::vertices); a Hull
+// returned by hullkit::hull for `points` always fits.
+
+enum class OutputFormat { Off, Obj, Json };
+
+/// "off", "obj", "json".
+const char* output_format_name(OutputFormat format);
+/// Parses "off" / "obj" / "json" (lower case); returns false and leaves *out alone otherwise.
+bool parse_output_format(const std::string& name, OutputFormat* out);
+/// Picks the format from a file name's extension (".off", ".obj", ".json", any case);
+/// returns false and leaves *out alone for any other name.
+bool output_format_from_path(const std::string& path, OutputFormat* out);
+
+/// "OFF", "H F 0", H lines "x y z", F lines "3 i j k" with i j k indexing the listed vertices.
+std::string write_off(PointSpan points, const Hull& hull);
+/// H lines "v x y z", then F lines "f i j k" (1-based into the listed vertices).
+std::string write_obj(PointSpan points, const Hull& hull);
+/// One line: {"vertices":[input indices],"triangles":[[i,j,k],...] (input indices),
+/// "points":[[x,y,z],...] (in the order of "vertices"),"volume":V,"area":A}
+std::string write_json(PointSpan points, const Hull& hull);
+/// Dispatches to one of the writers above.
+std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull);
+
+/// A double as text that reads back to the same value ("%.17g"); JSON has no NaN/inf, so
+/// non-finite values come out as "null" from format_json_number.
+std::string format_double(double value);
+std::string format_json_number(double value);
+
+}  // namespace hullkit

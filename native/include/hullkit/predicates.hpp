@@ -1,0 +1,123 @@
+// hullkit: exact geometric predicates (orientation tests) for the hull algorithms.
+//
+// Every predicate returns the exact sign of a polynomial in the input coordinates, as if it were
+// evaluated in real arithmetic, for all finite doubles inside the valid range documented below.
+// The method is Shewchuk's adaptive precision arithmetic ("Adaptive Precision Floating-Point
+// Arithmetic and Fast Robust Geometric Predicates", Discrete & Computational Geometry 18, 1997):
+//
+//   stage A  the determinant in plain floating point, accepted when its magnitude exceeds an error
+//            bound proven from the magnitudes of the terms (the "permanent"). This is the common
+//            case and costs about 1.5x a naive determinant: no allocation, no loops, one branch.
+//            (A permanent of exactly 0, e.g. four points on a plane z = const, also means an exact
+//            0 and is answered here.)
+//   stage B  the exact determinant of the rounded coordinate differences, as an expansion (a sum of
+//            non-overlapping doubles) built with error-free transformations: Two-Sum, and
+//            Two-Product by Veltkamp/Dekker splitting (never fma, so results are bit-identical on
+//            every IEEE-754 binary64 target, Emscripten/wasm included). When the differences were
+//            computed exactly (e.g. integer or shared-exponent coordinates) this value is exact.
+//   stage C  a first-order correction for the roundoff of the differences, with its own bound.
+//   stage D  the fully exact expansion of the determinant.
+//
+// Later stages run only when the earlier ones cannot decide; all expansions live in fixed-size stack
+// arrays. The functions are pure and thread-safe.
+//
+// Requirements on the build: IEEE-754 binary64 with round-to-nearest-even, no excess precision
+// (FLT_EVAL_METHOD == 0, i.e. SSE2 on x86, any 64-bit target, wasm), no -ffast-math, and no
+// floating-point contraction into fma (-ffp-contract=off, set by the project's CMakeLists.txt);
+// the error bounds and the error-free transformations assume exactly rounded + - *.
+//
+// ---- Valid input range ----
+// The sign is guaranteed exact when every coordinate x passed to a predicate is finite and either
+// 0 or  kPredicateMinMagnitude <= |x| <= kPredicateMaxMagnitude,  i.e. 2^-250 <= |x| <= 2^+335.
+// Where that comes from (orient3d is the binding case; orient2d alone would allow more):
+//  * Overflow. Differences of coordinates are below 2^336, products of three differences below
+//    2^1008, and the permanent (a sum of six such products) and every partial sum of the exact
+//    expansions stay below 2^1011; Veltkamp splitting multiplies values of at most ~2^676 (products
+//    of two differences) by 2^27 + 1. Nothing comes near 2^1024 (the analysis gives 2^339 as the
+//    hard limit for coordinates; 2^335 keeps a margin of 2^12).
+//  * Underflow. A nonzero double with |x| >= 2^-250 is an integer multiple of q = 2^-302 (its last
+//    significand bit), so every coordinate, every difference and the roundoff tail of every
+//    difference is a multiple of q; every product of two of them a multiple of q^2, and every value
+//    any stage computes from products of three (including all rounded results, since rounding to
+//    the coarser grid of a larger number keeps a multiple of q^3) is a multiple of q^3 = 2^-906.
+//    So every nonzero intermediate value is at least 2^-906, far from the subnormal range, and even
+//    the smallest error bound, about 2^-101.3 times the permanent, is a normal number
+//    (>= 2^-1008 > 2^-1022): every relative error bound used in the proofs holds and the
+//    error-free transformations are exact. (The analysis gives 2^-254 as the hard limit; 2^-250
+//    keeps a margin.)
+// Note the lower limit is on the coordinates themselves, not on their differences: the roundoff
+// tail of 1 - 2^-1000 is 2^-1000, and products of such tails would underflow.
+// Outside the range the predicates still return +1, 0 or -1 and never crash or loop, but the sign
+// may be wrong. Non-finite inputs (inf, NaN) give an unspecified sign.
+//
+// Multiplying all coordinates by the same power of two is exact (as long as it stays in range) and
+// changes no sign, so a caller whose data lies outside the range but spans less than 2^585 between
+// its largest and smallest nonzero |coordinate| can rescale first: see predicates_scale_exponent().
+#pragma once
+
+namespace hullkit {
+
+/// Largest |coordinate| for which the predicates are guaranteed exact: 2^+335 (about 7.0e+100).
+inline constexpr double kPredicateMaxMagnitude = 0x1p+335;
+/// Smallest nonzero |coordinate| for which the predicates are guaranteed exact: 2^-250
+/// (about 5.5e-76). Exactly zero coordinates are always fine.
+inline constexpr double kPredicateMinMagnitude = 0x1p-250;
+
+/// True when coordinates with these extremes are inside the valid range: `max_abs_coordinate` is the
+/// largest |coordinate| over all points, `min_abs_nonzero_coordinate` the smallest nonzero one
+/// (ignored when max_abs_coordinate is 0, i.e. all coordinates are zero). False for inf or NaN.
+inline constexpr bool predicates_range_ok(double max_abs_coordinate,
+                                          double min_abs_nonzero_coordinate) {
+    return max_abs_coordinate <= kPredicateMaxMagnitude &&
+           (max_abs_coordinate == 0.0 || min_abs_nonzero_coordinate >= kPredicateMinMagnitude);
+}
+
+/// Finds a power of two 2^k that brings coordinates with these extremes (as for predicates_range_ok)
+/// into the valid range: on success stores k in *exponent (0 when already in range, otherwise the
+/// value closest to 0) and returns true; the caller then multiplies every coordinate by
+/// std::ldexp(1.0, k), which is exact. Returns false (and leaves *exponent alone) when no power of
+/// two works (the data spans more than the range) or an input is inf/NaN/negative.
+bool predicates_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate,
+                               int* exponent);
+
+/// Orientation of c relative to the directed line a->b:
+///   +1  c lies to the left of a->b (a, b, c is counter-clockwise),
+///   -1  c lies to the right (clockwise),
+///    0  a, b, c are exactly collinear (also when two or all of them coincide).
+/// Exact sign of (ax - cx) * (by - cy) - (ay - cy) * (bx - cx) = det[b-a; c-a].
+int orient2d(double ax, double ay, double bx, double by, double cx, double cy);
+
+/// Orientation of d relative to the plane through a, b, c (each a pointer to x, y, z):
+///   +1  d lies on the side the normal (b-a) x (c-a) points to: "above" the triangle a, b, c when
+///       that triangle is counter-clockwise seen from above,
+///   -1  d lies below,
+///    0  a, b, c, d are exactly coplanar (also when a, b, c are collinear).
+/// Exact sign of ((b-a) x (c-a)) . (d-a) = det[b-a; c-a; d-a].
+/// NOTE: this is the OPPOSITE of the sign convention of Shewchuk's orient3d in predicates.c
+/// (which is positive when d is below); hullkit's orient3d(a,b,c,d) == -shewchuk_orient3d(a,b,c,d).
+/// Consequence for hulls: a triangle a, b, c of a convex hull is oriented counter-clockwise seen
+/// from outside iff orient3d(a, b, c, p) <= 0 for every input point p.
+int orient3d(const double* a, const double* b, const double* c, const double* d);
+
+/// 1 if a, b, c (pointers to x, y, z) are exactly collinear, i.e. (b-a) x (c-a) == 0 exactly
+/// (equivalently orient2d == 0 on all three axis projections xy, yz, zx); also 1 when two or all
+/// three points coincide. 0 otherwise.
+int collinear3d(const double* a, const double* b, const double* c);
+
+namespace detail {
+
+// Testing and diagnostics hooks. Same results as the public functions.
+
+/// orient2d / orient3d that also report in *stage which stage decided: 0 = floating-point filter,
+/// 1 = exact products of the rounded differences, 2 = first-order tail correction, 3 = full exact
+/// expansion.
+int orient2d_traced(double ax, double ay, double bx, double by, double cx, double cy, int* stage);
+int orient3d_traced(const double* a, const double* b, const double* c, const double* d, int* stage);
+
+/// The fully exact expansion alone (stage D), skipping every filter.
+int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy);
+int orient3d_exact(const double* a, const double* b, const double* c, const double* d);
+
+}  // namespace detail
+
+}  // namespace hullkit

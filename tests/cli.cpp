@@ -1,0 +1,648 @@
+// Tests that run the built `hullkit` command (HULLKIT_CLI_PATH) on temporary files, and check
+// its hulls against Qhull's rbox/qconvex.
+#include "hullkit/mesh_io.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string data_path(const std::string& name) { return std::string(HULLKIT_TEST_DATA) + "/" + name; }
+
+/// A fresh directory under /tmp, removed with everything in it when the test ends.
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "hullkit-cli-XXXXXX").string();
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    fs::path path_;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    REQUIRE(out.good());
+}
+
+/// Single-quotes a word for /bin/sh.
+std::string sh_quote(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+struct RunResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+
+    std::vector<std::string> err_lines() const {
+        std::vector<std::string> lines;
+        std::istringstream in(err);
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        return lines;
+    }
+};
+
+/// Runs a shell command line with stdout and stderr captured in files of `dir`.
+RunResult run_shell(const TempDir& dir, const std::string& command) {
+    const std::string out = dir.file("run.out"), err = dir.file("run.err");
+    // The parentheses keep redirections inside `command` apart from the captured ones.
+    const std::string full = "(" + command + ") >" + sh_quote(out) + " 2>" + sh_quote(err);
+    int status = std::system(full.c_str());
+    RunResult result;
+    REQUIRE(status != -1);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = slurp(out);
+    result.err = slurp(err);
+    return result;
+}
+
+/// Runs `hullkit ARGS` (each argument quoted), optionally with stdin from a file.
+RunResult run_cli(const TempDir& dir, const std::vector<std::string>& args,
+                  const std::string& stdin_path = "") {
+    std::string command = sh_quote(HULLKIT_CLI_PATH);
+    for (const std::string& arg : args) command += " " + sh_quote(arg);
+    command += " <" + sh_quote(stdin_path.empty() ? "/dev/null" : stdin_path);
+    return run_shell(dir, command);
+}
+
+/// A failure must be exit code 2 and exactly one stderr line; returns that line.
+std::string single_error_line(const RunResult& result) {
+    INFO("stdout: " << result.out << "\nstderr: " << result.err);
+    CHECK(result.exit_code == 2);
+    std::vector<std::string> lines = result.err_lines();
+    REQUIRE(lines.size() == 1);
+    CHECK(result.err.back() == '\n');
+    return lines[0];
+}
+
+bool relatively_close(double a, double b, double tolerance) {
+    return std::fabs(a - b) <= tolerance * std::max(std::fabs(a), std::fabs(b));
+}
+
+// ---- a minimal JSON reader: enough to check that the output is well-formed and to read it ----
+
+struct Json {
+    enum class Kind { Null, Bool, Number, String, Array, Object } kind = Kind::Null;
+    double number = 0.0;
+    std::string text;
+    std::vector<Json> items;
+    std::vector<std::pair<std::string, Json>> members;  // in document order
+
+    const Json& at(const std::string& key) const {
+        for (const auto& member : members) {
+            if (member.first == key) return member.second;
+        }
+        FAIL("JSON object has no key \"" << key << "\"");
+        throw std::logic_error("unreachable");
+    }
+    std::vector<std::string> keys() const {
+        std::vector<std::string> names;
+        for (const auto& member : members) names.push_back(member.first);
+        return names;
+    }
+};
+
+class JsonParser {
+public:
+    explicit JsonParser(const std::string& text) : text_(text) {}
+
+    /// Parses the whole text as one value (trailing whitespace allowed).
+    Json parse_document() {
+        Json value = parse_value();
+        skip_space();
+        if (pos_ != text_.size()) fail("trailing characters");
+        return value;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) {
+        FAIL("invalid JSON at offset " << pos_ << ": " << what << "\n" << text_.substr(0, 200));
+        throw std::logic_error("unreachable");
+    }
+    void skip_space() {
+        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    }
+    bool take(char c) {
+        skip_space();
+        if (pos_ < text_.size() && text_[pos_] == c) {
+            ++pos_;
+            return true;
+        }
+        return false;
+    }
+    void expect(char c) {
+        if (!take(c)) fail(std::string("expected '") + c + "'");
+    }
+    bool take_word(const std::string& word) {
+        if (text_.compare(pos_, word.size(), word) != 0) return false;
+        pos_ += word.size();
+        return true;
+    }
+
+    Json parse_value() {
+        skip_space();
+        if (pos_ >= text_.size()) fail("unexpected end");
+        Json value;
+        char c = text_[pos_];
+        if (c == '{') {
+            value.kind = Json::Kind::Object;
+            ++pos_;
+            if (take('}')) return value;
+            do {
+                skip_space();
+                std::string key = parse_string();
+                expect(':');
+                value.members.emplace_back(key, parse_value());
+            } while (take(','));
+            expect('}');
+        } else if (c == '[') {
+            value.kind = Json::Kind::Array;
+            ++pos_;
+            if (take(']')) return value;
+            do value.items.push_back(parse_value());
+            while (take(','));
+            expect(']');
+        } else if (c == '"') {
+            value.kind = Json::Kind::String;
+            value.text = parse_string();
+        } else if (take_word("null")) {
+            value.kind = Json::Kind::Null;
+        } else if (take_word("true") || take_word("false")) {
+            value.kind = Json::Kind::Bool;
+        } else {
+            value.kind = Json::Kind::Number;
+            value.number = parse_number();
+        }
+        return value;
+    }
+
+    std::string parse_string() {
+        if (pos_ >= text_.size() || text_[pos_] != '"') fail("expected a string");
+        std::string out;
+        for (++pos_; pos_ < text_.size() && text_[pos_] != '"'; ++pos_) {
+            if (text_[pos_] == '\\') fail("escapes are not expected in hullkit output");
+            out += text_[pos_];
+        }
+        if (pos_ >= text_.size()) fail("unterminated string");
+        ++pos_;
+        return out;
+    }
+
+    double parse_number() {
+        // JSON's grammar: -?digits[.digits][(e|E)[+-]digits]; no nan, inf, hex or leading '+'.
+        std::size_t start = pos_;
+        auto digits = [&] {
+            std::size_t first = pos_;
+            while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+            if (pos_ == first) fail("expected digits");
+        };
+        if (text_[pos_] == '-') ++pos_;
+        digits();
+        if (pos_ < text_.size() && text_[pos_] == '.') {
+            ++pos_;
+            digits();
+        }
+        if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+            ++pos_;
+            if (pos_ < text_.size() && (text_[pos_] == '+' || text_[pos_] == '-')) ++pos_;
+            digits();
+        }
+        return std::strtod(text_.substr(start, pos_ - start).c_str(), nullptr);
+    }
+
+    const std::string& text_;
+    std::size_t pos_ = 0;
+};
+
+Json parse_json(const std::string& text) { return JsonParser(text).parse_document(); }
+
+/// The --stats line: exactly these keys, in this order.
+Json parse_stats(const RunResult& result) {
+    INFO("stderr: " << result.err);
+    std::vector<std::string> lines = result.err_lines();
+    REQUIRE(lines.size() == 1);
+    Json stats = parse_json(lines[0]);
+    REQUIRE(stats.kind == Json::Kind::Object);
+    CHECK(stats.keys() == std::vector<std::string>{"points", "vertices", "faces", "volume", "area",
+                                                   "algorithm", "seconds"});
+    return stats;
+}
+
+/// The numbers on line `line_index` (0-based) of a command's output.
+std::vector<double> numbers_on_line(const std::string& text, std::size_t line_index) {
+    std::istringstream in(text);
+    std::string line;
+    for (std::size_t i = 0; i <= line_index; ++i) REQUIRE(std::getline(in, line));
+    std::istringstream fields(line);
+    std::vector<double> numbers;
+    for (double v; fields >> v;) numbers.push_back(v);
+    return numbers;
+}
+
+void require_on_path(const TempDir& dir, const std::string& tool) {
+    RunResult found = run_shell(dir, "command -v " + tool);
+    if (found.exit_code != 0) {
+        FAIL(tool << " is not on PATH: install the Debian package qhull-bin (scripts/setup.sh "
+                     "does) to cross-check hulls against Qhull");
+    }
+}
+
+}  // namespace
+
+// ---- usage and errors ----
+
+TEST_CASE("cli: --help, hull --help and --version") {
+    TempDir dir;
+    RunResult help = run_cli(dir, {"--help"});
+    CHECK(help.exit_code == 0);
+    CHECK(help.out.rfind("Usage: hullkit <command>", 0) == 0);
+    CHECK(help.err.empty());
+
+    RunResult hull_help = run_cli(dir, {"hull", "--help"});
+    CHECK(hull_help.exit_code == 0);
+    CHECK(hull_help.out.rfind("Usage: hullkit hull [INPUT|-]", 0) == 0);
+    CHECK(hull_help.out.find("--algorithm NAME    hull algorithm: quickhull (default), giftwrap\n") !=
+          std::string::npos);
+
+    RunResult version = run_cli(dir, {"--version"});
+    CHECK(version.exit_code == 0);
+    CHECK(version.out == "hullkit 0.1.0\n");
+}
+
+TEST_CASE("cli: malformed file exits 2 with one line naming file and line") {
+    TempDir dir;
+    const std::string path = data_path("malformed-line3.txt");
+    RunResult result = run_cli(dir, {"hull", path});
+    CHECK(single_error_line(result) == "hullkit: " + path + ":3: expected 3 coordinates, got 2");
+    CHECK(result.out.empty());
+
+    const std::string bad_number = dir.file("bad.off");
+    write_text(bad_number, "OFF\n4 0 0\n0 0 0\n1 0 0\n1.2.3 1 0\n0 0 1\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", bad_number})) ==
+          "hullkit: " + bad_number + ":5: coordinate \"1.2.3\" is not a number");
+}
+
+TEST_CASE("cli: usage problems exit 2 with one line") {
+    TempDir dir;
+    const std::string tetra = data_path("tetra.off");
+    CHECK(single_error_line(run_cli(dir, {"hull", "--frobnicate", tetra})) ==
+          "hullkit: unknown option \"--frobnicate\" (try 'hullkit hull --help')");
+    CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--algorithm", "quickhull9"})) ==
+          "hullkit: unknown algorithm \"quickhull9\" (known: quickhull, giftwrap)");
+    CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--algorithm=nope"})) ==
+          "hullkit: unknown algorithm \"nope\" (known: quickhull, giftwrap)");
+    CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--format", "ply"})) ==
+          "hullkit: unknown format \"ply\" (known: off, obj, json)");
+    CHECK(single_error_line(run_cli(dir, {"hull", tetra, "-o"})) == "hullkit: option -o needs a value");
+    CHECK(single_error_line(run_cli(dir, {"hull", tetra, tetra})) ==
+          "hullkit: unexpected argument \"" + tetra + "\" (only one INPUT is allowed)");
+    CHECK(single_error_line(run_cli(dir, {"frobnicate"})) ==
+          "hullkit: unknown command \"frobnicate\" (try 'hullkit --help')");
+    CHECK(single_error_line(run_cli(dir, {"--frobnicate"})) ==
+          "hullkit: unknown option \"--frobnicate\" (try 'hullkit --help')");
+    CHECK(single_error_line(run_cli(dir, {})) == "hullkit: missing command (try 'hullkit --help')");
+}
+
+TEST_CASE("cli: unreadable input and unwritable output exit 2") {
+    TempDir dir;
+    const std::string missing = dir.file("missing.txt");
+    CHECK(single_error_line(run_cli(dir, {"hull", missing})) ==
+          "hullkit: " + missing + ": cannot open: No such file or directory");
+    CHECK(single_error_line(run_cli(dir, {"hull", data_path("")})).find(": cannot read: ") !=
+          std::string::npos);
+    const std::string unwritable = dir.file("no-such-dir/out.off");
+    CHECK(single_error_line(run_cli(dir, {"hull", data_path("tetra.off"), "-o", unwritable})) ==
+          "hullkit: " + unwritable + ": cannot open for writing: No such file or directory");
+}
+
+TEST_CASE("cli: hull errors are prefixed with the input name") {
+    TempDir dir;
+    SECTION("a non-finite coordinate names the point") {
+        const std::string path = dir.file("nan.txt");
+        write_text(path, "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 nan 1\n");
+        std::string line = single_error_line(run_cli(dir, {"hull", path}));
+        CHECK(line.rfind("hullkit: " + path + ": ", 0) == 0);
+        CHECK(line.find("point 4") != std::string::npos);
+        CHECK(line.find("nan") != std::string::npos);
+    }
+    SECTION("from stdin, the input is called <stdin>") {
+        const std::string path = dir.file("inf.txt");
+        write_text(path, "0 0 0\n1 0 0\n0 1 0\n-inf 0 1\n");
+        std::string line = single_error_line(run_cli(dir, {"hull"}, path));
+        CHECK(line.rfind("hullkit: <stdin>: ", 0) == 0);
+        CHECK(line.find("point 3") != std::string::npos);
+    }
+    SECTION("empty stdin") {
+        CHECK(single_error_line(run_cli(dir, {"hull", "-"})) ==
+              "hullkit: <stdin>: no points found (the input is empty)");
+    }
+}
+
+// ---- successful runs ----
+
+TEST_CASE("cli: lower-dimensional point sets give a flat hull, not an error") {
+    // hullkit::hull reports coplanar, collinear and single points as hulls of dimension 2, 1, 0
+    // (hull.hpp); the CLI writes them like any other hull.
+    TempDir dir;
+    struct Case {
+        std::string points;
+        std::size_t vertices, faces;
+        double area;
+    };
+    const std::vector<Case> cases = {
+        {"0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n", 4, 2, 1.0},  // square with its centre
+        {"0 0 0\n2 0 0\n0 0 1\n", 3, 1, 1.0},                      // three points
+        {"0 0 0\n1 1 1\n2 2 2\n", 2, 0, 0.0},                      // a segment
+        {"3 2 1\n3 2 1\n", 1, 0, 0.0},                              // one point, repeated
+    };
+    for (const Case& c : cases) {
+        const std::string path = dir.file("flat.txt");
+        write_text(path, c.points);
+        RunResult result = run_cli(dir, {"hull", path, "--stats"});
+        INFO(c.points << result.err);
+        REQUIRE(result.exit_code == 0);
+        Json stats = parse_stats(result);
+        CHECK(stats.at("vertices").number == c.vertices);
+        CHECK(stats.at("faces").number == c.faces);
+        CHECK(stats.at("volume").number == 0.0);
+        CHECK(stats.at("area").number == Approx(c.area).epsilon(1e-12));
+        hullkit::MeshResult mesh = hullkit::read_off_mesh(result.out, "stdout.off");
+        INFO(mesh.error);
+        REQUIRE(mesh.ok());
+        CHECK(mesh.point_count() == c.vertices);
+        CHECK(mesh.triangle_count() == c.faces);
+    }
+}
+
+
+TEST_CASE("cli: stdin input gives the same hull as a file") {
+    TempDir dir;
+    const std::string cube = data_path("cube.obj");
+    RunResult from_file = run_cli(dir, {"hull", cube});
+    RunResult from_stdin = run_cli(dir, {"hull"}, cube);
+    RunResult from_dash = run_cli(dir, {"hull", "-"}, cube);
+    REQUIRE(from_file.exit_code == 0);
+    CHECK(from_file.err.empty());
+    CHECK(from_stdin.exit_code == 0);
+    CHECK(from_dash.exit_code == 0);
+    CHECK(from_stdin.out == from_file.out);
+    CHECK(from_dash.out == from_file.out);
+
+    hullkit::MeshResult mesh = hullkit::read_off_mesh(from_file.out, "stdout");
+    INFO(mesh.error);
+    REQUIRE(mesh.ok());
+    CHECK(mesh.point_count() == 8);
+    CHECK(mesh.triangle_count() == 12);
+}
+
+TEST_CASE("cli: -o writes the file, the format follows the extension unless --format is given") {
+    TempDir dir;
+    const std::string tetra = data_path("tetra.off");
+    struct Case {
+        std::vector<std::string> extra;
+        std::string output;
+        std::string starts_with;
+    };
+    const std::vector<Case> cases = {
+        {{}, "hull.off", "OFF\n4 4 0\n"},
+        {{}, "hull.obj", "v 0 0 0\n"},
+        {{}, "hull.JSON", "{\"vertices\":[0,1,2,3],"},
+        {{}, "hull.txt", "OFF\n"},
+        {{"--format", "obj"}, "hull.json", "v 0 0 0\n"},
+        {{"--format=json"}, "hull.off", "{\"vertices\":"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args = {"hull", tetra, "-o", dir.file(c.output)};
+        args.insert(args.end(), c.extra.begin(), c.extra.end());
+        RunResult result = run_cli(dir, args);
+        INFO(c.output << " " << result.err);
+        CHECK(result.exit_code == 0);
+        CHECK(result.out.empty());
+        CHECK(result.err.empty());
+        CHECK(slurp(dir.file(c.output)).rfind(c.starts_with, 0) == 0);
+    }
+    // A failed run leaves no output file behind.
+    RunResult failed = run_cli(dir, {"hull", data_path("malformed-line3.txt"), "-o", dir.file("no.off")});
+    CHECK(failed.exit_code == 2);
+    CHECK_FALSE(fs::exists(dir.file("no.off")));
+}
+
+TEST_CASE("cli: --stats writes one JSON line with the hull's numbers") {
+    TempDir dir;
+    RunResult result = run_cli(dir, {"hull", data_path("cube.obj"), "--stats", "-o", dir.file("c.off"),
+                                     "--algorithm", "giftwrap"});
+    REQUIRE(result.exit_code == 0);
+    Json stats = parse_stats(result);
+    CHECK(stats.at("points").number == 8);
+    CHECK(stats.at("vertices").number == 8);
+    CHECK(stats.at("faces").number == 12);
+    CHECK(stats.at("volume").number == Approx(1.0).epsilon(1e-12));
+    CHECK(stats.at("area").number == Approx(6.0).epsilon(1e-12));
+    CHECK(stats.at("algorithm").text == "giftwrap");
+    CHECK(stats.at("seconds").number >= 0.0);
+    CHECK(stats.at("seconds").number < 60.0);
+
+    RunResult by_default = run_cli(dir, {"hull", data_path("cube.obj"), "--stats", "-o", dir.file("d.off")});
+    REQUIRE(by_default.exit_code == 0);
+    Json default_stats = parse_stats(by_default);
+    CHECK(default_stats.at("algorithm").text == hullkit::algorithm_name(hullkit::HullOptions{}.algorithm));
+    CHECK(default_stats.at("vertices").number == 8);
+    CHECK(default_stats.at("faces").number == 12);
+    CHECK(default_stats.at("volume").number == Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("cli: each output format parses back to the same hull") {
+    TempDir dir;
+    const std::string input = dir.file("points.txt");
+    // A jittered grid plus random points: many interior points, awkward decimals.
+    std::string text = "# test points\n";
+    std::uint64_t state = 42;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+    };
+    for (int i = 0; i < 300; ++i) {
+        text += hullkit::format_double(next()) + " " + hullkit::format_double(next() * 3) + " " +
+                hullkit::format_double(next() / 7) + "\n";
+    }
+    write_text(input, text);
+    std::vector<double> points = hullkit::parse_points(text, "points.txt").xyz;
+    REQUIRE(points.size() == 900);
+
+    RunResult json_run = run_cli(dir, {"hull", input, "--format", "json", "--stats"});
+    REQUIRE(json_run.exit_code == 0);
+    Json stats = parse_stats(json_run);
+    Json hull = parse_json(json_run.out);
+    REQUIRE(hull.kind == Json::Kind::Object);
+    CHECK(hull.keys() == std::vector<std::string>{"vertices", "triangles", "points", "volume", "area"});
+    const auto& vertices = hull.at("vertices").items;
+    const auto& triangles = hull.at("triangles").items;
+    const auto& coordinates = hull.at("points").items;
+    REQUIRE(vertices.size() == stats.at("vertices").number);
+    REQUIRE(triangles.size() == stats.at("faces").number);
+    REQUIRE(coordinates.size() == vertices.size());
+    CHECK(triangles.size() == 2 * vertices.size() - 4);  // random points: a triangulated sphere
+    CHECK(hull.at("volume").number == stats.at("volume").number);
+    CHECK(hull.at("area").number == stats.at("area").number);
+    std::vector<std::uint32_t> vertex_ids;
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        auto id = static_cast<std::uint32_t>(vertices[k].number);
+        REQUIRE(id < 300);
+        vertex_ids.push_back(id);
+        REQUIRE(coordinates[k].items.size() == 3);
+        for (int c = 0; c < 3; ++c) CHECK(coordinates[k].items[c].number == points[3 * id + c]);
+    }
+    CHECK(std::is_sorted(vertex_ids.begin(), vertex_ids.end()));
+    std::vector<std::uint32_t> json_triangles;
+    for (const Json& t : triangles) {
+        REQUIRE(t.items.size() == 3);
+        for (const Json& corner : t.items) json_triangles.push_back(static_cast<std::uint32_t>(corner.number));
+    }
+
+    SECTION("OFF") {
+        RunResult off = run_cli(dir, {"hull", input});
+        REQUIRE(off.exit_code == 0);
+        hullkit::MeshResult mesh = hullkit::read_off_mesh(off.out, "stdout.off");
+        INFO(mesh.error);
+        REQUIRE(mesh.ok());
+        REQUIRE(mesh.point_count() == vertex_ids.size());
+        REQUIRE(mesh.triangles.size() == json_triangles.size());
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+            CHECK(vertex_ids[mesh.triangles[i]] == json_triangles[i]);
+        }
+        for (std::size_t k = 0; k < vertex_ids.size(); ++k) {
+            for (int c = 0; c < 3; ++c) CHECK(mesh.xyz[3 * k + c] == points[3 * vertex_ids[k] + c]);
+        }
+    }
+    SECTION("OBJ") {
+        RunResult obj = run_cli(dir, {"hull", input, "--format", "obj"});
+        REQUIRE(obj.exit_code == 0);
+        hullkit::PointsResult obj_points = hullkit::parse_points(obj.out, "stdout.obj");
+        INFO(obj_points.error);
+        REQUIRE(obj_points.ok());
+        REQUIRE(obj_points.count() == vertex_ids.size());
+        for (std::size_t k = 0; k < vertex_ids.size(); ++k) {
+            for (int c = 0; c < 3; ++c) CHECK(obj_points.xyz[3 * k + c] == points[3 * vertex_ids[k] + c]);
+        }
+        std::vector<std::uint32_t> obj_triangles;
+        std::istringstream lines(obj.out);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("f ", 0) != 0) continue;
+            std::istringstream fields(line.substr(2));
+            for (std::uint32_t index; fields >> index;) {
+                REQUIRE(index >= 1);
+                REQUIRE(index <= vertex_ids.size());
+                obj_triangles.push_back(vertex_ids[index - 1]);
+            }
+        }
+        CHECK(obj_triangles == json_triangles);
+    }
+}
+
+// ---- cross-check against Qhull ----
+
+namespace {
+
+/// Runs rbox with `rbox_args`, then qconvex and hullkit (each algorithm) on the same file, and
+/// compares the hull vertex set, the triangle count, the volume and the area.
+void check_against_qconvex(const std::string& rbox_args) {
+    TempDir dir;
+    require_on_path(dir, "rbox");
+    require_on_path(dir, "qconvex");
+    const std::string input = dir.file("rbox.txt");
+    RunResult rbox = run_shell(dir, "rbox " + rbox_args + " >" + sh_quote(input));
+    REQUIRE(rbox.exit_code == 0);
+
+    auto qconvex = [&](const std::string& options) {
+        RunResult result = run_shell(dir, "qconvex " + options + " <" + sh_quote(input));
+        INFO("qconvex " << options << ": " << result.err);
+        REQUIRE(result.exit_code == 0);
+        return result.out;
+    };
+    // FS: line 1 "0" (no integer sizes), line 2 "2 area volume".
+    std::vector<double> sizes = numbers_on_line(qconvex("FS"), 1);
+    REQUIRE(sizes.size() == 3);
+    REQUIRE(sizes[0] == 2);
+    const double qhull_area = sizes[1], qhull_volume = sizes[2];
+    // Fx: the count of extreme points, then one index per line. (Fv's first line counts
+    // facets, not vertices.)
+    std::vector<std::uint32_t> qhull_vertices;
+    {
+        std::istringstream in(qconvex("Fx"));
+        std::size_t count = 0;
+        REQUIRE(in >> count);
+        for (std::uint32_t index; in >> index;) qhull_vertices.push_back(index);
+        REQUIRE(qhull_vertices.size() == count);
+        std::sort(qhull_vertices.begin(), qhull_vertices.end());
+    }
+    // Qt Fv: the count of triangulated facets first.
+    std::vector<double> facet_count = numbers_on_line(qconvex("Qt Fv"), 0);
+    REQUIRE(facet_count.size() == 1);
+
+    for (const char* algorithm : {"quickhull", "giftwrap"}) {
+        RunResult ours = run_cli(dir, {"hull", input, "--format", "json", "--stats", "--algorithm", algorithm});
+        INFO("hullkit --algorithm " << algorithm << ": " << ours.err);
+        REQUIRE(ours.exit_code == 0);
+        Json stats = parse_stats(ours);
+        CHECK(stats.at("algorithm").text == algorithm);
+        Json hull = parse_json(ours.out);
+        std::vector<std::uint32_t> our_vertices;
+        for (const Json& v : hull.at("vertices").items) {
+            our_vertices.push_back(static_cast<std::uint32_t>(v.number));
+        }
+        INFO("rbox " << rbox_args << ": hullkit volume " << stats.at("volume").number << " area "
+                     << stats.at("area").number << "; qconvex volume " << qhull_volume << " area "
+                     << qhull_area);
+        CHECK(stats.at("vertices").number == qhull_vertices.size());
+        CHECK(our_vertices == qhull_vertices);
+        CHECK(stats.at("faces").number == facet_count[0]);
+        // qconvex prints 16 significant digits, so 1e-9 leaves ample room for summation order.
+        CHECK(relatively_close(stats.at("volume").number, qhull_volume, 1e-9));
+        CHECK(relatively_close(stats.at("area").number, qhull_area, 1e-9));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("cli: hull matches qconvex for rbox 2000 D3") { check_against_qconvex("2000 D3"); }
+
+TEST_CASE("cli: hull matches qconvex for rbox 500 s D3") { check_against_qconvex("500 s D3"); }

@@ -1,0 +1,450 @@
+// Tests of the point readers and hull writers in hullkit/mesh_io.hpp (no geometry involved:
+// hulls are written by hand here).
+#include "hullkit/mesh_io.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using hullkit::Hull;
+using hullkit::MeshResult;
+using hullkit::OutputFormat;
+using hullkit::PointsResult;
+using hullkit::PointSpan;
+using hullkit::parse_points;
+using hullkit::read_off_mesh;
+
+namespace {
+
+std::string data_path(const std::string& name) { return std::string(HULLKIT_TEST_DATA) + "/" + name; }
+
+std::string load(const std::string& name) {
+    std::string text, error;
+    bool ok = hullkit::read_file(data_path(name), &text, &error);
+    INFO(error);
+    REQUIRE(ok);
+    return text;
+}
+
+/// Parses text that must be valid; fails the test with the reader's message otherwise.
+std::vector<double> points_of(const std::string& text, const std::string& source = "t.txt") {
+    PointsResult result = parse_points(text, source);
+    INFO(result.error);
+    REQUIRE(result.ok());
+    REQUIRE(result.xyz.size() % 3 == 0);
+    return result.xyz;
+}
+
+/// Parses text that must be rejected; returns the message.
+std::string error_of(const std::string& text, const std::string& source = "t.txt") {
+    PointsResult result = parse_points(text, source);
+    INFO("parsed " << result.count() << " points from: " << text);
+    REQUIRE_FALSE(result.ok());
+    CHECK(result.xyz.empty());
+    CHECK(result.error.find('\n') == std::string::npos);  // one line
+    return result.error;
+}
+
+std::string mesh_error_of(const std::string& text, const std::string& source = "m.off") {
+    MeshResult result = read_off_mesh(text, source);
+    INFO("read " << result.triangle_count() << " triangles from: " << text);
+    REQUIRE_FALSE(result.ok());
+    CHECK(result.xyz.empty());
+    CHECK(result.triangles.empty());
+    CHECK(result.error.find('\n') == std::string::npos);
+    return result.error;
+}
+
+/// 7 points of which 1, 3, 4, 6 form a tetrahedron "hull"; faces CCW from outside.
+struct SmallHull {
+    std::vector<double> xyz = {
+        0.5, 0.5, 0.5,  // 0 (inside)
+        0,   0,   0,    // 1
+        0.2, 0.2, 0.2,  // 2 (inside)
+        1,   0,   0,    // 3
+        0,   1,   0,    // 4
+        0.1, 0.1, 0.1,  // 5 (inside)
+        0,   0,   1.5,  // 6
+    };
+    Hull hull;
+    SmallHull() {
+        hull.vertices = {1, 3, 4, 6};
+        hull.triangles = {1, 4, 3, 1, 3, 6, 1, 6, 4, 3, 4, 6};
+        hull.volume = 0.25;
+        hull.area = 2.5;
+    }
+    PointSpan span() const { return PointSpan(xyz); }
+};
+
+}  // namespace
+
+// ---- plain x y z ----
+
+TEST_CASE("mesh_io: plain xyz with whitespace, commas, comments and CRLF") {
+    std::string text =
+        "# header comment\n"
+        "1 2 3\n"
+        "\n"
+        "  -4.5\t5e-1   +6  # trailing comment\r\n"
+        "7,8,9\n"
+        "10 , 11 ,12\n"
+        "   \n"
+        ".25 1e3 -0";
+    std::vector<double> xyz = points_of(text);
+    std::vector<double> expected = {1, 2, 3, -4.5, 0.5, 6, 7, 8, 9, 10, 11, 12, 0.25, 1000, 0};
+    CHECK(xyz == expected);
+    CHECK(std::signbit(xyz[14]));  // "-0" keeps its sign
+}
+
+TEST_CASE("mesh_io: xyz coordinate count errors name the line") {
+    CHECK(error_of("1 2 3\n\n# comment\n4 5\n6 7 8\n") == "t.txt:4: expected 3 coordinates, got 2");
+    CHECK(error_of("1 2 3 4\n") == "t.txt:1: expected 3 coordinates, got 4");
+    CHECK(error_of("1 2 3\r\n1 2 3 4\r\n", "crlf.txt") == "crlf.txt:2: expected 3 coordinates, got 4");
+}
+
+TEST_CASE("mesh_io: xyz empty comma fields are errors, not silently dropped") {
+    CHECK(error_of("1,,2,3\n") == "t.txt:1: empty field before a comma");
+    CHECK(error_of("1 2 3\n,1,2,3\n") == "t.txt:2: empty field before a comma");
+    CHECK(error_of("1,2,3,\n") == "t.txt:1: empty field after the last comma");
+}
+
+TEST_CASE("mesh_io: malformed numbers are quoted with their line") {
+    CHECK(error_of("0 0 0\n1 0 0\n0 1.2.3 0\n", "x.txt") ==
+          "x.txt:3: coordinate \"1.2.3\" is not a number");
+    CHECK(error_of("1 2 abc\n") == "t.txt:1: coordinate \"abc\" is not a number");
+    CHECK(error_of("1e 2 3\n") == "t.txt:1: coordinate \"1e\" is not a number");
+    CHECK(error_of("--1 2 3\n") == "t.txt:1: coordinate \"--1\" is not a number");
+    CHECK(error_of("+-1 2 3\n") == "t.txt:1: coordinate \"+-1\" is not a number");
+    CHECK(error_of("0x10 2 3\n") == "t.txt:1: coordinate \"0x10\" is not a number");
+    CHECK(error_of("1 2 3;\n") == "t.txt:1: coordinate \"3;\" is not a number");
+    // Binary junk and very long tokens stay printable and short in the one-line message.
+    CHECK(error_of(std::string("1 2 \x01\x02", 6) + "\n") ==
+          "t.txt:1: coordinate \"??\" is not a number");
+    std::string long_token(100, '7');
+    long_token += 'x';
+    CHECK(error_of("1 2 " + long_token + "\n") ==
+          "t.txt:1: coordinate \"" + std::string(40, '7') + "...\" is not a number");
+}
+
+TEST_CASE("mesh_io: nan and inf parse as numbers (the hull reports them)") {
+    std::vector<double> xyz = points_of("nan 1 2\ninf -Infinity 1e999\n1e-400 3 4\n");
+    REQUIRE(xyz.size() == 9);
+    CHECK(std::isnan(xyz[0]));
+    CHECK(xyz[3] == INFINITY);
+    CHECK(xyz[4] == -INFINITY);
+    CHECK(xyz[5] == INFINITY);  // overflow: +inf as strtod gives
+    CHECK(xyz[6] == 0.0);       // underflow: 0
+}
+
+TEST_CASE("mesh_io: 17 significant digits round-trip through the reader") {
+    std::mt19937_64 random(12345);
+    std::uniform_real_distribution<double> uniform(-1e3, 1e3);
+    std::vector<double> values;
+    std::string text;
+    for (int i = 0; i < 300; ++i) {
+        double v = uniform(random) * std::pow(10.0, (i % 40) - 20);
+        values.push_back(v);
+        text += hullkit::format_double(v) + (i % 3 == 2 ? "\n" : " ");
+    }
+    CHECK(points_of(text) == values);
+    CHECK(hullkit::format_double(0.1) == "0.10000000000000001");
+    CHECK(hullkit::format_double(1.0) == "1");
+    CHECK(hullkit::format_json_number(NAN) == "null");
+    CHECK(hullkit::format_json_number(-INFINITY) == "null");
+    CHECK(hullkit::format_json_number(2.5) == "2.5");
+}
+
+TEST_CASE("mesh_io: empty input is an error without a line number") {
+    CHECK(error_of("", "e.txt") == "e.txt: no points found (the input is empty)");
+    CHECK(error_of("# only a comment\n\n  \n", "e.txt") == "e.txt: no points found (the input is empty)");
+}
+
+// ---- qhull / rbox ----
+
+TEST_CASE("mesh_io: rbox header without comment") {
+    std::vector<double> xyz = points_of("3\n2\n1 2 3\n4 5 6\n");
+    CHECK(xyz == std::vector<double>{1, 2, 3, 4, 5, 6});
+}
+
+TEST_CASE("mesh_io: rbox header with comment") {
+    std::string text =
+        "3 rbox 3 s D3\n"
+        "3\n"
+        "-0.2561591415905514 0.4074747497907592 -0.1354504428289179 \n"
+        "-0.2464882009620465 -0.3343342839039356 0.2783238282880867 \n"
+        "-0.3030051559778936 0.2571448267908443 0.3034211817021334 \n";
+    std::vector<double> xyz = points_of(text);
+    REQUIRE(xyz.size() == 9);
+    CHECK(xyz[0] == -0.2561591415905514);
+    CHECK(xyz[8] == 0.3034211817021334);
+}
+
+TEST_CASE("mesh_io: rbox count mismatch") {
+    SECTION("fewer points than declared: blames the count line") {
+        CHECK(error_of("3 rbox 3 D3\n3\n1 2 3\n4 5 6\n", "r.txt") ==
+              "r.txt:2: header declares 3 points but the file has 2");
+    }
+    SECTION("more points than declared: blames the first extra line") {
+        CHECK(error_of("3 rbox 1 D3\n1\n1 2 3\n\n4 5 6\n", "r.txt") ==
+              "r.txt:5: more points than the 1 declared on line 2");
+    }
+    SECTION("missing or malformed count") {
+        CHECK(error_of("3 rbox\n", "r.txt") ==
+              "r.txt:1: file ends after the dimension line; expected the point count");
+        CHECK(error_of("3 rbox\n1 2 3\n", "r.txt") ==
+              "r.txt:2: expected the point count (one non-negative integer), got \"1 2 3\"");
+        CHECK(error_of("3\n-4\n", "r.txt") ==
+              "r.txt:2: expected the point count (one non-negative integer), got \"-4\"");
+    }
+    SECTION("a declared count of zero is no points") {
+        CHECK(error_of("3 rbox 0 D3\n0\n", "r.txt") == "r.txt: no points found");
+    }
+}
+
+TEST_CASE("mesh_io: rbox wrong dimension") {
+    CHECK(error_of("2 rbox 4 D2\n4\n0.1 0.2\n", "d2.txt") ==
+          "d2.txt:1: dimension is 2, expected 3 (hullkit reads 3D points)");
+    CHECK(error_of("4\n1\n1 2 3 4\n", "d4.txt") ==
+          "d4.txt:1: dimension is 4, expected 3 (hullkit reads 3D points)");
+}
+
+TEST_CASE("mesh_io: rbox point lines are checked") {
+    CHECK(error_of("3 rbox\n2\n1 2 3\n4 5\n", "r.txt") == "r.txt:4: expected 3 coordinates, got 2");
+    CHECK(error_of("3 rbox\n1\n1 2 x\n", "r.txt") == "r.txt:3: coordinate \"x\" is not a number");
+}
+
+TEST_CASE("mesh_io: a numeric first line is a point, not an rbox header") {
+    CHECK(points_of("3 1e3 2\n") == std::vector<double>{3, 1000, 2});
+    CHECK(error_of("3 1000\n", "p.txt") == "p.txt:1: expected 3 coordinates, got 2");
+}
+
+// ---- OBJ ----
+
+TEST_CASE("mesh_io: OBJ vertices, other records ignored") {
+    std::vector<double> xyz = points_of(load("cube.obj"), "cube.obj");
+    std::vector<double> expected = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                    0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    CHECK(xyz == expected);
+
+    // "v x y z w" and the "v x y z r g b" colour extension keep only x y z.
+    CHECK(points_of("g a\nv 1 2 3 0.5\nvn 0 0 1\nv 4 5 6 1 0 0\nf 1 2 3\nl 1 2\n") ==
+          std::vector<double>{1, 2, 3, 4, 5, 6});
+}
+
+TEST_CASE("mesh_io: OBJ errors") {
+    CHECK(error_of("# obj\nv 1 2 3\nv 1 2\n", "m.obj") ==
+          "m.obj:3: expected \"v x y z [w]\", got 2 numbers");
+    CHECK(error_of("v 1 2 3\nv 1 2 3 4 5\n", "m.obj") ==
+          "m.obj:2: expected \"v x y z [w]\", got 5 numbers");
+    CHECK(error_of("v 1 2 3\nv 1 q 3\n", "m.obj") == "m.obj:2: coordinate \"q\" is not a number");
+    CHECK(error_of("v 1 2 3\nv 1 2 3 w\n", "m.obj") ==
+          "m.obj:2: vertex value \"w\" is not a number");
+    // A bare point line would otherwise vanish from the hull.
+    CHECK(error_of("o thing\nv 1 2 3\n4 5 6\n", "m.obj") ==
+          "m.obj:3: line does not start with an OBJ keyword (found \"4\")");
+    CHECK(error_of("o empty\nf 1 2 3\n", "m.obj") == "m.obj: no points found");
+}
+
+// ---- OFF ----
+
+TEST_CASE("mesh_io: OFF points, faces ignored") {
+    std::vector<double> xyz = points_of(load("tetra.off"), "tetra.off");
+    CHECK(xyz == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+
+    // Counts on the "OFF" line, comments anywhere, faces not even checked.
+    CHECK(points_of("# c\nOFF 2 1 0\n1 2 3 # first\n\n4 5 6\n3 0 1 7 junk\n") ==
+          std::vector<double>{1, 2, 3, 4, 5, 6});
+}
+
+TEST_CASE("mesh_io: OFF header and vertex errors") {
+    CHECK(error_of("OFF\n", "x.off") ==
+          "x.off:1: file ends after \"OFF\"; expected \"vertices faces edges\"");
+    CHECK(error_of("OFF\n4 4\n", "x.off") ==
+          "x.off:2: expected the counts \"vertices faces edges\", got 2 values");
+    CHECK(error_of("OFF\nfour 4 6\n", "x.off") ==
+          "x.off:2: vertex count \"four\" is not a non-negative integer");
+    CHECK(error_of("OFF\n2 0 0\n1 2 3\n", "x.off") ==
+          "x.off:2: header declares 2 vertices but the file has 1");
+    CHECK(error_of("OFF\n2 0 0\n1 2 3\n1.2.3 0 0\n", "x.off") ==
+          "x.off:4: coordinate \"1.2.3\" is not a number");
+    CHECK(error_of("COFF\n1 0 0\n1 2 3 255 0 0 255\n", "x.off") ==
+          "x.off:1: unsupported OFF variant \"COFF\" (only plain OFF is read)");
+}
+
+TEST_CASE("mesh_io: read_off_mesh reads triangles and fan-triangulates polygons") {
+    MeshResult tetra = read_off_mesh(load("tetra.off"), "tetra.off");
+    INFO(tetra.error);
+    REQUIRE(tetra.ok());
+    CHECK(tetra.point_count() == 4);
+    CHECK(tetra.triangles == std::vector<std::uint32_t>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3});
+
+    MeshResult quads = read_off_mesh(
+        "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n4 0 3 2 1\n5 0 1 2 3 4 0.5 0.5 0.5\n",
+        "q.off");
+    INFO(quads.error);
+    REQUIRE(quads.ok());
+    CHECK(quads.triangles ==
+          std::vector<std::uint32_t>{0, 3, 2, 0, 2, 1, 0, 1, 2, 0, 2, 3, 0, 3, 4});
+}
+
+TEST_CASE("mesh_io: read_off_mesh errors") {
+    const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+    CHECK(mesh_error_of(head + "3 0 1 3\n") ==
+          "m.off:6: vertex index 3 is out of range (the file has 3 vertices)");
+    CHECK(mesh_error_of(head + "3 0 1\n") == "m.off:6: face declares 3 vertices but lists 2");
+    CHECK(mesh_error_of(head + "2 0 1\n") == "m.off:6: face has 2 vertices, need at least 3");
+    CHECK(mesh_error_of(head + "3 0 -1 2\n") ==
+          "m.off:6: vertex index \"-1\" is not a non-negative integer");
+    CHECK(mesh_error_of(head + "3 0 1 2 red\n") ==
+          "m.off:6: face colour value \"red\" is not a number");
+    CHECK(mesh_error_of(head) == "m.off:2: header declares 1 faces but the file has 0");
+    CHECK(mesh_error_of(head + "3 0 1 2\n3 0 2 1\n") ==
+          "m.off:7: unexpected content after the last of the 1 faces");
+    CHECK(mesh_error_of("1 2 3\n") == "m.off:1: not an OFF file: expected \"OFF\", got \"1\"");
+    CHECK(mesh_error_of("") == "m.off: empty input, expected an OFF file");
+}
+
+// ---- writers ----
+
+TEST_CASE("mesh_io: OFF writer re-indexes faces to the hull vertices") {
+    SmallHull s;
+    CHECK(hullkit::write_off(s.span(), s.hull) ==
+          "OFF\n"
+          "4 4 0\n"
+          "0 0 0\n"
+          "1 0 0\n"
+          "0 1 0\n"
+          "0 0 1.5\n"
+          "3 0 2 1\n"
+          "3 0 1 3\n"
+          "3 0 3 2\n"
+          "3 1 2 3\n");
+}
+
+TEST_CASE("mesh_io: OBJ writer uses 1-based indices into the hull vertices") {
+    SmallHull s;
+    CHECK(hullkit::write_obj(s.span(), s.hull) ==
+          "v 0 0 0\n"
+          "v 1 0 0\n"
+          "v 0 1 0\n"
+          "v 0 0 1.5\n"
+          "f 1 3 2\n"
+          "f 1 2 4\n"
+          "f 1 4 3\n"
+          "f 2 3 4\n");
+}
+
+TEST_CASE("mesh_io: JSON writer keeps input indices") {
+    SmallHull s;
+    CHECK(hullkit::write_json(s.span(), s.hull) ==
+          "{\"vertices\":[1,3,4,6],"
+          "\"triangles\":[[1,4,3],[1,3,6],[1,6,4],[3,4,6]],"
+          "\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1.5]],"
+          "\"volume\":0.25,\"area\":2.5}\n");
+}
+
+TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
+    // A polygon's vertices come in polygon order, not ascending: faces still re-index.
+    SmallHull s;
+    Hull polygon;
+    polygon.dimension = 2;
+    polygon.vertices = {4, 1, 3};
+    polygon.triangles = {4, 1, 3};
+    polygon.area = 0.5;
+    CHECK(hullkit::write_off(s.span(), polygon) == "OFF\n3 1 0\n0 1 0\n0 0 0\n1 0 0\n3 0 1 2\n");
+    CHECK(hullkit::write_obj(s.span(), polygon) == "v 0 1 0\nv 0 0 0\nv 1 0 0\nf 1 2 3\n");
+    CHECK(hullkit::write_json(s.span(), polygon) ==
+          "{\"vertices\":[4,1,3],\"triangles\":[[4,1,3]],\"points\":[[0,1,0],[0,0,0],[1,0,0]],"
+          "\"volume\":0,\"area\":0.5}\n");
+
+    Hull segment;
+    segment.dimension = 1;
+    segment.vertices = {6, 1};
+    CHECK(hullkit::write_off(s.span(), segment) == "OFF\n2 0 0\n0 0 1.5\n0 0 0\n");
+    CHECK(hullkit::write_json(s.span(), segment) ==
+          "{\"vertices\":[6,1],\"triangles\":[],\"points\":[[0,0,1.5],[0,0,0]],"
+          "\"volume\":0,\"area\":0}\n");
+}
+
+TEST_CASE("mesh_io: writer output reads back exactly") {
+    // Random coordinates need all 17 digits; the hull's connectivity is arbitrary here.
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<double> xyz(3 * 50);
+    for (double& v : xyz) v = uniform(random) / 3.0;
+    Hull hull;
+    for (std::uint32_t i = 0; i < 50; i += 2) hull.vertices.push_back(i);  // even points only
+    for (std::uint32_t i = 0; i + 4 < 50; i += 2) hull.triangles.insert(hull.triangles.end(), {i, i + 4, i + 2});
+    PointSpan span(xyz);
+
+    SECTION("OFF through read_off_mesh") {
+        MeshResult mesh = read_off_mesh(hullkit::write_off(span, hull), "out.off");
+        INFO(mesh.error);
+        REQUIRE(mesh.ok());
+        REQUIRE(mesh.point_count() == hull.vertices.size());
+        REQUIRE(mesh.triangles.size() == hull.triangles.size());
+        for (std::size_t k = 0; k < hull.vertices.size(); ++k) {
+            for (int c = 0; c < 3; ++c) CHECK(mesh.xyz[3 * k + c] == xyz[3 * hull.vertices[k] + c]);
+        }
+        for (std::size_t i = 0; i < hull.triangles.size(); ++i) {
+            CHECK(hull.vertices[mesh.triangles[i]] == hull.triangles[i]);
+        }
+    }
+    SECTION("OFF and OBJ through parse_points") {
+        std::vector<double> expected;
+        for (std::uint32_t v : hull.vertices) expected.insert(expected.end(), &xyz[3 * v], &xyz[3 * v + 3]);
+        CHECK(points_of(hullkit::write_off(span, hull), "out.off") == expected);
+        CHECK(points_of(hullkit::write_obj(span, hull), "out.obj") == expected);
+    }
+}
+
+TEST_CASE("mesh_io: writers reject a hull that does not fit the points") {
+    SmallHull s;
+    Hull bad = s.hull;
+    bad.triangles[0] = 2;  // an inside point, not in hull.vertices
+    CHECK_THROWS_AS(hullkit::write_off(s.span(), bad), std::invalid_argument);
+    CHECK_THROWS_AS(hullkit::write_json(s.span(), bad), std::invalid_argument);
+    bad = s.hull;
+    bad.vertices.push_back(7);  // past the last point
+    CHECK_THROWS_AS(hullkit::write_obj(s.span(), bad), std::invalid_argument);
+    bad = s.hull;
+    bad.vertices.push_back(3);  // listed twice
+    CHECK_THROWS_AS(hullkit::write_off(s.span(), bad), std::invalid_argument);
+}
+
+TEST_CASE("mesh_io: output format names and file extensions") {
+    OutputFormat format = OutputFormat::Off;
+    CHECK(hullkit::parse_output_format("json", &format));
+    CHECK(format == OutputFormat::Json);
+    CHECK_FALSE(hullkit::parse_output_format("JSON", &format));
+    CHECK_FALSE(hullkit::parse_output_format("ply", &format));
+    CHECK(format == OutputFormat::Json);  // untouched on failure
+
+    CHECK(hullkit::output_format_from_path("dir/hull.OBJ", &format));
+    CHECK(format == OutputFormat::Obj);
+    CHECK(hullkit::output_format_from_path("a.b/hull.off", &format));
+    CHECK(format == OutputFormat::Off);
+    CHECK_FALSE(hullkit::output_format_from_path("a.json/hull", &format));
+    CHECK_FALSE(hullkit::output_format_from_path("hull.txt", &format));
+    CHECK(format == OutputFormat::Off);
+
+    CHECK(std::string(hullkit::output_format_name(OutputFormat::Obj)) == "obj");
+    SmallHull s;
+    CHECK(hullkit::write_hull(OutputFormat::Json, s.span(), s.hull) == hullkit::write_json(s.span(), s.hull));
+}
+
+TEST_CASE("mesh_io: read_file reports a missing file") {
+    std::string text = "stale", error;
+    CHECK_FALSE(hullkit::read_file(data_path("no-such-file.txt"), &text, &error));
+    CHECK(error == data_path("no-such-file.txt") + ": cannot open: No such file or directory");
+}
+
+TEST_CASE("mesh_io: malformed fixture names line 3") {
+    CHECK(error_of(load("malformed-line3.txt"), "malformed-line3.txt") ==
+          "malformed-line3.txt:3: expected 3 coordinates, got 2");
+}

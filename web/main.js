@@ -1,0 +1,788 @@
+// hullkit demo page: UI, worker orchestration and three.js rendering.
+//
+// Test hooks: document.body.dataset.state is 'loading' | 'computing' | 'ready' |
+// 'error' | 'cancelled', window.hullkitStats describes the last hull drawn and
+// window.hullkitError holds the message of the last failed run (else null).
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+const N_MIN = 4;
+const N_MAX = 100_000;
+const N_DEFAULT = 2000;
+const SEED_DEFAULT = 1;
+const DIST_DEFAULT = 'ball';
+const SPHERE_WARN_N = 5000; // gift wrapping points on a sphere is O(n²): every point is a hull vertex
+const WARN_MS = 10_000; // any run estimated longer than this asks for confirmation
+const DISTRIBUTIONS = ['cube', 'ball', 'sphere', 'plane', 'custom'];
+const CUSTOM_SAMPLE = `# x y z per point; '#' comments
+# unit cube + centre
+0 0 0
+1 0 0
+0 1 0
+1 1 0
+0 0 1
+1 0 1
+0 1 1
+1 1 1
+0.5 0.5 0.5
+`;
+
+const COLORS = {
+  background: 0x0d1117,
+  face: 0x3fb8c9,
+  faceBack: 0x2a7f8c,
+  edge: 0xa6eef8,
+  edgeBack: 0x5fd3e3,
+  vertex: 0xffb547,
+  point: 0x8a96ab,
+};
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  form: $('controls'),
+  distribution: $('distribution'),
+  algorithmField: $('algorithm-field'),
+  algorithm: $('algorithm'),
+  generatedFields: $('generated-fields'),
+  customField: $('custom-field'),
+  customPoints: $('custom-points'),
+  nSlider: $('n-slider'),
+  n: $('n'),
+  seed: $('seed'),
+  reseed: $('reseed'),
+  compute: $('compute'),
+  cancel: $('cancel'),
+  status: $('status'),
+  error: $('error'),
+  warning: $('warning'),
+  warningText: $('warning-text'),
+  useCap: $('use-cap'),
+  showFaces: $('show-faces'),
+  showEdges: $('show-edges'),
+  showPoints: $('show-points'),
+  resetView: $('reset-view'),
+  viewport: $('viewport'),
+  canvas: $('canvas'),
+  stat: {
+    n: $('stat-n'),
+    vertices: $('stat-vertices'),
+    faces: $('stat-faces'),
+    edges: $('stat-edges'),
+    volume: $('stat-volume'),
+    area: $('stat-area'),
+    ms: $('stat-ms'),
+    rtt: $('stat-rtt'),
+    draw: $('stat-draw'),
+  },
+};
+
+function setState(state) {
+  document.body.dataset.state = state;
+}
+
+// ---------------------------------------------------------------- formatting
+
+const intFmt = new Intl.NumberFormat('en-US');
+const fmtInt = (v) => intFmt.format(v);
+function fmtReal(v) {
+  if (!Number.isFinite(v)) return String(v);
+  if (v === 0) return '0';
+  return Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3 ? v.toExponential(4) : String(Number(v.toPrecision(6)));
+}
+function fmtMs(ms) {
+  if (ms < 10) return `${ms.toFixed(2)} ms`;
+  if (ms < 1000) return `${ms.toFixed(1)} ms`;
+  return `${(ms / 1000).toFixed(2)} s`;
+}
+function fmtDuration(ms) {
+  const s = ms / 1000;
+  if (s < 1) return '< 1 s';
+  if (s < 90) return `${Math.round(s)} s`;
+  if (s < 3600) {
+    const m = Math.floor(s / 60);
+    const r = Math.round(s - 60 * m);
+    return r ? `${m} min ${r} s` : `${m} min`;
+  }
+  return `${(s / 3600).toFixed(1)} h`;
+}
+
+// ---------------------------------------------------------------- inputs
+
+const LOG_RANGE = Math.log(N_MAX / N_MIN);
+const sliderToN = (s) => Math.round(N_MIN * Math.exp((s / 1000) * LOG_RANGE));
+const nToSlider = (n) => Math.round((1000 * Math.log(Math.max(N_MIN, Math.min(N_MAX, n)) / N_MIN)) / LOG_RANGE);
+
+function parseN(text) {
+  const v = Math.round(Number(text));
+  if (!Number.isFinite(v) || String(text).trim() === '') return N_DEFAULT;
+  // Fewer than 4 points are passed on: the library decides what their hull is.
+  return Math.max(0, Math.min(N_MAX, v));
+}
+function parseSeed(text) {
+  const v = Math.floor(Number(text));
+  return Number.isFinite(v) ? v >>> 0 : SEED_DEFAULT;
+}
+
+// Cheap count of the coordinates in the pasted text (for the cost estimate only).
+function roughCustomCount(text) {
+  const tokens = text.replace(/#.*$/gm, '').split(/[\s,;]+/).filter(Boolean).length;
+  return Math.floor(tokens / 3);
+}
+
+function readParams() {
+  const distribution = DISTRIBUTIONS.includes(ui.distribution.value) ? ui.distribution.value : DIST_DEFAULT;
+  const algorithm = ui.algorithm.value || undefined;
+  if (distribution === 'custom') {
+    const text = ui.customPoints.value;
+    return { distribution, n: roughCustomCount(text), seed: 0, algorithm, text };
+  }
+  return { distribution, n: parseN(ui.n.value), seed: parseSeed(ui.seed.value), algorithm };
+}
+
+function writeParams({ distribution, n, seed }) {
+  ui.distribution.value = distribution;
+  if (distribution !== 'custom') {
+    ui.n.value = String(n);
+    ui.nSlider.value = String(nToSlider(n));
+    ui.seed.value = String(seed);
+  }
+  updateSourceFields();
+}
+
+function updateSourceFields() {
+  const custom = ui.distribution.value === 'custom';
+  ui.customField.hidden = !custom;
+  ui.generatedFields.hidden = custom;
+}
+
+let preferredAlgorithm = null; // from the URL, applied once the worker lists the algorithms
+
+function paramsFromUrl() {
+  const q = new URLSearchParams(location.search);
+  const distribution = DISTRIBUTIONS.includes(q.get('dist')) ? q.get('dist') : DIST_DEFAULT;
+  const n = q.has('n') ? parseN(q.get('n')) : N_DEFAULT;
+  const seed = q.has('seed') ? parseSeed(q.get('seed')) : SEED_DEFAULT;
+  preferredAlgorithm = q.get('algo');
+  return { distribution, n, seed };
+}
+
+function paramsToUrl({ distribution, n, seed, algorithm }) {
+  const q = new URLSearchParams({ dist: distribution });
+  if (distribution !== 'custom') {
+    q.set('n', String(n));
+    q.set('seed', String(seed));
+  }
+  if (algorithm) q.set('algo', algorithm);
+  const search = `?${q}`;
+  if (location.search !== search) history.replaceState(null, '', search);
+}
+
+const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.algorithm}|${p.text ?? ''}`;
+
+// ---------------------------------------------------------------- cost estimate
+
+// Rough running time model, refined from every sufficiently long run:
+//   giftwrap      ms ≈ k · n · h              (one pass over the points per hull edge)
+//   anything else ms ≈ k · n · log2(h)        (quickhull-like, expected)
+const DEFAULT_MS_PER_UNIT = { giftwrap: 1.5e-5, other: 1e-4 };
+const msPerUnit = new Map();
+
+const costKey = (algorithm) => (!algorithm || algorithm === 'giftwrap' ? 'giftwrap' : algorithm);
+
+function expectedHullVertices(distribution, n) {
+  switch (distribution) {
+    case 'ball': return Math.min(n, 4.4 * Math.sqrt(n)); // Θ(n^(1/2))
+    case 'cube': { const l = Math.log(Math.max(n, 2)); return Math.min(n, 1.6 * l * l); } // Θ(log² n)
+    case 'plane': return Math.min(n, 4 * Math.cbrt(Math.max(n, 1))); // 2D hull of a square: Θ(log n), generous
+    default: return n; // sphere: every point is extreme; custom: assume the worst
+  }
+}
+
+function workUnits(algorithm, n, h) {
+  return costKey(algorithm) === 'giftwrap' ? n * h : n * Math.log2(Math.max(h, 2));
+}
+
+function estimateMs({ distribution, n, algorithm }) {
+  const key = costKey(algorithm);
+  const k = msPerUnit.get(key) ?? DEFAULT_MS_PER_UNIT[key] ?? DEFAULT_MS_PER_UNIT.other;
+  return k * workUnits(algorithm, n, expectedHullVertices(distribution, n));
+}
+
+function calibrate(algorithm, n, h, hullMs) {
+  if (hullMs > 50 && n > 0 && h > 0) msPerUnit.set(costKey(algorithm), hullMs / workUnits(algorithm, n, h));
+}
+
+function needsConfirmation(params, estMs) {
+  const giftwrapSphere = costKey(params.algorithm) === 'giftwrap' && params.distribution === 'sphere' && params.n > SPHERE_WARN_N;
+  return giftwrapSphere || estMs > WARN_MS;
+}
+
+// ---------------------------------------------------------------- three.js scene
+
+let renderer;
+try {
+  renderer = new THREE.WebGLRenderer({ canvas: ui.canvas, antialias: true, powerPreference: 'high-performance' });
+} catch (err) {
+  ui.error.textContent = `WebGL is not available in this browser: ${err.message}`;
+  ui.error.hidden = false;
+  setState('error');
+  throw err;
+}
+renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+renderer.setClearColor(COLORS.background, 1);
+
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(38, 1, 0.01, 100);
+const DEFAULT_VIEW_DIR = new THREE.Vector3(1.15, 0.8, 1.55).normalize();
+camera.position.copy(DEFAULT_VIEW_DIR).multiplyScalar(4);
+scene.add(camera);
+
+scene.add(new THREE.HemisphereLight(0xd6ecff, 0x1b2230, 1.1));
+const keyLight = new THREE.DirectionalLight(0xffffff, 3.2);
+keyLight.position.set(-1.2, 1.6, 1.0); // relative to the camera: follows the view
+keyLight.target.position.set(0, 0, -1);
+camera.add(keyLight, keyLight.target);
+
+const controls = new OrbitControls(camera, ui.canvas);
+controls.enableDamping = true;
+controls.dampingFactor = 0.12;
+controls.rotateSpeed = 0.8;
+
+function discTexture() {
+  const size = 64;
+  const c = document.createElement('canvas');
+  c.width = c.height = size;
+  const g = c.getContext('2d');
+  g.fillStyle = '#fff';
+  g.beginPath();
+  g.arc(size / 2, size / 2, size / 2 - 1, 0, 2 * Math.PI);
+  g.fill();
+  const tex = new THREE.CanvasTexture(c);
+  tex.colorSpace = THREE.SRGBColorSpace;
+  return tex;
+}
+const disc = discTexture();
+
+// Translucent convex surface, drawn back faces first, then front faces; edges
+// and hull vertices twice (dim through the surface, bright in front).
+const materials = {
+  faceBack: new THREE.MeshStandardMaterial({
+    color: COLORS.faceBack, transparent: true, opacity: 0.22, side: THREE.BackSide,
+    flatShading: true, depthWrite: false, roughness: 0.7, metalness: 0,
+  }),
+  faceFront: new THREE.MeshStandardMaterial({
+    color: COLORS.face, transparent: true, opacity: 0.34, side: THREE.FrontSide,
+    flatShading: true, depthWrite: true, roughness: 0.42, metalness: 0,
+    polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
+  }),
+  edgeBack: new THREE.LineBasicMaterial({ color: COLORS.edgeBack, transparent: true, opacity: 0.3, depthWrite: false }),
+  edgeFront: new THREE.LineBasicMaterial({ color: COLORS.edge, transparent: true, opacity: 0.8, depthWrite: false }),
+  point: new THREE.PointsMaterial({ color: COLORS.point, size: 3, sizeAttenuation: false, map: disc, alphaTest: 0.5 }),
+  vertex: new THREE.PointsMaterial({ color: COLORS.vertex, size: 6, sizeAttenuation: false, map: disc, alphaTest: 0.5 }),
+  vertexFront: new THREE.PointsMaterial({
+    color: COLORS.vertex, size: 6, sizeAttenuation: false, map: disc, alphaTest: 0.5,
+    transparent: true, depthWrite: false,
+  }),
+};
+
+const content = new THREE.Group();
+scene.add(content);
+const layers = { faces: [], edges: [], points: [] };
+let viewRadius = 1;
+let framedOnce = false;
+
+function clearContent() {
+  const geometries = new Set();
+  content.traverse((obj) => { if (obj.geometry) geometries.add(obj.geometry); });
+  for (const g of geometries) g.dispose();
+  content.clear();
+  layers.faces = [];
+  layers.edges = [];
+  layers.points = [];
+}
+
+function addObject(obj, layer, renderOrder) {
+  obj.renderOrder = renderOrder;
+  obj.frustumCulled = false;
+  content.add(obj);
+  layers[layer].push(obj);
+}
+
+/**
+ * Float32 positions relative to the centre of the finite points' bounding box
+ * (so that data far from the origin keeps its precision on the GPU), and the
+ * radius of the sphere around that centre containing them all.
+ */
+function centredPositions(xyz) {
+  const n = Math.floor(xyz.length / 3);
+  const lo = [Infinity, Infinity, Infinity];
+  const hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < n; i++) {
+    const x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
+    if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) continue;
+    if (x < lo[0]) lo[0] = x; if (x > hi[0]) hi[0] = x;
+    if (y < lo[1]) lo[1] = y; if (y > hi[1]) hi[1] = y;
+    if (z < lo[2]) lo[2] = z; if (z > hi[2]) hi[2] = z;
+  }
+  const centre = lo[0] <= hi[0] ? lo.map((l, k) => (l + hi[k]) / 2) : [0, 0, 0];
+  const positions = new Float32Array(3 * n);
+  let r2 = 0;
+  for (let i = 0; i < n; i++) {
+    const x = xyz[3 * i] - centre[0], y = xyz[3 * i + 1] - centre[1], z = xyz[3 * i + 2] - centre[2];
+    positions[3 * i] = x;
+    positions[3 * i + 1] = y;
+    positions[3 * i + 2] = z;
+    const d = x * x + y * y + z * z;
+    if (d > r2 && Number.isFinite(d)) r2 = d;
+  }
+  const radius = Math.sqrt(r2);
+  return { positions, radius: radius > 0 ? radius : 1 };
+}
+
+function pointsGeometry(positions, indices) {
+  const pos = new Float32Array(3 * indices.length);
+  for (let i = 0; i < indices.length; i++) {
+    const j = 3 * indices[i];
+    pos[3 * i] = positions[j];
+    pos[3 * i + 1] = positions[j + 1];
+    pos[3 * i + 2] = positions[j + 2];
+  }
+  const geom = new THREE.BufferGeometry();
+  geom.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+  return geom;
+}
+
+/** Draw a hull (triangles/edges/vertices) or, for failed runs, only the points. */
+function drawScene({ xyz, triangles = null, edges = null, vertices = null }) {
+  clearContent();
+  const { positions, radius } = centredPositions(xyz);
+  const n = positions.length / 3;
+
+  const isHull = new Uint8Array(n);
+  if (vertices) for (let i = 0; i < vertices.length; i++) isHull[vertices[i]] = 1;
+  const interior = [];
+  for (let i = 0; i < n; i++) {
+    // Rejected input may hold NaN / infinite coordinates: leave those out.
+    if (!isHull[i] && Number.isFinite(positions[3 * i] + positions[3 * i + 1] + positions[3 * i + 2])) interior.push(i);
+  }
+
+  materials.point.size = n <= 200 ? 5 : n <= 5000 ? 3 : n <= 30000 ? 2 : 1.5;
+  if (interior.length) addObject(new THREE.Points(pointsGeometry(positions, interior), materials.point), 'points', 0);
+
+  if (vertices && vertices.length) {
+    const h = vertices.length;
+    materials.vertex.size = materials.vertexFront.size = h <= 600 ? 6 : h <= 6000 ? 4 : h <= 30000 ? 2.5 : 1.5;
+    // Dense hulls (points on a sphere) would drown in their own wireframe.
+    materials.edgeFront.opacity = h <= 1000 ? 0.8 : h <= 10000 ? 0.6 : 0.4;
+    materials.edgeBack.opacity = h <= 1000 ? 0.3 : h <= 10000 ? 0.18 : 0.1;
+
+    const shared = new THREE.BufferAttribute(positions, 3);
+    const vertGeom = pointsGeometry(positions, vertices);
+    addObject(new THREE.Points(vertGeom, materials.vertex), 'points', 0);
+    if (triangles && triangles.length) {
+      const faceGeom = new THREE.BufferGeometry();
+      faceGeom.setAttribute('position', shared);
+      faceGeom.setIndex(new THREE.BufferAttribute(triangles, 1));
+      addObject(new THREE.Mesh(faceGeom, materials.faceBack), 'faces', 1);
+      addObject(new THREE.Mesh(faceGeom, materials.faceFront), 'faces', 3);
+    }
+    if (edges && edges.length) {
+      const edgeGeom = new THREE.BufferGeometry();
+      edgeGeom.setAttribute('position', shared);
+      edgeGeom.setIndex(new THREE.BufferAttribute(edges, 1));
+      // Back edges add nothing but cost to a dense wireframe.
+      if (edges.length / 2 <= 30000) addObject(new THREE.LineSegments(edgeGeom, materials.edgeBack), 'edges', 2);
+      addObject(new THREE.LineSegments(edgeGeom, materials.edgeFront), 'edges', 4);
+    }
+    addObject(new THREE.Points(vertGeom, materials.vertexFront), 'points', 5);
+  }
+
+  viewRadius = radius;
+  applyVisibility();
+  frameView(framedOnce);
+  framedOnce = true;
+  renderNow();
+}
+
+function applyVisibility() {
+  for (const o of layers.faces) o.visible = ui.showFaces.checked;
+  for (const o of layers.edges) o.visible = ui.showEdges.checked;
+  for (const o of layers.points) o.visible = ui.showPoints.checked;
+}
+
+/** Fit the drawing (centred at the origin) into the view; keep the viewing direction if asked. */
+function frameView(keepDirection) {
+  const dir = camera.position.clone().sub(controls.target);
+  if (!keepDirection || dir.lengthSq() < 1e-30) dir.copy(DEFAULT_VIEW_DIR);
+  dir.normalize();
+  const vFov = THREE.MathUtils.degToRad(camera.fov);
+  const hFov = 2 * Math.atan(Math.tan(vFov / 2) * camera.aspect);
+  const fov = Math.min(vFov, hFov);
+  const dist = (viewRadius / Math.sin(fov / 2)) * 1.15;
+  controls.target.set(0, 0, 0);
+  camera.position.copy(dir).multiplyScalar(dist);
+  camera.near = dist / 1000;
+  camera.far = dist * 20;
+  camera.updateProjectionMatrix();
+  controls.update();
+}
+
+let renderQueued = false;
+function requestRender() {
+  if (renderQueued) return;
+  renderQueued = true;
+  requestAnimationFrame(() => {
+    renderQueued = false;
+    controls.update(); // emits 'change' (→ another frame) while damping
+    renderer.render(scene, camera);
+  });
+}
+function renderNow() {
+  renderer.render(scene, camera);
+}
+controls.addEventListener('change', requestRender);
+
+function resize() {
+  const w = Math.max(1, ui.viewport.clientWidth);
+  const h = Math.max(1, ui.viewport.clientHeight);
+  renderer.setSize(w, h, false);
+  camera.aspect = w / h;
+  camera.updateProjectionMatrix();
+  requestRender();
+}
+new ResizeObserver(resize).observe(ui.viewport);
+resize();
+
+// ---------------------------------------------------------------- worker
+
+let worker = null;
+let workerReady = false; // has the current worker finished loading the module?
+let jobSeq = 0;
+let job = null; // { id, params, t0, estMs, timer, freshWorker }
+let runCount = 0;
+let pendingConfirmKey = null;
+let started = false; // the automatic first computation has been requested
+
+function spawnWorker() {
+  worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+  workerReady = false;
+  worker.onmessage = onWorkerMessage;
+  worker.onerror = (event) => {
+    event.preventDefault();
+    const detail = event.message || 'the worker script failed to load or crashed';
+    workerCrashed(`Worker error: ${detail}`);
+  };
+  worker.onmessageerror = () => workerCrashed('Worker error: a message could not be deserialised');
+}
+
+function workerCrashed(message) {
+  console.error(`[hullkit] ${message}`);
+  worker.terminate();
+  worker = null; // a fresh one is started by the next request (no respawn loop if it cannot load)
+  started = true;
+  if (job) finishJob();
+  showFailure(message, null);
+}
+
+function startJob(params, estMs) {
+  hideWarning();
+  hideError();
+  if (!worker) spawnWorker();
+  const id = ++jobSeq;
+  job = { id, params, t0: performance.now(), estMs, timer: 0, freshWorker: !workerReady };
+  setState('computing');
+  ui.compute.disabled = true;
+  ui.cancel.disabled = false;
+  updateProgress();
+  job.timer = setInterval(updateProgress, 200);
+  paramsToUrl(params);
+  worker.postMessage({ type: 'compute', id, ...params });
+}
+
+function describeInput({ distribution, n }) {
+  return distribution === 'custom' ? 'the pasted points' : `${fmtInt(n)} points ${labelOf(distribution)}`;
+}
+
+function updateProgress() {
+  if (!job) return;
+  const elapsed = performance.now() - job.t0;
+  let text = `Computing the hull of ${describeInput(job.params)}… ${(elapsed / 1000).toFixed(1)} s`;
+  if (job.estMs > 2000) text += ` (estimate ≈ ${fmtDuration(job.estMs)})`;
+  ui.status.textContent = text;
+}
+
+function finishJob() {
+  if (!job) return null;
+  clearInterval(job.timer);
+  const done = job;
+  job = null;
+  ui.compute.disabled = false;
+  ui.cancel.disabled = true;
+  return done;
+}
+
+function onWorkerMessage(event) {
+  const msg = event.data;
+  if (!msg) return;
+  if (msg.type === 'ready') {
+    workerReady = true;
+    setAlgorithms(msg.algorithms);
+    startOnce();
+    return;
+  }
+  if (msg.type === 'load-error') {
+    // Reported here only for the automatic first run; later runs get it as their error.
+    if (!started) {
+      started = true;
+      const message = `Hull computation failed: ${msg.message}`;
+      console.error(`[hullkit] ${message}`);
+      showFailure(message, null);
+    }
+    return;
+  }
+  if (!job || msg.id !== job.id) return; // a stale answer from a cancelled run
+  const done = finishJob();
+  const roundTripMs = performance.now() - done.t0;
+  if (msg.type === 'result') {
+    try {
+      showResult(msg, done.params, roundTripMs, done.freshWorker);
+    } catch (err) {
+      const message = `Drawing the hull failed: ${err.message}`;
+      console.error(`[hullkit] ${message}`, err);
+      showFailure(message, null);
+    }
+  } else if (msg.type === 'error') {
+    const prefix = msg.kind === 'input' ? 'Cannot compute the hull' : 'Hull computation failed';
+    const message = `${prefix}: ${String(msg.message).replace(/^hull:\s*/, '')}`;
+    if (msg.kind !== 'input') console.error(`[hullkit] ${message}`);
+    showFailure(message, msg);
+  }
+}
+
+const ALGORITHM_LABELS = { giftwrap: 'gift wrapping · O(n·h)', quickhull: 'quickhull · O(n log n)' };
+
+function setAlgorithms(algorithms) {
+  if (!Array.isArray(algorithms) || algorithms.length === 0) return;
+  const current = ui.algorithm.value || preferredAlgorithm;
+  ui.algorithm.replaceChildren(...algorithms.map((name) => {
+    const option = document.createElement('option');
+    option.value = name;
+    option.textContent = ALGORITHM_LABELS[name] ?? name;
+    return option;
+  }));
+  // The library lists its default first.
+  ui.algorithm.value = algorithms.includes(current) ? current : algorithms[0];
+  ui.algorithmField.hidden = false;
+}
+
+function startOnce() {
+  if (started) return;
+  started = true;
+  requestCompute();
+}
+
+const DIMENSION_NOTES = {
+  2: (r) => `The points are coplanar: their hull is a flat convex polygon with ${fmtInt(r.vertices.length)} corners (volume 0).`,
+  1: () => 'The points are collinear: their hull is a segment.',
+  0: () => 'All points coincide: their hull is a single point.',
+  [-1]: () => 'There are no points.',
+};
+
+function showResult(msg, params, roundTripMs, freshWorker) {
+  const faces = msg.triangles.length / 3;
+  const vertices = msg.vertices.length;
+  const edges = msg.edges.length / 2;
+  const d0 = performance.now();
+  drawScene(msg);
+  const drawMs = performance.now() - d0;
+
+  runCount++;
+  if (msg.dimension === 3) calibrate(params.algorithm, msg.n, vertices, msg.hullMs);
+
+  setStats({
+    n: fmtInt(msg.n), vertices: fmtInt(vertices), faces: fmtInt(faces), edges: fmtInt(edges),
+    volume: fmtReal(msg.volume), area: fmtReal(msg.area), ms: fmtMs(msg.hullMs), rtt: fmtMs(roundTripMs),
+    draw: fmtMs(drawMs),
+  });
+  ui.stat.ms.title = `hullkit.hull() inside the worker; points generated in ${fmtMs(msg.genMs)}, worker total ${fmtMs(msg.workerMs)}`;
+  ui.stat.rtt.title = 'from posting the request to receiving the result (generation, hull, edges, transfer)';
+  ui.stat.draw.title = 'building the three.js geometry and the first render on the main thread';
+  const seedNote = params.distribution === 'custom' ? '' : ` (seed ${params.seed})`;
+  let status = `Hull of ${params.distribution === 'custom' ? `${fmtInt(msg.n)} pasted points` : describeInput(params)}${seedNote}.`;
+  if (DIMENSION_NOTES[msg.dimension]) status += ` ${DIMENSION_NOTES[msg.dimension](msg)}`;
+  if (freshWorker) status += ' The round trip includes starting the worker and loading the WebAssembly module.';
+  ui.status.textContent = status;
+
+  window.hullkitStats = {
+    n: msg.n, vertices, faces, edges, volume: msg.volume, area: msg.area, dimension: msg.dimension,
+    ms: msg.hullMs, roundTripMs, distribution: params.distribution, seed: params.seed,
+    algorithm: params.algorithm ?? null, run: runCount,
+  };
+  window.hullkitError = null;
+  setState('ready');
+}
+
+function showFailure(message, msg) {
+  if (msg && msg.xyz && msg.xyz.length % 3 === 0) {
+    drawScene({ xyz: msg.xyz }); // show the offending input
+    setStats({ n: fmtInt(msg.n) });
+  } else {
+    clearContent();
+    requestRender();
+    setStats({});
+  }
+  ui.error.textContent = message;
+  ui.error.hidden = false;
+  ui.status.textContent = '';
+  window.hullkitError = message;
+  setState('error');
+}
+
+function hideError() {
+  ui.error.hidden = true;
+  ui.error.textContent = '';
+}
+
+function setStats(values) {
+  for (const [key, el] of Object.entries(ui.stat)) {
+    el.textContent = values[key] ?? '—';
+    el.title = '';
+  }
+}
+
+function labelOf(distribution) {
+  return ui.distribution.querySelector(`option[value="${distribution}"]`)?.textContent ?? distribution;
+}
+
+// ---------------------------------------------------------------- actions
+
+function requestCompute({ force = false } = {}) {
+  if (job) return;
+  const params = readParams();
+  if (params.distribution !== 'custom') writeParams(params); // normalise what the user typed
+  const estMs = estimateMs(params);
+  if (!force && pendingConfirmKey !== paramsKey(params) && needsConfirmation(params, estMs)) {
+    showWarning(params, estMs);
+    return;
+  }
+  startJob(params, estMs);
+}
+
+function showWarning(params, estMs) {
+  pendingConfirmKey = paramsKey(params);
+  const giftwrap = costKey(params.algorithm) === 'giftwrap';
+  let why;
+  if (giftwrap && params.distribution === 'sphere') {
+    why = `All ${fmtInt(params.n)} points on a sphere are hull vertices, and gift wrapping costs O(n·h) = O(n²) here.`;
+  } else if (giftwrap) {
+    why = `Gift wrapping costs O(n·h) for ${describeInput(params)}.`;
+  } else {
+    why = `This is a large input (${describeInput(params)}).`;
+  }
+  ui.warningText.textContent = `${why} Estimated time ≈ ${fmtDuration(estMs)}. ` +
+    'Click “Run anyway” to start; the page stays responsive and the run can be cancelled.';
+  ui.useCap.hidden = params.distribution === 'custom' || params.n <= SPHERE_WARN_N;
+  ui.warning.hidden = false;
+  ui.compute.textContent = 'Run anyway';
+  ui.compute.classList.add('warn');
+  ui.status.textContent = 'Expensive run: confirm or reduce n.';
+}
+
+function hideWarning() {
+  pendingConfirmKey = null;
+  ui.warning.hidden = true;
+  ui.compute.textContent = 'Compute';
+  ui.compute.classList.remove('warn');
+}
+
+function cancelJob() {
+  if (!job) return;
+  worker.terminate(); // the wasm call cannot be interrupted: drop the whole worker
+  spawnWorker();
+  const done = finishJob();
+  ui.status.textContent = `Cancelled after ${((performance.now() - done.t0) / 1000).toFixed(1)} s; worker restarted.`;
+  setState('cancelled');
+}
+
+ui.form.addEventListener('submit', (event) => {
+  event.preventDefault();
+  requestCompute();
+});
+ui.useCap.addEventListener('click', () => {
+  ui.n.value = String(SPHERE_WARN_N);
+  ui.nSlider.value = String(nToSlider(SPHERE_WARN_N));
+  requestCompute({ force: true });
+});
+ui.cancel.addEventListener('click', cancelJob);
+ui.nSlider.addEventListener('input', () => {
+  ui.n.value = String(sliderToN(Number(ui.nSlider.value)));
+  onParamsEdited();
+});
+ui.n.addEventListener('input', () => {
+  const v = Number(ui.n.value);
+  if (Number.isFinite(v)) ui.nSlider.value = String(nToSlider(v));
+  onParamsEdited();
+});
+ui.seed.addEventListener('input', onParamsEdited);
+ui.customPoints.addEventListener('input', onParamsEdited);
+ui.algorithm.addEventListener('change', onParamsEdited);
+ui.distribution.addEventListener('change', () => {
+  updateSourceFields();
+  onParamsEdited();
+});
+ui.reseed.addEventListener('click', () => {
+  ui.seed.value = String((Math.random() * 0x100000000) >>> 0);
+  onParamsEdited();
+});
+function onParamsEdited() {
+  if (pendingConfirmKey !== null && pendingConfirmKey !== paramsKey(readParams())) {
+    hideWarning();
+    if (!job) ui.status.textContent = '';
+  }
+}
+// Ctrl/Cmd+Enter in the text area computes (Enter alone inserts a line).
+ui.customPoints.addEventListener('keydown', (event) => {
+  if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
+    event.preventDefault();
+    requestCompute();
+  }
+});
+
+for (const box of [ui.showFaces, ui.showEdges, ui.showPoints]) {
+  box.addEventListener('change', () => { applyVisibility(); requestRender(); });
+}
+ui.resetView.addEventListener('click', () => { frameView(false); requestRender(); });
+
+// ---------------------------------------------------------------- start
+
+/**
+ * Compile and link every shader program up front, while the worker loads the
+ * wasm module: one draw of each material with the geometry placed behind the
+ * camera (drivers defer the real work of compile() to the first draw).
+ */
+function warmUpShaders() {
+  const geom = new THREE.BufferGeometry();
+  geom.setAttribute('position', new THREE.BufferAttribute(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), 3));
+  geom.setIndex([0, 1, 2]);
+  const group = new THREE.Group();
+  group.add(
+    new THREE.Mesh(geom, materials.faceBack), new THREE.Mesh(geom, materials.faceFront),
+    new THREE.LineSegments(geom, materials.edgeBack), new THREE.LineSegments(geom, materials.edgeFront),
+    new THREE.Points(geom, materials.point), new THREE.Points(geom, materials.vertex),
+    new THREE.Points(geom, materials.vertexFront),
+  );
+  group.position.copy(camera.position).multiplyScalar(3); // on the view axis, behind the camera
+  for (const obj of group.children) obj.frustumCulled = false;
+  scene.add(group);
+  try {
+    renderer.render(scene, camera);
+  } finally {
+    scene.remove(group);
+    geom.dispose();
+  }
+}
+
+ui.customPoints.value = CUSTOM_SAMPLE;
+writeParams(paramsFromUrl());
+spawnWorker(); // the first computation starts when the worker reports 'ready' (or 'load-error')
+warmUpShaders();
