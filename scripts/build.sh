@@ -1,19 +1,34 @@
 #!/usr/bin/env bash
-# Builds the native library, CLI and tests (build/native) and the wasm module (build/wasm).
-# `scripts/build.sh native` or `scripts/build.sh wasm` builds one of them.
+# Builds hullkit. With no arguments: the native library, CLI and tests (build/native) and the wasm
+# module (build/wasm). Arguments pick among: native, wasm, asan (the C++ tests under
+# AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-what=${1:-all}
+targets=("$@")
+((${#targets[@]})) || targets=(native wasm)
 jobs=$(nproc)
 
-if [ "$what" = all ] || [ "$what" = native ]; then
-  cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DHULLKIT_BENCH=OFF >/dev/null
-  cmake --build build/native -j "$jobs"
-fi
-
-if [ "$what" = all ] || [ "$what" = wasm ]; then
-  # Debian's emscripten runs acorn from /usr/share/nodejs, which this Node does not search.
-  export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
-  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build/wasm -j "$jobs"
-fi
+for target in "${targets[@]}"; do
+  case "$target" in
+    native)
+      cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DHULLKIT_BENCH=OFF >/dev/null
+      cmake --build build/native -j "$jobs"
+      ;;
+    wasm)
+      # Debian's emscripten runs acorn from /usr/share/nodejs, which this Node does not search.
+      export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+      emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release >/dev/null
+      cmake --build build/wasm -j "$jobs"
+      ;;
+    asan)
+      sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+      cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF \
+        -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" >/dev/null
+      cmake --build build/asan -j "$jobs"
+      ;;
+    *)
+      echo "build.sh: unknown target \"$target\" (known: native, wasm, asan)" >&2
+      exit 2
+      ;;
+  esac
+done

@@ -1,42 +1,73 @@
 /**
- * hullkit: convex hulls of 3D point sets, computed by the hullkit C++ core compiled to
+ * hullkit: exact convex hulls of 3D point sets, computed by the hullkit C++ core compiled to
  * WebAssembly. Every function takes typed arrays and returns typed arrays the caller owns
  * (copied out of the WebAssembly heap), so results stay valid across later calls.
  */
 
 /** Algorithms available to {@link Hullkit.hull}. */
-export type HullAlgorithm = 'giftwrap';
+export type HullAlgorithm = 'quickhull' | 'giftwrap';
 
 export interface HullOptions {
   /**
-   * `'giftwrap'` (default): 3D gift wrapping as in the seed document, one pass over the points per
-   * hull edge, O(n·h) for n points and h hull vertices.
+   * `'quickhull'` (default): Barber, Dobkin & Huhdanpaa's quickhull, exact.
+   * `'giftwrap'`: 3D gift wrapping as in the seed document, one pass over the points per hull
+   * edge, O(n·h) for n points and h hull vertices.
    */
   algorithm?: HullAlgorithm;
+  /**
+   * `'exact'` (default): every side-of-plane decision is made by exact predicates.
+   * `'seed'`: the seed document's epsilon (DBL_EPSILON times the taxicab extent of the cloud),
+   * gift wrapping only, to show the difference: near-degenerate input may then be rejected.
+   */
+  epsilon?: 'exact' | 'seed';
+  /** Also return the faces as planar convex polygons (`faceOffsets`, `faceVertices`). */
+  mergeCoplanar?: boolean;
 }
 
 export interface HullResult {
-  /** Three indices per triangle into the input points, counter-clockwise seen from outside. */
+  /**
+   * Dimension of the points' affine hull: 3 a polytope, 2 a convex polygon (`vertices` in
+   * counter-clockwise order seen from `normal`), 1 a segment (`vertices` its two ends), 0 a single
+   * point, -1 no points.
+   */
+  dimension: 3 | 2 | 1 | 0 | -1;
+  /**
+   * Three indices per triangle into the input points, counter-clockwise seen from outside
+   * (dimension 2: a fan of the polygon, counter-clockwise seen from `normal`).
+   */
   triangles: Uint32Array;
-  /** Indices of the input points that are hull vertices, ascending. */
+  /**
+   * Indices of the hull's vertices: its extreme points only (no point inside a face or an edge),
+   * ascending for dimension 3; of identical points the lowest index stands for all.
+   */
   vertices: Uint32Array;
-  /** Enclosed volume. */
+  /** Enclosed volume (0 below dimension 3). */
   volume: number;
-  /** Surface area. */
+  /** Surface area (dimension 2: the polygon's area). */
   area: number;
+  /** Dimension 2 only: unit normal of the polygon's plane. */
+  normal?: Float64Array;
+  /**
+   * With `mergeCoplanar`: face f is the convex polygon
+   * `faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1])`, counter-clockwise seen from outside.
+   */
+  faceOffsets?: Uint32Array;
+  faceVertices?: Uint32Array;
 }
 
 export interface Hullkit {
   /**
    * The convex hull of `xyz`, a flat array x0 y0 z0 x1 y1 z1 ... (a Float64Array is used as it is;
-   * other array-likes of numbers are converted).
+   * other array-likes of numbers are converted). Every input gets an answer: coplanar, collinear,
+   * repeated and too few points give results of lower `dimension`, not errors.
    *
-   * @throws {HullkitError} for fewer than 4 points, a coordinate count that is not a multiple of 3,
-   *   a non-finite coordinate (`pointIndex` names the point), points without volume (all identical,
-   *   collinear or coplanar), an unknown algorithm or an unknown option.
+   * @throws {HullkitError} for a coordinate count that is not a multiple of 3, a non-finite
+   *   coordinate (`pointIndex` names the point), coordinates spanning more than about 1e176 between
+   *   the smallest and largest nonzero magnitude, an unknown option or option value, or a
+   *   near-degenerate input that the seed's epsilon cannot decide.
    */
   hull(xyz: Float64Array | ArrayLike<number>, options?: HullOptions): HullResult;
-  /** The algorithm names `hull` accepts. */
+  /** The algorithm names `hull` accepts, the default first. */
   readonly algorithms: readonly HullAlgorithm[];
 }
 

@@ -2,8 +2,9 @@
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 
-const ALGORITHMS = ['giftwrap'];
-const HULL_OPTIONS = ['algorithm'];
+const ALGORITHMS = ['quickhull', 'giftwrap'];
+const EPSILONS = ['exact', 'seed'];
+const HULL_OPTIONS = ['algorithm', 'epsilon', 'mergeCoplanar'];
 
 const isNode = typeof process === 'object' && typeof process.versions?.node === 'string';
 
@@ -35,9 +36,15 @@ export class HullkitError extends Error {
 
 function hull(core, xyz, options = {}) {
   const points = toFloat64(xyz, 'hull');
-  const { algorithm = 'giftwrap' } = checkOptions(options, HULL_OPTIONS, 'hull');
+  const { algorithm = 'quickhull', epsilon = 'exact', mergeCoplanar = false } = checkOptions(options, HULL_OPTIONS, 'hull');
   if (!ALGORITHMS.includes(algorithm)) {
     throw new HullkitError(`hull: unknown algorithm "${algorithm}" (known: ${ALGORITHMS.join(', ')})`);
+  }
+  if (!EPSILONS.includes(epsilon)) {
+    throw new HullkitError(`hull: unknown epsilon "${epsilon}" (known: ${EPSILONS.join(', ')})`);
+  }
+  if (typeof mergeCoplanar !== 'boolean') {
+    throw new HullkitError(`hull: mergeCoplanar must be true or false, got ${String(mergeCoplanar)}`);
   }
 
   const count = points.length / 3;
@@ -48,7 +55,7 @@ function hull(core, xyz, options = {}) {
   try {
     // HEAPF64 is re-read after malloc: memory growth replaces the buffer behind old views.
     new Float64Array(core.HEAPF64.buffer, address, points.length).set(points);
-    result = core.hullFromHeap(address, count, algorithm);
+    result = core.hullFromHeap(address, count, algorithm, epsilon === 'seed', mergeCoplanar);
   } finally {
     core._free(address);
   }
@@ -56,12 +63,19 @@ function hull(core, xyz, options = {}) {
     if (!result.ok()) {
       throw new HullkitError(`hull: ${result.error}`, { pointIndex: result.errorPoint() });
     }
-    return {
+    const out = {
+      dimension: result.dimension,
       triangles: result.trianglesView().slice(),
       vertices: result.verticesView().slice(),
       volume: result.volume,
       area: result.area,
     };
+    if (out.dimension === 2) out.normal = result.normalView().slice();
+    if (mergeCoplanar) {
+      out.faceOffsets = result.faceOffsetsView().slice();
+      out.faceVertices = result.faceVerticesView().slice();
+    }
+    return out;
   } finally {
     result.delete();
   }

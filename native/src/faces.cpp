@@ -29,34 +29,21 @@ private:
 
 }  // namespace
 
-Polygons merge_coplanar_triangles(PointSpan points, const std::vector<std::uint32_t>& triangles,
-                                  const std::vector<std::uint32_t>& twins) {
+Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> triangles,
+                                  const std::vector<CoplanarPair>& coplanar) {
     const std::size_t count = triangles.size() / 3;
-    auto corner = [&](std::size_t t, std::size_t k) { return points[triangles[3 * t + k]]; };
-
-    // Pairs of edge-adjacent triangles whose planes coincide exactly.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> coplanar;
-    for (std::size_t t = 0; t < count; ++t) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t opposite = twins[3 * t + k];
-            const std::uint32_t u = opposite / 3;
-            if (u <= t) continue;  // each pair once
-            const double* apex = corner(u, (opposite % 3 + 2) % 3);  // u's corner off the shared edge
-            if (orient3d(corner(t, 0), corner(t, 1), corner(t, 2), apex) == 0)
-                coplanar.emplace_back(static_cast<std::uint32_t>(t), u);
-        }
-    }
-
     Polygons faces;
-    faces.vertices.reserve(triangles.size());
-    faces.offsets.reserve(count + 1);
+    faces.offsets.resize(count + 1);
+    for (std::size_t t = 0; t <= count; ++t) faces.offsets[t] = static_cast<std::uint32_t>(3 * t);
     if (coplanar.empty()) {  // every triangle is a face of its own: the common case
-        for (std::size_t t = 0; t < count; ++t) faces.add(&triangles[3 * t], &triangles[3 * t] + 3);
+        faces.vertices = std::move(triangles);
         return faces;
     }
+    faces.offsets.assign(1, 0);
+    faces.vertices.reserve(triangles.size());
 
     DisjointSets sets(count);
-    for (const auto& [t, u] : coplanar) sets.unite(t, u);
+    for (const CoplanarPair& pair : coplanar) sets.unite(pair.first, pair.second);
     // Triangles grouped by face (the group's lowest triangle index names it), in triangle order.
     std::vector<std::uint32_t> order(count);
     std::iota(order.begin(), order.end(), 0u);
@@ -85,6 +72,26 @@ Polygons merge_coplanar_triangles(PointSpan points, const std::vector<std::uint3
         begin = end;
     }
     return faces;
+}
+
+void measure(PointSpan points, const Polygons& faces, double* volume, double* area) {
+    // Tetrahedra from one corner to every fan triangle: faces through that corner add zero.
+    const glm::dvec3 origin = faces.vertices.empty() ? glm::dvec3(0.0) : vec3(points[faces.vertices.front()]);
+    double six_volume = 0.0;
+    double twice_area = 0.0;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
+        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
+        const glm::dvec3 a = vec3(points[corners[0]]) - origin;
+        for (std::size_t k = 1; k + 1 < m; ++k) {
+            const glm::dvec3 b = vec3(points[corners[k]]) - origin;
+            const glm::dvec3 c = vec3(points[corners[k + 1]]) - origin;
+            six_volume += glm::dot(a, glm::cross(b, c));
+            twice_area += glm::length(glm::cross(b - a, c - a));
+        }
+    }
+    *volume = six_volume / 6.0;
+    *area = twice_area / 2.0;
 }
 
 }  // namespace hullkit::detail

@@ -178,8 +178,8 @@ void rotate_to_lowest(Polygons& faces) {
     }
 }
 
-/// Triangles fanned from each polygon's first corner; sorted vertex list; volume and area.
-void fill_from_polygons(PointSpan points, const Polygons& faces, int exponent, Hull& hull) {
+/// Triangles fanned from each polygon's first corner and the sorted vertex list.
+void fill_from_polygons(std::size_t point_count, const Polygons& faces, Hull& hull) {
     hull.triangles.clear();
     hull.triangles.reserve(3 * (faces.vertices.size() - 2 * faces.size()));
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -189,27 +189,18 @@ void fill_from_polygons(PointSpan points, const Polygons& faces, int exponent, H
             hull.triangles.insert(hull.triangles.end(), {corners[0], corners[k], corners[k + 1]});
         }
     }
-    std::vector<std::uint8_t> is_vertex(points.count, 0);
+    std::vector<std::uint8_t> is_vertex(point_count, 0);
     for (std::uint32_t v : faces.vertices) is_vertex[v] = 1;
     hull.vertices.clear();
-    for (std::uint32_t i = 0; i < points.count; ++i) {
+    for (std::uint32_t i = 0; i < point_count; ++i) {
         if (is_vertex[i]) hull.vertices.push_back(i);
     }
+}
 
-    // Tetrahedra from one hull vertex to every face; measured on the scaled points, then unscaled.
-    auto at = [&](std::uint32_t i) { return detail::vec3(points[i]); };
-    const glm::dvec3 origin = at(hull.vertices.front());
-    double six_volume = 0.0;
-    double twice_area = 0.0;
-    for (std::size_t t = 0; t < hull.triangles.size(); t += 3) {
-        const glm::dvec3 a = at(hull.triangles[t]) - origin;
-        const glm::dvec3 b = at(hull.triangles[t + 1]) - origin;
-        const glm::dvec3 c = at(hull.triangles[t + 2]) - origin;
-        six_volume += glm::dot(a, glm::cross(b, c));
-        twice_area += glm::length(glm::cross(b - a, c - a));
-    }
-    hull.volume = std::ldexp(six_volume / 6.0, -3 * exponent);
-    hull.area = std::ldexp(twice_area / 2.0, -2 * exponent);
+/// Volume and area measured on points scaled by 2^exponent, given back in the caller's units.
+void unscale(int exponent, double volume, double area, Hull& hull) {
+    hull.volume = std::ldexp(volume, -3 * exponent);
+    hull.area = std::ldexp(area, -2 * exponent);
 }
 
 Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
@@ -239,9 +230,11 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
     Polygons faces;
     faces.add(polygon.begin(), polygon.end());
     rotate_to_lowest(faces);
-    fill_from_polygons(points, faces, exponent, hull);
+    fill_from_polygons(points.count, faces, hull);
     hull.vertices = faces.vertices;  // in order around the polygon
-    hull.volume = 0.0;
+    double volume = 0.0, area = 0.0;
+    detail::measure(points, faces, &volume, &area);
+    unscale(exponent, 0.0, area, hull);  // flat: no volume, the area of one side
     const glm::dvec3 a = detail::vec3(points[s.p[0]]);
     const glm::dvec3 normal = glm::cross(detail::vec3(points[s.p[1]]) - a, detail::vec3(points[s.p[2]]) - a);
     const glm::dvec3 unit = glm::normalize(normal);
@@ -272,11 +265,13 @@ Hull hull(PointSpan input, const HullOptions& options) {
     }
 
     Polygons faces;
+    double volume = 0.0, area = 0.0;
     std::string error;
     if (seed) {
         // The seed's own behaviour, for comparison: its epsilon also judges degeneracy.
         if (points.count < 4) return detail::failure("a 3D hull needs at least 4 points, got " + std::to_string(points.count));
         if (!detail::giftwrap_faces(points, options.giftwrap_scan, true, faces, error)) return detail::failure(error);
+        detail::measure(points, faces, &volume, &area);
     } else {
         const Simplex simplex = detail::find_simplex(points);
         if (simplex.dimension < 3) {
@@ -289,17 +284,17 @@ Hull hull(PointSpan input, const HullOptions& options) {
         }
         if (options.algorithm == Algorithm::Giftwrap) {
             if (!detail::giftwrap_faces(points, options.giftwrap_scan, false, faces, error)) return detail::failure(error);
-        } else {
-            std::vector<std::uint32_t> triangles, twins;
-            if (!detail::quickhull_triangles(points, simplex, triangles, twins, error)) return detail::failure(error);
-            faces = detail::merge_coplanar_triangles(points, triangles, twins);
+            detail::measure(points, faces, &volume, &area);
+        } else if (!detail::quickhull_faces(points, simplex, faces, &volume, &area, error)) {
+            return detail::failure(error);
         }
     }
 
     Hull result;
     result.dimension = 3;
     rotate_to_lowest(faces);
-    fill_from_polygons(points, faces, exponent, result);
+    fill_from_polygons(points.count, faces, result);
+    unscale(exponent, volume, area, result);
     if (options.merge_coplanar) {
         result.face_offsets = std::move(faces.offsets);
         result.face_vertices = std::move(faces.vertices);

@@ -45,17 +45,24 @@ std::vector<std::uint32_t> distinct_points(PointSpan points);
 /// (only possible with the seed's epsilon).
 bool giftwrap_faces(PointSpan points, GiftwrapScan scan, bool seed_epsilon, Polygons& faces, std::string& error);
 
-/// Quickhull of a cloud with volume, starting from `simplex`: hull triangles, counter-clockwise
-/// seen from outside, and for each half-edge 3 * t + k (edge k of triangle t) its opposite
-/// half-edge in `twins`. Adjacent triangles may be coplanar and a vertex may lie inside a face or
-/// an edge (ties are legal in exact arithmetic): merge_coplanar_triangles() settles both.
-bool quickhull_triangles(PointSpan points, const Simplex& simplex, std::vector<std::uint32_t>& triangles,
-                         std::vector<std::uint32_t>& twins, std::string& error);
+/// Quickhull of a cloud with volume, starting from `simplex`: the hull's faces as strictly convex
+/// polygons (coplanar triangles merged, so that only extreme points are corners), counter-clockwise
+/// seen from outside, with the enclosed volume and the surface area.
+bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
+                     std::string& error);
 
-/// Groups the triangles of a closed convex surface (with half-edge `twins` as above) into planar
-/// faces (exactly coplanar, edge connected) and returns each as its strictly convex polygon, so
-/// that only extreme points remain corners.
-Polygons merge_coplanar_triangles(PointSpan points, const std::vector<std::uint32_t>& triangles,
-                                  const std::vector<std::uint32_t>& twins);
+/// Two edge-adjacent triangles (indices into a triangle list) that lie in one plane.
+struct CoplanarPair {
+    std::uint32_t first, second;
+};
+
+/// Groups the triangles of a closed convex surface into planar faces, given which edge-adjacent
+/// triangles are coplanar, and returns each face as its strictly convex polygon, so that only
+/// extreme points remain corners.
+Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> triangles,
+                                  const std::vector<CoplanarPair>& coplanar);
+
+/// Volume and area enclosed by closed polygons, counter-clockwise seen from outside.
+void measure(PointSpan points, const Polygons& faces, double* volume, double* area);
 
 }  // namespace hullkit::detail

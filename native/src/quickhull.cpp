@@ -6,8 +6,9 @@
 // strictly above it; a point above no face is inside the current hull and dropped for good.
 //
 // Before the main loop: points certified to lie strictly inside the hull of a few extreme points
-// (a box shown, exactly, to be inside that hull) are dropped, and the rest are copied in a
-// space-filling-curve (Morton) order, so that the points above one face sit close in memory.
+// (a box shown, exactly, to be inside that hull) are dropped, so are repeats of a point (the
+// lowest index stays), and the rest are copied in a space-filling-curve (Morton) order, so that
+// the points above one face sit close in memory.
 //
 // Side tests: a rounded plane test with a proven error bound decides almost every case; only
 // points within that bound of a plane go to the exact orient3d. Rounded distances are also used
@@ -52,6 +53,7 @@ public:
     /// `points` are the candidates, `original[i]` the caller's index of candidate i.
     Quickhull(PointSpan points, const std::vector<Index>& original)
         : points_(points), original_(original), next_(points.count, kNone) {
+        faces_.reserve(2 * points.count + 16);  // a hull of n points has at most 2n - 4 faces
         double lo[3], hi[3];
         for (int axis = 0; axis < 3; ++axis) lo[axis] = hi[axis] = points[0][axis];
         for (std::size_t i = 1; i < points.count; ++i) {
@@ -63,7 +65,10 @@ public:
         extent_ = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     }
 
-    bool run(const Simplex& simplex, std::vector<Index>& triangles, std::vector<Index>& twins, std::string& error) {
+    /// The hull's triangles (candidate indices) and the pairs of edge-adjacent triangles that lie
+    /// in one plane (exactly), which merge_coplanar_triangles() needs.
+    bool run(const Simplex& simplex, std::vector<Index>& triangles, std::vector<CoplanarPair>& coplanar,
+             std::string& error) {
         start(simplex);
         while (!pending_.empty()) {
             const Index f = pending_.back();
@@ -71,21 +76,26 @@ public:
             if (!faces_[f].alive || faces_[f].outside == kNone) continue;
             if (!add_point(f, error)) return false;
         }
-        // Number the live faces consecutively; twins follow the new numbering.
+        release(next_);
+        release(pending_);
+        // Number the live faces consecutively.
         std::vector<Index> number(faces_.size(), kNone);
         Index live = 0;
         for (std::size_t f = 0; f < faces_.size(); ++f) {
             if (faces_[f].alive) number[f] = live++;
         }
         triangles.resize(3 * std::size_t{live});
-        twins.resize(3 * std::size_t{live});
+        coplanar.clear();
         for (std::size_t f = 0; f < faces_.size(); ++f) {
             const Face& face = faces_[f];
             if (!face.alive) continue;
-            const std::size_t base = 3 * std::size_t{number[f]};
+            std::copy(face.v, face.v + 3, &triangles[3 * std::size_t{number[f]}]);
             for (int k = 0; k < 3; ++k) {
-                triangles[base + k] = original_[face.v[k]];
-                twins[base + k] = 3 * number[face.twin[k] / 3] + face.twin[k] % 3;
+                const Index g = face.twin[k] / 3;
+                if (g < f) continue;  // each pair once
+                const Index apex = faces_[g].v[(face.twin[k] % 3 + 2) % 3];  // g's corner off the shared edge
+                double h;
+                if (side(plane_of(static_cast<Index>(f)), apex, &h) == 0) coplanar.push_back({number[f], number[g]});
             }
         }
         return true;
@@ -93,6 +103,11 @@ public:
 
 private:
     const double* at(Index i) const { return points_[i]; }
+
+    template <class T>
+    static void release(std::vector<T>& v) {
+        std::vector<T>().swap(v);
+    }
 
     Plane plane_of(Index f) const {
         const Face& face = faces_[f];
@@ -170,12 +185,16 @@ private:
         }
     }
 
-    /// Tries the planes in order; the point goes to the first it is strictly above.
+    /// The point goes to the first plane it is strictly above, trying first the plane that took
+    /// the previous point (outside lists are in spatial order, so neighbours tend to share one).
     void assign(const std::vector<Plane>& planes, const std::vector<Index>& owners, Index p) {
-        for (std::size_t k = 0; k < planes.size(); ++k) {
+        const std::size_t m = planes.size();
+        std::size_t k = last_hit_ < m ? last_hit_ : 0;
+        for (std::size_t tried = 0; tried < m; ++tried, k = k + 1 == m ? 0 : k + 1) {
             double h;
             if (side(planes[k], p, &h) > 0) {
                 push_outside(owners[k], p, h);
+                last_hit_ = k;
                 return;
             }
         }
@@ -286,6 +305,7 @@ private:
     std::vector<Index> next_;     // outside-list links, one per point
     std::vector<Index> pending_;  // faces that got outside points
     Index stamp_ = 0;
+    std::size_t last_hit_ = 0;  // the plane index that took the last assigned point
 
     // Scratch of one step, kept to avoid reallocation.
     std::vector<Index> visible_, horizon_, new_faces_;
@@ -308,9 +328,28 @@ std::uint32_t spread_bits(std::uint32_t v) {
     return v;
 }
 
-/// Sorts `ids` along a Morton curve through the bounding box (10 bits per axis; equal keys keep
-/// their order). Only the memory order of the work changes, never a result.
-void morton_order(PointSpan points, std::vector<Index>& ids) {
+/// Sorts `ids` along a Morton curve through the bounding box (10 bits per axis) and drops all
+/// but the lowest index of identical points. Only the memory order of the work changes, never a
+/// result: identical points have one key, and within a key the ids are sorted by coordinates.
+void spatial_order(PointSpan points, std::vector<Index>& ids) {
+    auto by_coordinates = [&](Index a, Index b) {
+        const double* p = points[a];
+        const double* q = points[b];
+        if (p[0] != q[0]) return p[0] < q[0];
+        if (p[1] != q[1]) return p[1] < q[1];
+        if (p[2] != q[2]) return p[2] < q[2];
+        return a < b;
+    };
+    auto same = [&](Index a, Index b) {
+        const double* p = points[a];
+        const double* q = points[b];
+        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+    };
+    if (ids.size() <= 4096) {  // small: coordinate order is good enough
+        std::sort(ids.begin(), ids.end(), by_coordinates);
+        ids.erase(std::unique(ids.begin(), ids.end(), same), ids.end());
+        return;
+    }
     double lo[3], scale[3];
     for (int axis = 0; axis < 3; ++axis) {
         double low = points[ids[0]][axis], high = low;
@@ -330,7 +369,7 @@ void morton_order(PointSpan points, std::vector<Index>& ids) {
         }
         keyed[k] = (std::uint64_t{key} << 32) | ids[k];
     }
-    // LSD radix sort on the 30-bit key, two 15-bit digits; stable, so ids stay ascending per key.
+    // LSD radix sort on the 30-bit key, two 15-bit digits.
     std::vector<std::uint64_t> buffer(keyed.size());
     for (int shift = 32; shift < 62; shift += 15) {
         std::vector<std::size_t> start(1u << 15, 0);
@@ -340,7 +379,18 @@ void morton_order(PointSpan points, std::vector<Index>& ids) {
         for (std::uint64_t v : keyed) buffer[start[(v >> shift) & 0x7fff]++] = v;
         keyed.swap(buffer);
     }
-    for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<Index>(keyed[k]);
+    ids.clear();
+    for (std::size_t begin = 0; begin < keyed.size();) {
+        std::size_t end = begin + 1;
+        while (end < keyed.size() && keyed[end] >> 32 == keyed[begin] >> 32) ++end;
+        const std::size_t first = ids.size();
+        for (std::size_t k = begin; k < end; ++k) ids.push_back(static_cast<Index>(keyed[k]));
+        if (end - begin > 1) {  // a shared cell: identical points, if any, are here
+            std::sort(ids.begin() + first, ids.end(), by_coordinates);
+            ids.erase(std::unique(ids.begin() + first, ids.end(), same), ids.end());
+        }
+        begin = end;
+    }
 }
 
 /// Indices of the points that may be on the hull: all but those inside a box that is certified
@@ -387,11 +437,12 @@ std::vector<Index> candidates(PointSpan points, const Simplex& simplex) {
     local.dimension = 3;
     for (int k = 0; k < 4; ++k)
         local.p[k] = static_cast<Index>(std::lower_bound(seeds.begin(), seeds.end(), simplex.p[k]) - seeds.begin());
-    std::vector<Index> identity(seeds.size()), triangles, twins;
+    std::vector<Index> identity(seeds.size()), triangles;
+    std::vector<CoplanarPair> coplanar;
     for (Index k = 0; k < identity.size(); ++k) identity[k] = k;
     Quickhull small(PointSpan(seed_xyz.data(), seeds.size()), identity);
     std::string ignored;
-    if (!small.run(local, triangles, twins, ignored)) return everything();
+    if (!small.run(local, triangles, coplanar, ignored)) return everything();
 
     // The largest box about the bounding box's centre, shrunk in steps, whose corners are all
     // strictly below every face of that hull.
@@ -435,12 +486,13 @@ std::vector<Index> candidates(PointSpan points, const Simplex& simplex) {
 
 }  // namespace
 
-bool quickhull_triangles(PointSpan points, const Simplex& simplex, std::vector<std::uint32_t>& triangles,
-                         std::vector<std::uint32_t>& twins, std::string& error) {
+bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
+                     std::string& error) {
     std::vector<Index> ids = candidates(points, simplex);
-    if (ids.size() > 4096) morton_order(points, ids);
+    spatial_order(points, ids);
     std::vector<double> xyz(3 * ids.size());
     for (std::size_t k = 0; k < ids.size(); ++k) std::copy(points[ids[k]], points[ids[k]] + 3, &xyz[3 * k]);
+    const PointSpan local_points(xyz.data(), ids.size());
     Simplex local;
     local.dimension = 3;
     for (std::size_t k = 0; k < ids.size(); ++k) {
@@ -448,8 +500,17 @@ bool quickhull_triangles(PointSpan points, const Simplex& simplex, std::vector<s
             if (ids[k] == simplex.p[corner]) local.p[corner] = static_cast<Index>(k);
         }
     }
-    Quickhull quickhull(PointSpan(xyz.data(), ids.size()), ids);
-    return quickhull.run(local, triangles, twins, error);
+    std::vector<Index> triangles;
+    std::vector<CoplanarPair> coplanar;
+    {
+        Quickhull quickhull(local_points, ids);
+        if (!quickhull.run(local, triangles, coplanar, error)) return false;
+    }
+    // Merging and measuring touch every corner: done on the local copy, which is in spatial order.
+    faces = merge_coplanar_triangles(local_points, std::move(triangles), coplanar);
+    measure(local_points, faces, volume, area);
+    for (Index& v : faces.vertices) v = ids[v];
+    return true;
 }
 
 }  // namespace hullkit::detail

@@ -63,14 +63,57 @@ test('hull: plain arrays are accepted', () => {
   assert.deepEqual(fromArray, hullkit.hull(cubeCorners()));
 });
 
-test('hull: bad input throws HullkitError with a clear message', () => {
-  assert.throws(() => hullkit.hull(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0])), {
-    name: 'HullkitError', message: /at least 4 points, got 3/,
+test('hull: degenerate input gets a lower-dimensional answer, not an error', () => {
+  const none = hullkit.hull(new Float64Array(0));
+  assert.equal(none.dimension, -1);
+  assert.equal(none.vertices.length, 0);
+  const point = hullkit.hull(new Float64Array(12).fill(1));
+  assert.equal(point.dimension, 0);
+  assert.deepEqual([...point.vertices], [0]);
+  const segment = hullkit.hull([0, 0, 0, 3, 3, 3, 1, 1, 1, -2, -2, -2]);
+  assert.equal(segment.dimension, 1);
+  assert.deepEqual([...segment.vertices], [1, 3]);
+  // A unit square with its centre, in the plane z = 0.
+  const square = hullkit.hull([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 0]);
+  assert.equal(square.dimension, 2);
+  assert.equal(square.vertices.length, 4);
+  assert.equal(square.area, 1);
+  assert.equal(square.volume, 0);
+  assert.deepEqual([...square.normal].map(Math.abs), [0, 0, 1]);
+  assert.equal(square.triangles.length, 6);
+});
+
+test('hull: quickhull and gift wrapping agree; mergeCoplanar gives a cube six quads', () => {
+  const grid = [];
+  for (let x = -1; x <= 1; x++) for (let y = -1; y <= 1; y++) for (let z = -1; z <= 1; z++) grid.push(x, y, z);
+  const xyz = new Float64Array(grid);
+  for (const algorithm of hullkit.algorithms) {
+    const result = hullkit.hull(xyz, { algorithm, mergeCoplanar: true });
+    assert.equal(result.dimension, 3);
+    assert.deepEqual([...result.vertices], [0, 2, 6, 8, 18, 20, 24, 26], algorithm);
+    assert.equal(result.faceOffsets.length, 7);
+    for (let f = 0; f < 6; f++) assert.equal(result.faceOffsets[f + 1] - result.faceOffsets[f], 4);
+    assert.deepEqual(hullProblems(xyz, result), []);
+    assert.equal(result.volume, 8);
+  }
+  assert.equal(hullkit.hull(xyz).faceOffsets, undefined);
+  const ball = randomBall(2000, 8);
+  assert.deepEqual(hullkit.hull(ball, { algorithm: 'quickhull' }).vertices, hullkit.hull(ball, { algorithm: 'giftwrap' }).vertices);
+  assert.deepEqual(hullkit.algorithms, ['quickhull', 'giftwrap']);
+});
+
+test("hull: epsilon 'seed' is the seed's behaviour, for gift wrapping", () => {
+  const ball = randomBall(1000, 12);
+  const seed = hullkit.hull(ball, { algorithm: 'giftwrap', epsilon: 'seed' });
+  assert.deepEqual(seed.vertices, hullkit.hull(ball).vertices);
+  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], { algorithm: 'giftwrap', epsilon: 'seed' }), {
+    name: 'HullkitError', message: /coplanar within the seed's epsilon/,
   });
-  assert.throws(() => hullkit.hull(new Float64Array(10)), { message: /10 coordinates is not a whole number/ });
-  assert.throws(() => hullkit.hull(new Float64Array(12).fill(1)), { message: /identical/ });
-  assert.throws(() => hullkit.hull([0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3]), { message: /collinear/ });
-  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), { message: /coplanar/ });
+  assert.throws(() => hullkit.hull(ball, { epsilon: 'seed' }), { message: /gift wrapping only/ });
+});
+
+test('hull: bad input throws HullkitError with a clear message', () => {
+  assert.throws(() => hullkit.hull(new Float64Array(10)), { name: 'HullkitError', message: /10 coordinates is not a whole number/ });
   const withNaN = cubeCorners();
   withNaN[3 * 6 + 2] = NaN;
   assert.throws(() => hullkit.hull(withNaN), (error) => {
@@ -79,8 +122,11 @@ test('hull: bad input throws HullkitError with a clear message', () => {
     assert.equal(error.pointIndex, 6);
     return true;
   });
-  assert.throws(() => hullkit.hull(cubeCorners(), { algorithm: 'qhull' }), { message: /unknown algorithm "qhull" \(known: giftwrap\)/ });
+  assert.throws(() => hullkit.hull([1e300, 0, 0, 0, 1e-300, 0, 0, 0, 1, 1, 1, 1]), { message: /orders of magnitude/ });
+  assert.throws(() => hullkit.hull(cubeCorners(), { algorithm: 'qhull' }), { message: /unknown algorithm "qhull" \(known: quickhull, giftwrap\)/ });
   assert.throws(() => hullkit.hull(cubeCorners(), { algoritm: 'giftwrap' }), { message: /unknown option "algoritm"/ });
+  assert.throws(() => hullkit.hull(cubeCorners(), { epsilon: 1e-9 }), { message: /unknown epsilon "1e-9"/ });
+  assert.throws(() => hullkit.hull(cubeCorners(), { mergeCoplanar: 'yes' }), { message: /mergeCoplanar must be true or false/ });
   assert.throws(() => hullkit.hull('1 2 3'), TypeError);
   assert.throws(() => hullkit.hull(null), TypeError);
   // The module keeps working after errors.
@@ -103,18 +149,20 @@ test('hull: wasm and the native CLI return the same triangles', (t) => {
     // %.17g-equivalent: JS prints the shortest string that reads back to the same double.
     for (let i = 0; i < xyz.length; i += 3) lines.push(`${xyz[i]} ${xyz[i + 1]} ${xyz[i + 2]}`);
     writeFileSync(file, lines.join('\n') + '\n');
-    const json = JSON.parse(execFileSync(cli, ['hull', file, '--format', 'json'], { encoding: 'utf8' }));
-    const wasm = hullkit.hull(xyz);
-    assert.deepEqual([...wasm.triangles], json.triangles.flat(), name);
-    assert.deepEqual([...wasm.vertices], json.vertices, name);
-    assert.equal(wasm.volume, json.volume, name);
-    assert.equal(wasm.area, json.area, name);
+    for (const algorithm of hullkit.algorithms) {
+      const json = JSON.parse(execFileSync(cli, ['hull', file, '--format', 'json', '--algorithm', algorithm], { encoding: 'utf8' }));
+      const wasm = hullkit.hull(xyz, { algorithm });
+      assert.deepEqual([...wasm.triangles], json.triangles.flat(), `${name} ${algorithm}`);
+      assert.deepEqual([...wasm.vertices], json.vertices, `${name} ${algorithm}`);
+      assert.equal(wasm.volume, json.volume, `${name} ${algorithm}`);
+      assert.equal(wasm.area, json.area, `${name} ${algorithm}`);
+    }
   }
   // The same error for the same bad input.
-  const flat = join(dir, 'flat.txt');
-  writeFileSync(flat, '0 0 0\n1 0 0\n0 1 0\n1 1 0\n');
-  const run = spawnSync(cli, ['hull', flat], { encoding: 'utf8' });
+  const bad = join(dir, 'bad.txt');
+  writeFileSync(bad, '0 0 0\n1 0 0\n0 1 0\n1 inf 0\n');
+  const run = spawnSync(cli, ['hull', bad], { encoding: 'utf8' });
   assert.equal(run.status, 2);
-  assert.match(run.stderr, /coplanar/);
-  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), /coplanar/);
+  assert.match(run.stderr, /point 3 has a non-finite y coordinate \(inf\)/);
+  assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, Infinity, 0]), /point 3 has a non-finite y coordinate \(inf\)/);
 });
