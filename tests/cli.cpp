@@ -513,7 +513,7 @@ TEST_CASE("cli: each output format parses back to the same hull") {
     Json stats = parse_stats(json_run);
     Json hull = parse_json(json_run.out);
     REQUIRE(hull.kind == Json::Kind::Object);
-    CHECK(hull.keys() == std::vector<std::string>{"vertices", "triangles", "points", "volume", "area"});
+    CHECK(hull.keys() == std::vector<std::string>{"vertices", "triangles", "points", "volume", "area", "dimension"});
     const auto& vertices = hull.at("vertices").items;
     const auto& triangles = hull.at("triangles").items;
     const auto& coordinates = hull.at("points").items;

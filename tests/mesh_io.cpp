@@ -73,6 +73,7 @@ struct SmallHull {
     };
     Hull hull;
     SmallHull() {
+        hull.dimension = 3;
         hull.vertices = {1, 3, 4, 6};
         hull.triangles = {1, 4, 3, 1, 3, 6, 1, 6, 4, 3, 4, 6};
         hull.volume = 0.25;
@@ -345,7 +346,7 @@ TEST_CASE("mesh_io: JSON writer keeps input indices") {
           "{\"vertices\":[1,3,4,6],"
           "\"triangles\":[[1,4,3],[1,3,6],[1,6,4],[3,4,6]],"
           "\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1.5]],"
-          "\"volume\":0.25,\"area\":2.5}\n");
+          "\"volume\":0.25,\"area\":2.5,\"dimension\":3}\n");
 }
 
 TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
@@ -360,7 +361,7 @@ TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
     CHECK(hullkit::write_obj(s.span(), polygon) == "v 0 1 0\nv 0 0 0\nv 1 0 0\nf 1 2 3\n");
     CHECK(hullkit::write_json(s.span(), polygon) ==
           "{\"vertices\":[4,1,3],\"triangles\":[[4,1,3]],\"points\":[[0,1,0],[0,0,0],[1,0,0]],"
-          "\"volume\":0,\"area\":0.5}\n");
+          "\"volume\":0,\"area\":0.5,\"dimension\":2}\n");
 
     Hull segment;
     segment.dimension = 1;
@@ -368,7 +369,29 @@ TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
     CHECK(hullkit::write_off(s.span(), segment) == "OFF\n2 0 0\n0 0 1.5\n0 0 0\n");
     CHECK(hullkit::write_json(s.span(), segment) ==
           "{\"vertices\":[6,1],\"triangles\":[],\"points\":[[0,0,1.5],[0,0,0]],"
-          "\"volume\":0,\"area\":0}\n");
+          "\"volume\":0,\"area\":0,\"dimension\":1}\n");
+}
+
+TEST_CASE("mesh_io: merged faces are written as polygons") {
+    // A unit square pyramid: the base is one quad, the sides are triangles.
+    const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1};
+    Hull hull;
+    hull.dimension = 3;
+    hull.vertices = {0, 1, 2, 3, 4};
+    hull.triangles = {0, 3, 2, 0, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 0, 4, 3};
+    hull.face_offsets = {0, 4, 7, 10, 13, 16};
+    hull.face_vertices = {0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 0, 4, 3};
+    const hullkit::PointSpan points(xyz);
+    CHECK(hullkit::write_off(points, hull) ==
+          "OFF\n5 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+          "4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 0 4 3\n");
+    CHECK(hullkit::write_obj(points, hull).find("f 1 4 3 2\nf 1 2 5\n") != std::string::npos);
+    const std::string json = hullkit::write_json(points, hull);
+    CHECK(json.find("\"faces\":[[0,3,2,1],[0,1,4],[1,2,4],[2,3,4],[0,4,3]]") != std::string::npos);
+    // The merged OFF reads back (fanned) as a closed surface of 6 triangles.
+    const auto back = hullkit::read_off_mesh(hullkit::write_off(points, hull), "pyramid.off");
+    REQUIRE(back.ok());
+    CHECK(back.triangle_count() == 6);
 }
 
 TEST_CASE("mesh_io: writer output reads back exactly") {

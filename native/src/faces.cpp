@@ -75,7 +75,8 @@ Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> t
 }
 
 void measure(PointSpan points, const Polygons& faces, double* volume, double* area) {
-    // Tetrahedra from one corner to every fan triangle: faces through that corner add zero.
+    // Tetrahedra from one corner to every fan triangle: faces through that corner add zero, and by
+    // convexity no tetrahedron has a negative volume, so a rounded one below zero counts as zero.
     const glm::dvec3 origin = faces.vertices.empty() ? glm::dvec3(0.0) : vec3(points[faces.vertices.front()]);
     double six_volume = 0.0;
     double twice_area = 0.0;
@@ -86,7 +87,7 @@ void measure(PointSpan points, const Polygons& faces, double* volume, double* ar
         for (std::size_t k = 1; k + 1 < m; ++k) {
             const glm::dvec3 b = vec3(points[corners[k]]) - origin;
             const glm::dvec3 c = vec3(points[corners[k + 1]]) - origin;
-            six_volume += glm::dot(a, glm::cross(b, c));
+            six_volume += std::max(0.0, glm::dot(a, glm::cross(b, c)));
             twice_area += glm::length(glm::cross(b - a, c - a));
         }
     }

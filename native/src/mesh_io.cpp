@@ -507,7 +507,23 @@ void append_xyz(std::string& out, const double* p, const char* separator) {
 /// vertices, so faces must be re-indexed. hull.vertices is ascending for a polytope but in
 /// polygon order for a planar hull, so the lookup does not rely on any order.
 /// Throws if the hull does not fit the points.
-std::vector<std::uint32_t> local_corner_indices(PointSpan points, const Hull& hull) {
+/// The faces to write: the merged polygons when the hull has them (merge_coplanar), else its
+/// triangles as polygons of three corners.
+struct FaceList {
+    const std::vector<std::uint32_t>& corners;
+    std::vector<std::uint32_t> offsets;
+
+    explicit FaceList(const Hull& hull)
+        : corners(hull.face_offsets.empty() ? hull.triangles : hull.face_vertices), offsets(hull.face_offsets) {
+        if (offsets.empty()) {
+            for (std::size_t i = 0; i <= hull.triangles.size(); i += 3) offsets.push_back(static_cast<std::uint32_t>(i));
+        }
+    }
+    std::size_t size() const { return offsets.size() - 1; }
+};
+
+std::vector<std::uint32_t> local_corner_indices(PointSpan points, const Hull& hull,
+                                                const std::vector<std::uint32_t>& corners) {
     // (input index, position in hull.vertices), sorted by input index for binary search.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> position;
     position.reserve(hull.vertices.size());
@@ -530,8 +546,8 @@ std::vector<std::uint32_t> local_corner_indices(PointSpan points, const Hull& hu
         throw std::invalid_argument("hull triangle index count is not a multiple of 3");
     }
     std::vector<std::uint32_t> local;
-    local.reserve(hull.triangles.size());
-    for (std::uint32_t corner : hull.triangles) {
+    local.reserve(corners.size());
+    for (std::uint32_t corner : corners) {
         auto it = std::lower_bound(position.begin(), position.end(),
                                    std::make_pair(corner, std::uint32_t{0}));
         if (it == position.end() || it->first != corner) {
@@ -643,53 +659,57 @@ bool output_format_from_path(const std::string& path, OutputFormat* out) {
     return parse_output_format(extension, out);
 }
 
+/// Appends each face as `prefix` then its corners (as local indices + `base`), one face a line.
+void append_faces(std::string& out, const FaceList& faces, const std::vector<std::uint32_t>& local,
+                  unsigned long long base, bool with_count) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const std::uint32_t begin = faces.offsets[f], end = faces.offsets[f + 1];
+        if (with_count) {
+            append_uint(out, end - begin);
+        } else {
+            out += 'f';
+        }
+        for (std::uint32_t k = begin; k < end; ++k) {
+            out += ' ';
+            append_uint(out, local[k] + base);
+        }
+        out += '\n';
+    }
+}
+
 std::string write_off(PointSpan points, const Hull& hull) {
-    std::vector<std::uint32_t> local = local_corner_indices(points, hull);
+    const FaceList faces(hull);
+    std::vector<std::uint32_t> local = local_corner_indices(points, hull, faces.corners);
     std::string out = "OFF\n";
-    out.reserve(64 * hull.vertices.size() + 24 * hull.face_count() + 32);
+    out.reserve(64 * hull.vertices.size() + 24 * faces.size() + 32);
     append_uint(out, hull.vertices.size());
     out += ' ';
-    append_uint(out, hull.face_count());
+    append_uint(out, faces.size());
     out += " 0\n";
     for (std::uint32_t v : hull.vertices) {
         append_xyz(out, points[v], " ");
         out += '\n';
     }
-    for (std::size_t i = 0; i < local.size(); i += 3) {
-        out += "3 ";
-        append_uint(out, local[i]);
-        out += ' ';
-        append_uint(out, local[i + 1]);
-        out += ' ';
-        append_uint(out, local[i + 2]);
-        out += '\n';
-    }
+    append_faces(out, faces, local, 0, true);
     return out;
 }
 
 std::string write_obj(PointSpan points, const Hull& hull) {
-    std::vector<std::uint32_t> local = local_corner_indices(points, hull);
+    const FaceList faces(hull);
+    std::vector<std::uint32_t> local = local_corner_indices(points, hull, faces.corners);
     std::string out;
-    out.reserve(64 * hull.vertices.size() + 24 * hull.face_count());
+    out.reserve(64 * hull.vertices.size() + 24 * faces.size());
     for (std::uint32_t v : hull.vertices) {
         out += "v ";
         append_xyz(out, points[v], " ");
         out += '\n';
     }
-    for (std::size_t i = 0; i < local.size(); i += 3) {
-        out += "f ";
-        append_uint(out, local[i] + 1ull);  // OBJ indices are 1-based
-        out += ' ';
-        append_uint(out, local[i + 1] + 1ull);
-        out += ' ';
-        append_uint(out, local[i + 2] + 1ull);
-        out += '\n';
-    }
+    append_faces(out, faces, local, 1, false);  // OBJ indices are 1-based
     return out;
 }
 
 std::string write_json(PointSpan points, const Hull& hull) {
-    local_corner_indices(points, hull);  // only to validate: JSON keeps input indices
+    local_corner_indices(points, hull, hull.triangles);  // only to validate: JSON keeps input indices
     std::string out;
     out.reserve(80 * hull.vertices.size() + 32 * hull.face_count() + 64);
     out += "{\"vertices\":[";
@@ -720,10 +740,26 @@ std::string write_json(PointSpan points, const Hull& hull) {
         append_json_number(out, p[2]);
         out += ']';
     }
-    out += "],\"volume\":";
+    out += ']';
+    if (!hull.face_offsets.empty()) {  // merge_coplanar: the faces as polygons of input indices
+        out += ",\"faces\":[";
+        for (std::size_t f = 0; f + 1 < hull.face_offsets.size(); ++f) {
+            if (f) out += ',';
+            out += '[';
+            for (std::uint32_t k = hull.face_offsets[f]; k < hull.face_offsets[f + 1]; ++k) {
+                if (k > hull.face_offsets[f]) out += ',';
+                append_uint(out, hull.face_vertices[k]);
+            }
+            out += ']';
+        }
+        out += ']';
+    }
+    out += ",\"volume\":";
     append_json_number(out, hull.volume);
     out += ",\"area\":";
     append_json_number(out, hull.area);
+    out += ",\"dimension\":";
+    out += std::to_string(hull.dimension);
     out += "}\n";
     return out;
 }
