@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hullkit/hull.hpp"
+#include "hullkit/verify.hpp"
 
 namespace {
 
@@ -43,6 +44,42 @@ val normal_view(const hullkit::Hull& hull) { return val(emscripten::typed_memory
 bool hull_ok(const hullkit::Hull& hull) { return hull.ok(); }
 double error_point(const hullkit::Hull& hull) { return static_cast<double>(hull.error_point); }
 
+val strings(const std::vector<std::string>& lines) {
+    val array = val::array();
+    for (const std::string& line : lines) array.call<void>("push", val(line));
+    return array;
+}
+
+// Points, triangles and (when `with_hull`) the hull's vertices are in malloc'ed blocks; a plain
+// object of the report goes back.
+val verify_from_heap(std::uintptr_t xyz, std::uint32_t count, std::uintptr_t triangles, std::uint32_t triangle_count,
+                     std::uintptr_t vertices, std::uint32_t vertex_count, int dimension, bool with_hull) {
+    const hullkit::PointSpan points(reinterpret_cast<const double*>(xyz), count);
+    const auto* corners = reinterpret_cast<const std::uint32_t*>(triangles);
+    hullkit::VerifyReport report;
+    if (with_hull) {
+        hullkit::Hull hull;
+        hull.dimension = dimension;
+        hull.triangles.assign(corners, corners + 3 * std::size_t{triangle_count});
+        const auto* first = reinterpret_cast<const std::uint32_t*>(vertices);
+        hull.vertices.assign(first, first + vertex_count);
+        report = hullkit::verify(points, hull);
+    } else {
+        report = hullkit::verify(points, corners, triangle_count);
+    }
+    val out = val::object();
+    out.set("ok", report.ok);
+    out.set("problems", strings(report.lines()));
+    out.set("problemCount", static_cast<double>(report.problem_count));
+    out.set("notes", strings(report.notes));
+    out.set("dimension", report.dimension);
+    out.set("checkedPoints", static_cast<double>(report.checked_points));
+    out.set("triangleCount", static_cast<double>(report.triangle_count));
+    out.set("vertexCount", static_cast<double>(report.vertex_count));
+    out.set("faceCount", static_cast<double>(report.face_count));
+    return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(hullkit) {
@@ -59,4 +96,5 @@ EMSCRIPTEN_BINDINGS(hullkit) {
         .function("faceVerticesView", &face_vertices_view)
         .function("normalView", &normal_view);
     emscripten::function("hullFromHeap", &hull_from_heap);
+    emscripten::function("verifyFromHeap", &verify_from_heap);
 }

@@ -67,8 +67,41 @@ export interface Hullkit {
    *   near-degenerate input that the seed's epsilon cannot decide.
    */
   hull(xyz: Float64Array | ArrayLike<number>, options?: HullOptions): HullResult;
+  /**
+   * Checks exactly (with exact predicates) that `result` is the convex hull of `xyz`: indices in
+   * range, no zero-area triangle, closed and consistently oriented (every directed edge once and
+   * its reverse once), convex, containing every point, with only extreme points as vertices.
+   * `result` may come from {@link Hullkit.hull} (then `vertices` and `dimension` are checked too)
+   * or be any `{triangles}` from elsewhere (dimension 3 is assumed).
+   * Problems are reported in the returned value, not thrown.
+   *
+   * @throws {HullkitError} only for malformed arguments (not a whole number of points or
+   *   triangles, an index that is not a non-negative integer).
+   */
+  verify(
+    xyz: Float64Array | ArrayLike<number>,
+    result: { triangles: Uint32Array | ArrayLike<number>; vertices?: Uint32Array | ArrayLike<number>; dimension?: number },
+  ): VerifyReport;
   /** The algorithm names `hull` accepts, the default first. */
   readonly algorithms: readonly HullAlgorithm[];
+}
+
+export interface VerifyReport {
+  /** True when nothing is wrong. */
+  ok: boolean;
+  /** Up to 20 problems, one line each naming what and where, then "... and N more problems". */
+  problems: string[];
+  /** How many problems were found in all. */
+  problemCount: number;
+  /** Remarks that are not problems (for example checks skipped because earlier ones failed). */
+  notes: string[];
+  dimension: number;
+  /** Input points shown to lie in the hull. */
+  checkedPoints: number;
+  triangleCount: number;
+  vertexCount: number;
+  /** Planar faces (edge-connected coplanar triangles merged). */
+  faceCount: number;
 }
 
 /** What hullkit throws for bad input: the message says what is wrong and where. */

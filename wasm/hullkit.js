@@ -22,6 +22,7 @@ export default async function createHullkit() {
   const core = await createHullkitCore(moduleOptions);
   return Object.freeze({
     hull: (xyz, options) => hull(core, xyz, options),
+    verify: (xyz, result) => verify(core, xyz, result),
     algorithms: Object.freeze([...ALGORITHMS]),
   });
 }
@@ -48,13 +49,9 @@ function hull(core, xyz, options = {}) {
   }
 
   const count = points.length / 3;
-  const bytes = Math.max(points.byteLength, 8);
-  const address = core._malloc(bytes);
-  if (!address) throw new HullkitError(`hull: cannot allocate ${bytes} bytes for ${count} points`);
+  const address = copyIn(core, points, 'hull');
   let result;
   try {
-    // HEAPF64 is re-read after malloc: memory growth replaces the buffer behind old views.
-    new Float64Array(core.HEAPF64.buffer, address, points.length).set(points);
     result = core.hullFromHeap(address, count, algorithm, epsilon === 'seed', mergeCoplanar);
   } finally {
     core._free(address);
@@ -79,6 +76,51 @@ function hull(core, xyz, options = {}) {
   } finally {
     result.delete();
   }
+}
+
+/** Copies `array` (a typed array) into a fresh malloc'ed block; returns its address. */
+function copyIn(core, array, where) {
+  const bytes = Math.max(array.byteLength, 8);
+  const address = core._malloc(bytes);
+  if (!address) throw new HullkitError(`${where}: cannot allocate ${bytes} bytes`);
+  // HEAP views are re-read after malloc: memory growth replaces the buffer behind old views.
+  new array.constructor(core.HEAPU8.buffer, address, array.length).set(array);
+  return address;
+}
+
+function verify(core, xyz, result) {
+  const points = toFloat64(xyz, 'verify');
+  if (result === null || typeof result !== 'object') {
+    throw new TypeError('verify: the second argument must be a hull result {triangles, vertices?, dimension?}');
+  }
+  const triangles = toUint32(result.triangles ?? [], 'verify: triangles');
+  if (triangles.length % 3 !== 0) {
+    throw new HullkitError(`verify: ${triangles.length} triangle indices is not a whole number of triangles`);
+  }
+  const withHull = result.vertices !== undefined;
+  const vertices = toUint32(result.vertices ?? [], 'verify: vertices');
+  const dimension = result.dimension ?? 3;
+  if (![3, 2, 1, 0, -1].includes(dimension)) throw new HullkitError(`verify: dimension ${dimension} is not one of 3, 2, 1, 0, -1`);
+  const addresses = [];
+  try {
+    addresses.push(copyIn(core, points, 'verify'), copyIn(core, triangles, 'verify'), copyIn(core, vertices, 'verify'));
+    return core.verifyFromHeap(addresses[0], points.length / 3, addresses[1], triangles.length / 3, addresses[2],
+      vertices.length, dimension, withHull);
+  } finally {
+    for (const address of addresses) core._free(address);
+  }
+}
+
+function toUint32(values, where) {
+  if (values instanceof Uint32Array) return values;
+  if (values == null || typeof values.length !== 'number' || typeof values === 'string') {
+    throw new TypeError(`${where} must be a Uint32Array or an array of indices`);
+  }
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i];
+    if (!Number.isInteger(v) || v < 0 || v > 0xffffffff) throw new HullkitError(`${where}: entry ${i} (${v}) is not a valid index`);
+  }
+  return Uint32Array.from(values);
 }
 
 function toFloat64(xyz, where) {

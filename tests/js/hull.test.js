@@ -166,3 +166,37 @@ test('hull: wasm and the native CLI return the same triangles', (t) => {
   assert.match(run.stderr, /point 3 has a non-finite y coordinate \(inf\)/);
   assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, Infinity, 0]), /point 3 has a non-finite y coordinate \(inf\)/);
 });
+
+test('verify: accepts hullkit results and pinpoints broken hulls', () => {
+  const xyz = randomBall(3000, 21);
+  const result = hullkit.hull(xyz);
+  const report = hullkit.verify(xyz, result);
+  assert.equal(report.ok, true, report.problems.join('\n'));
+  assert.equal(report.checkedPoints, 3000);
+  assert.equal(report.triangleCount, result.triangles.length / 3);
+  assert.equal(report.vertexCount, result.vertices.length);
+  // Triangles alone (as from another library) are checked too.
+  assert.equal(hullkit.verify(xyz, { triangles: result.triangles }).ok, true);
+
+  const flipped = result.triangles.slice();
+  [flipped[0], flipped[1]] = [flipped[1], flipped[0]];
+  const bad = hullkit.verify(xyz, { triangles: flipped });
+  assert.equal(bad.ok, false);
+  assert.ok(bad.problems.length > 0);
+  assert.match(bad.problems.join('\n'), /edge/);
+
+  // A point moved outside the hull is named.
+  const moved = xyz.slice();
+  const inner = [...Array(3000).keys()].find((i) => !result.vertices.includes(i));
+  moved.set([5, 5, 5], 3 * inner);
+  const outside = hullkit.verify(moved, result);
+  assert.equal(outside.ok, false);
+  assert.match(outside.problems.join('\n'), new RegExp(`point ${inner}\\b`));
+
+  // Lower-dimensional results verify too.
+  const square = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 0];
+  assert.equal(hullkit.verify(square, hullkit.hull(square)).ok, true);
+  assert.throws(() => hullkit.verify(xyz, { triangles: [0, 1] }), { name: 'HullkitError', message: /whole number of triangles/ });
+  assert.throws(() => hullkit.verify(xyz, { triangles: [0, 1, -2] }), { message: /entry 2 \(-2\) is not a valid index/ });
+  assert.throws(() => hullkit.verify(xyz, null), TypeError);
+});
