@@ -26,28 +26,27 @@ Hull failure(std::string message, std::int64_t point) {
     return result;
 }
 
-std::vector<std::uint32_t> distinct_points(PointSpan points) {
-    std::vector<std::uint32_t> order(points.count);
-    std::iota(order.begin(), order.end(), 0u);
-    auto less = [&](std::uint32_t a, std::uint32_t b) {
+std::vector<std::uint32_t>::iterator sort_dropping_repeats(PointSpan points, std::vector<std::uint32_t>::iterator first,
+                                                           std::vector<std::uint32_t>::iterator last) {
+    std::sort(first, last, [&](std::uint32_t a, std::uint32_t b) {
         const double* p = points[a];
         const double* q = points[b];
         if (p[0] != q[0]) return p[0] < q[0];
         if (p[1] != q[1]) return p[1] < q[1];
         if (p[2] != q[2]) return p[2] < q[2];
         return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
-    std::vector<std::uint32_t> kept;
-    kept.reserve(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        if (k > 0) {
-            const double* p = points[order[k - 1]];
-            const double* q = points[order[k]];
-            if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) continue;  // same point, higher index
-        }
-        kept.push_back(order[k]);
-    }
+    });
+    return std::unique(first, last, [&](std::uint32_t a, std::uint32_t b) {  // keeps the first: the lowest index
+        const double* p = points[a];
+        const double* q = points[b];
+        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+    });
+}
+
+std::vector<std::uint32_t> distinct_points(PointSpan points) {
+    std::vector<std::uint32_t> kept(points.count);
+    std::iota(kept.begin(), kept.end(), 0u);
+    kept.erase(sort_dropping_repeats(points, kept.begin(), kept.end()), kept.end());
     std::sort(kept.begin(), kept.end());
     return kept;
 }

@@ -40,6 +40,11 @@ Simplex find_simplex(PointSpan points);
 /// identical points, in ascending order.
 std::vector<std::uint32_t> distinct_points(PointSpan points);
 
+/// Sorts the point indices in [first, last) by coordinates and drops all but the lowest index of
+/// each group of identical points; returns the new end.
+std::vector<std::uint32_t>::iterator sort_dropping_repeats(PointSpan points, std::vector<std::uint32_t>::iterator first,
+                                                           std::vector<std::uint32_t>::iterator last);
+
 /// Gift wrapping of a cloud with volume: the hull's faces as convex polygons, counter-clockwise
 /// seen from outside. Exact sides unless `seed_epsilon`. False with `error` set on failure
 /// (only possible with the seed's epsilon).

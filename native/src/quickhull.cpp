@@ -332,22 +332,8 @@ std::uint32_t spread_bits(std::uint32_t v) {
 /// but the lowest index of identical points. Only the memory order of the work changes, never a
 /// result: identical points have one key, and within a key the ids are sorted by coordinates.
 void spatial_order(PointSpan points, std::vector<Index>& ids) {
-    auto by_coordinates = [&](Index a, Index b) {
-        const double* p = points[a];
-        const double* q = points[b];
-        if (p[0] != q[0]) return p[0] < q[0];
-        if (p[1] != q[1]) return p[1] < q[1];
-        if (p[2] != q[2]) return p[2] < q[2];
-        return a < b;
-    };
-    auto same = [&](Index a, Index b) {
-        const double* p = points[a];
-        const double* q = points[b];
-        return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
-    };
     if (ids.size() <= 4096) {  // small: coordinate order is good enough
-        std::sort(ids.begin(), ids.end(), by_coordinates);
-        ids.erase(std::unique(ids.begin(), ids.end(), same), ids.end());
+        ids.erase(sort_dropping_repeats(points, ids.begin(), ids.end()), ids.end());
         return;
     }
     double lo[3], scale[3];
@@ -386,8 +372,7 @@ void spatial_order(PointSpan points, std::vector<Index>& ids) {
         const std::size_t first = ids.size();
         for (std::size_t k = begin; k < end; ++k) ids.push_back(static_cast<Index>(keyed[k]));
         if (end - begin > 1) {  // a shared cell: identical points, if any, are here
-            std::sort(ids.begin() + first, ids.end(), by_coordinates);
-            ids.erase(std::unique(ids.begin() + first, ids.end(), same), ids.end());
+            ids.erase(sort_dropping_repeats(points, ids.begin() + static_cast<std::ptrdiff_t>(first), ids.end()), ids.end());
         }
         begin = end;
     }
