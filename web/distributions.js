@@ -13,22 +13,48 @@ export function mulberry32(seed) {
 }
 
 export const DISTRIBUTIONS = {
-  cube: { label: 'in a cube', boundingRadius: Math.sqrt(3) },
-  ball: { label: 'in a ball', boundingRadius: 1 },
-  sphere: { label: 'on a sphere', boundingRadius: 1 },
-  plane: { label: 'in a square (coplanar)', boundingRadius: Math.SQRT2 },
+  cube: { label: 'in a cube' },
+  ball: { label: 'in a ball' },
+  sphere: { label: 'on a sphere' },
+  plane: { label: 'in a square (coplanar)' },
+  'near-coplanar': { label: 'near-coplanar (square, z ± 1e-13)' },
+  grid: { label: 'cube grid (integer points)' },
+  'rotated-grid': { label: 'cube grid, rotated (seeded)' },
 };
 // 'custom' (pasted coordinates) is handled by parsePoints().
 
+/** Half-thickness of the 'near-coplanar' slab: far above rounding, far below anything visible. */
+export const NEAR_COPLANAR_Z = 1e-13;
+
+const isGrid = (distribution) => distribution === 'grid' || distribution === 'rotated-grid';
+
+/** Points per edge of the grids for a requested n: the cube number k³ nearest to n (k >= 2). */
+export function gridSide(n) {
+  return Math.max(2, Math.round(Math.cbrt(Math.max(0, n))));
+}
+
+/** How many points generatePoints(distribution, n, seed) returns. */
+export function pointCount(distribution, n) {
+  return isGrid(distribution) ? gridSide(n) ** 3 : n;
+}
+
 /**
  * n points as a flat Float64Array [x0, y0, z0, x1, ...].
- *   cube:   uniform in [-1, 1]^3
- *   ball:   uniform in the unit ball (rejection sampling)
- *   sphere: uniform on the unit sphere (normalised Gaussian vectors)
- *   plane:  uniform in the square [-1, 1]^2 at z = 0 (degenerate on purpose)
+ *   cube:          uniform in [-1, 1]^3
+ *   ball:          uniform in the unit ball (rejection sampling)
+ *   sphere:        uniform on the unit sphere (normalised Gaussian vectors)
+ *   plane:         uniform in the square [-1, 1]^2 at z = 0 (degenerate on purpose)
+ *   near-coplanar: the same square with z uniform in ±1e-13: a slab that exact predicates see as
+ *                  3D, while the seed's epsilon (≈ 9e-16 here) cannot decide it consistently
+ *   grid:          the integer points {0, ..., k-1}^3, k = gridSide(n): hull = 8 corners, 6 squares,
+ *                  with many points on its faces and edges (the seed does not use n here)
+ *   rotated-grid:  the same lattice, centred, turned by a random rotation drawn from the seed;
+ *                  rounding moves the face points slightly off the face planes, so the exact hull
+ *                  has many more than 8 vertices, while the seed's epsilon snaps them back
  */
 export function generatePoints(distribution, n, seed) {
   if (!(distribution in DISTRIBUTIONS)) throw new Error(`unknown distribution "${distribution}"`);
+  if (isGrid(distribution)) return gridPoints(gridSide(n), distribution === 'rotated-grid' ? seed : null);
   const rand = mulberry32(seed);
   const u = () => 2 * rand() - 1;
   const xyz = new Float64Array(3 * n);
@@ -54,12 +80,52 @@ export function generatePoints(distribution, n, seed) {
       case 'plane':
         x = u(); y = u(); z = 0;
         break;
+      case 'near-coplanar':
+        x = u(); y = u(); z = NEAR_COPLANAR_Z * u();
+        break;
     }
     xyz[3 * i] = x;
     xyz[3 * i + 1] = y;
     xyz[3 * i + 2] = z;
   }
   return xyz;
+}
+
+/** The k³ lattice points: integers 0..k-1, or (with a seed) centred and rotated. */
+function gridPoints(k, rotationSeed) {
+  const xyz = new Float64Array(3 * k ** 3);
+  const R = rotationSeed === null ? null : randomRotation(mulberry32(rotationSeed));
+  const h = (k - 1) / 2;
+  let o = 0;
+  for (let a = 0; a < k; a++) {
+    for (let b = 0; b < k; b++) {
+      for (let c = 0; c < k; c++) {
+        if (!R) {
+          xyz[o++] = a; xyz[o++] = b; xyz[o++] = c;
+        } else {
+          const x = a - h, y = b - h, z = c - h;
+          for (let r = 0; r < 3; r++) xyz[o++] = R[r][0] * x + R[r][1] * y + R[r][2] * z;
+        }
+      }
+    }
+  }
+  return xyz;
+}
+
+/** A rotation matrix from a random unit quaternion (rejection sampling in the 4-ball). */
+function randomRotation(rand) {
+  let q, len2;
+  do {
+    q = [2 * rand() - 1, 2 * rand() - 1, 2 * rand() - 1, 2 * rand() - 1];
+    len2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  } while (len2 > 1 || len2 < 0.01);
+  const len = Math.sqrt(len2);
+  const [w, x, y, z] = q.map((v) => v / len);
+  return [
+    [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+    [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+    [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+  ];
 }
 
 const MAX_CUSTOM_POINTS = 100_000;

@@ -1,10 +1,14 @@
 // hullkit demo page: UI, worker orchestration and three.js rendering.
 //
 // Test hooks: document.body.dataset.state is 'loading' | 'computing' | 'ready' |
-// 'error' | 'cancelled', window.hullkitStats describes the last hull drawn and
-// window.hullkitError holds the message of the last failed run (else null).
+// 'error' | 'cancelled', window.hullkitStats describes the last hull drawn,
+// window.hullkitError holds the message of the last failed run (else null) and
+// window.hullkitEpsilon compares the last run with the seed's epsilon to exact
+// predicates: {outcome: 'same' | 'different' | 'failed', epsilon, seed, exact}
+// (null after a run with exact predicates).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { gridSide, pointCount } from './distributions.js';
 
 const N_MIN = 4;
 const N_MAX = 100_000;
@@ -12,8 +16,10 @@ const N_DEFAULT = 2000;
 const SEED_DEFAULT = 1;
 const DIST_DEFAULT = 'ball';
 const SPHERE_WARN_N = 5000; // gift wrapping points on a sphere is O(n²): every point is a hull vertex
-const WARN_MS = 10_000; // any run estimated longer than this asks for confirmation
-const DISTRIBUTIONS = ['cube', 'ball', 'sphere', 'plane', 'custom'];
+const WARN_MS = 10_000; // a gift wrapping run estimated longer than this asks for confirmation
+const DEFAULT_ALGORITHM = 'quickhull'; // the library's default (it lists it first)
+const DISTRIBUTIONS = ['cube', 'ball', 'sphere', 'plane', 'near-coplanar', 'grid', 'rotated-grid', 'custom'];
+const GRIDS = ['grid', 'rotated-grid'];
 const CUSTOM_SAMPLE = `# x y z per point; '#' comments
 # unit cube + centre
 0 0 0
@@ -35,6 +41,7 @@ const COLORS = {
   edgeBack: 0x5fd3e3,
   vertex: 0xffb547,
   point: 0x8a96ab,
+  dropped: 0xff4f8b,
 };
 
 const $ = (id) => document.getElementById(id);
@@ -43,6 +50,11 @@ const ui = {
   distribution: $('distribution'),
   algorithmField: $('algorithm-field'),
   algorithm: $('algorithm'),
+  epsilonField: $('epsilon-field'),
+  epsilon: $('epsilon'),
+  epsilonNote: $('epsilon-note'),
+  merge: $('merge'),
+  nHint: $('n-hint'),
   generatedFields: $('generated-fields'),
   customField: $('custom-field'),
   customPoints: $('custom-points'),
@@ -57,6 +69,13 @@ const ui = {
   warning: $('warning'),
   warningText: $('warning-text'),
   useCap: $('use-cap'),
+  useQuickhull: $('use-quickhull'),
+  compare: $('compare'),
+  compareText: $('compare-text'),
+  compareSeed: $('compare-seed'),
+  compareExact: $('compare-exact'),
+  facesLabel: $('stat-faces-label'),
+  legendDropped: $('legend-dropped'),
   showFaces: $('show-faces'),
   showEdges: $('show-edges'),
   showPoints: $('show-points'),
@@ -87,7 +106,8 @@ const fmtInt = (v) => intFmt.format(v);
 function fmtReal(v) {
   if (!Number.isFinite(v)) return String(v);
   if (v === 0) return '0';
-  return Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3 ? v.toExponential(4) : String(Number(v.toPrecision(6)));
+  // Three significant digits in exponent form: fits a stats cell ("7.62e-13").
+  return Math.abs(v) >= 1e5 || Math.abs(v) < 1e-3 ? v.toExponential(2) : String(Number(v.toPrecision(6)));
 }
 function fmtMs(ms) {
   if (ms < 10) return `${ms.toFixed(2)} ms`;
@@ -129,14 +149,21 @@ function roughCustomCount(text) {
   return Math.floor(tokens / 3);
 }
 
+/** The algorithm that will run: the selected one, else the library's default. */
+const chosenAlgorithm = () => ui.algorithm.value || DEFAULT_ALGORITHM;
+/** The seed's epsilon exists for gift wrapping only; quickhull always decides exactly. */
+const epsilonApplies = () => chosenAlgorithm() === 'giftwrap';
+
 function readParams() {
   const distribution = DISTRIBUTIONS.includes(ui.distribution.value) ? ui.distribution.value : DIST_DEFAULT;
   const algorithm = ui.algorithm.value || undefined;
+  const epsilon = epsilonApplies() && ui.epsilon.value === 'seed' ? 'seed' : 'exact';
+  const mergeCoplanar = ui.merge.checked;
   if (distribution === 'custom') {
     const text = ui.customPoints.value;
-    return { distribution, n: roughCustomCount(text), seed: 0, algorithm, text };
+    return { distribution, n: roughCustomCount(text), seed: 0, algorithm, epsilon, mergeCoplanar, text };
   }
-  return { distribution, n: parseN(ui.n.value), seed: parseSeed(ui.seed.value), algorithm };
+  return { distribution, n: parseN(ui.n.value), seed: parseSeed(ui.seed.value), algorithm, epsilon, mergeCoplanar };
 }
 
 function writeParams({ distribution, n, seed }) {
@@ -153,6 +180,29 @@ function updateSourceFields() {
   const custom = ui.distribution.value === 'custom';
   ui.customField.hidden = !custom;
   ui.generatedFields.hidden = custom;
+  updateNHint();
+}
+
+/** Grids round n to a cube number: say which. */
+function updateNHint() {
+  const distribution = ui.distribution.value;
+  if (GRIDS.includes(distribution)) {
+    const k = gridSide(parseN(ui.n.value));
+    ui.nHint.textContent = `n → ${k}×${k}×${k} = ${fmtInt(k ** 3)}`;
+  } else {
+    ui.nHint.textContent = 'n';
+  }
+}
+
+function updateEpsilonField() {
+  const applies = epsilonApplies();
+  ui.epsilon.disabled = !applies;
+  ui.epsilonField.classList.toggle('inactive', !applies);
+  ui.epsilonNote.textContent = applies
+    ? (ui.epsilon.value === 'seed'
+      ? 'Within ε = DBL_EPSILON × (x + y + z extent) of a plane counts as on it; each run is compared with exact predicates.'
+      : 'Every side test is exact. Pick the seed\'s epsilon to compare (try “near-coplanar”).')
+    : 'Quickhull is always exact; the seed\'s epsilon is a gift wrapping option.';
 }
 
 let preferredAlgorithm = null; // from the URL, applied once the worker lists the algorithms
@@ -163,37 +213,45 @@ function paramsFromUrl() {
   const n = q.has('n') ? parseN(q.get('n')) : N_DEFAULT;
   const seed = q.has('seed') ? parseSeed(q.get('seed')) : SEED_DEFAULT;
   preferredAlgorithm = q.get('algo');
+  ui.epsilon.value = q.get('eps') === 'seed' ? 'seed' : 'exact';
+  ui.merge.checked = q.get('merge') === '1';
   return { distribution, n, seed };
 }
 
-function paramsToUrl({ distribution, n, seed, algorithm }) {
+function paramsToUrl({ distribution, n, seed, algorithm, epsilon, mergeCoplanar }) {
   const q = new URLSearchParams({ dist: distribution });
   if (distribution !== 'custom') {
     q.set('n', String(n));
     q.set('seed', String(seed));
   }
   if (algorithm) q.set('algo', algorithm);
+  if (epsilon === 'seed') q.set('eps', 'seed');
+  if (mergeCoplanar) q.set('merge', '1');
   const search = `?${q}`;
   if (location.search !== search) history.replaceState(null, '', search);
 }
 
-const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.algorithm}|${p.text ?? ''}`;
+const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.algorithm}|${p.epsilon}|${p.mergeCoplanar}|${p.text ?? ''}`;
 
 // ---------------------------------------------------------------- cost estimate
 
 // Rough running time model, refined from every sufficiently long run:
-//   giftwrap      ms ≈ k · n · h              (one pass over the points per hull edge)
-//   anything else ms ≈ k · n · log2(h)        (quickhull-like, expected)
-const DEFAULT_MS_PER_UNIT = { giftwrap: 1.5e-5, other: 1e-4 };
+//   giftwrap   ms ≈ k · n · h              (one pass over the points per hull edge)
+//   quickhull  ms ≈ k · n · log2(h)        (expected; 10^6 points on a sphere in about a second)
+// Only gift wrapping ever asks for confirmation: quickhull is fast up to the page's 100 000 points.
+const DEFAULT_MS_PER_UNIT = { giftwrap: 1.5e-5, quickhull: 5e-5 };
 const msPerUnit = new Map();
 
-const costKey = (algorithm) => (!algorithm || algorithm === 'giftwrap' ? 'giftwrap' : algorithm);
+const costKey = (algorithm) => (algorithm === 'giftwrap' ? 'giftwrap' : 'quickhull'); // quickhull: the default
 
 function expectedHullVertices(distribution, n) {
   switch (distribution) {
     case 'ball': return Math.min(n, 4.4 * Math.sqrt(n)); // Θ(n^(1/2))
     case 'cube': { const l = Math.log(Math.max(n, 2)); return Math.min(n, 1.6 * l * l); } // Θ(log² n)
-    case 'plane': return Math.min(n, 4 * Math.cbrt(Math.max(n, 1))); // 2D hull of a square: Θ(log n), generous
+    case 'plane': // 2D hull of a square: Θ(log n), generous
+    case 'near-coplanar': return Math.min(n, 4 * Math.cbrt(Math.max(n, 1)));
+    case 'grid': return Math.min(n, 8);
+    case 'rotated-grid': return Math.min(n, 6 * Math.cbrt(Math.max(n, 1))); // face points rounded off their planes
     default: return n; // sphere: every point is extreme; custom: assume the worst
   }
 }
@@ -202,10 +260,13 @@ function workUnits(algorithm, n, h) {
   return costKey(algorithm) === 'giftwrap' ? n * h : n * Math.log2(Math.max(h, 2));
 }
 
-function estimateMs({ distribution, n, algorithm }) {
-  const key = costKey(algorithm);
-  const k = msPerUnit.get(key) ?? DEFAULT_MS_PER_UNIT[key] ?? DEFAULT_MS_PER_UNIT.other;
-  return k * workUnits(algorithm, n, expectedHullVertices(distribution, n));
+/** Points the run will hash (grids round n to a cube number). */
+const inputSize = ({ distribution, n }) => (distribution === 'custom' ? n : pointCount(distribution, n));
+
+function estimateMs(params) {
+  const key = costKey(params.algorithm);
+  const n = inputSize(params);
+  return (msPerUnit.get(key) ?? DEFAULT_MS_PER_UNIT[key]) * workUnits(params.algorithm, n, expectedHullVertices(params.distribution, n));
 }
 
 function calibrate(algorithm, n, h, hullMs) {
@@ -213,8 +274,8 @@ function calibrate(algorithm, n, h, hullMs) {
 }
 
 function needsConfirmation(params, estMs) {
-  const giftwrapSphere = costKey(params.algorithm) === 'giftwrap' && params.distribution === 'sphere' && params.n > SPHERE_WARN_N;
-  return giftwrapSphere || estMs > WARN_MS;
+  if (costKey(params.algorithm) !== 'giftwrap') return false;
+  return (params.distribution === 'sphere' && params.n > SPHERE_WARN_N) || estMs > WARN_MS;
 }
 
 // ---------------------------------------------------------------- three.js scene
@@ -282,6 +343,11 @@ const materials = {
   vertexFront: new THREE.PointsMaterial({
     color: COLORS.vertex, size: 6, sizeAttenuation: false, map: disc, alphaTest: 0.5,
     transparent: true, depthWrite: false,
+  }),
+  // Extreme points that the seed's epsilon left out of its hull: on top of everything.
+  dropped: new THREE.PointsMaterial({
+    color: COLORS.dropped, size: 7, sizeAttenuation: false, map: disc, alphaTest: 0.5,
+    transparent: true, depthTest: false, depthWrite: false,
   }),
 };
 
@@ -352,14 +418,18 @@ function pointsGeometry(positions, indices) {
   return geom;
 }
 
-/** Draw a hull (triangles/edges/vertices) or, for failed runs, only the points. */
-function drawScene({ xyz, triangles = null, edges = null, vertices = null }) {
+/**
+ * Draw a hull (triangles/edges/vertices) or, for failed runs, only the points;
+ * `dropped` (point indices) are highlighted on top.
+ */
+function drawScene({ xyz, triangles = null, edges = null, vertices = null, dropped = null }) {
   clearContent();
   const { positions, radius } = centredPositions(xyz);
   const n = positions.length / 3;
 
   const isHull = new Uint8Array(n);
   if (vertices) for (let i = 0; i < vertices.length; i++) isHull[vertices[i]] = 1;
+  if (dropped) for (let i = 0; i < dropped.length; i++) isHull[dropped[i]] = 1;
   const interior = [];
   for (let i = 0; i < n; i++) {
     // Rejected input may hold NaN / infinite coordinates: leave those out.
@@ -396,6 +466,8 @@ function drawScene({ xyz, triangles = null, edges = null, vertices = null }) {
     }
     addObject(new THREE.Points(vertGeom, materials.vertexFront), 'points', 5);
   }
+  ui.legendDropped.hidden = !(dropped && dropped.length);
+  if (dropped && dropped.length) addObject(new THREE.Points(pointsGeometry(positions, dropped), materials.dropped), 'points', 6);
 
   viewRadius = radius;
   applyVisibility();
@@ -487,6 +559,7 @@ function workerCrashed(message) {
 function startJob(params, estMs) {
   hideWarning();
   hideError();
+  ui.compare.hidden = true;
   if (!worker) spawnWorker();
   const id = ++jobSeq;
   job = { id, params, t0: performance.now(), estMs, timer: 0, freshWorker: !workerReady };
@@ -500,7 +573,12 @@ function startJob(params, estMs) {
 }
 
 function describeInput({ distribution, n }) {
-  return distribution === 'custom' ? 'the pasted points' : `${fmtInt(n)} points ${labelOf(distribution)}`;
+  if (distribution === 'custom') return 'the pasted points';
+  if (GRIDS.includes(distribution)) {
+    const k = gridSide(n);
+    return `${fmtInt(k ** 3)} points: ${labelOf(distribution)} ${k}×${k}×${k}`;
+  }
+  return `${fmtInt(n)} points ${labelOf(distribution)}`;
 }
 
 function updateProgress() {
@@ -555,7 +633,7 @@ function onWorkerMessage(event) {
     const prefix = msg.kind === 'input' ? 'Cannot compute the hull' : 'Hull computation failed';
     const message = `${prefix}: ${String(msg.message).replace(/^hull:\s*/, '')}`;
     if (msg.kind !== 'input') console.error(`[hullkit] ${message}`);
-    showFailure(message, msg);
+    showFailure(message, msg, done.params);
   }
 }
 
@@ -573,6 +651,8 @@ function setAlgorithms(algorithms) {
   // The library lists its default first.
   ui.algorithm.value = algorithms.includes(current) ? current : algorithms[0];
   ui.algorithmField.hidden = false;
+  ui.epsilonField.hidden = !algorithms.includes('giftwrap');
+  updateEpsilonField();
 }
 
 function startOnce() {
@@ -588,12 +668,37 @@ const DIMENSION_NOTES = {
   [-1]: () => 'There are no points.',
 };
 
+const POLYGON_NAMES = { 3: 'triangle', 4: 'quadrilateral', 5: 'pentagon', 6: 'hexagon', 7: 'heptagon', 8: 'octagon' };
+
+/** "6 quadrilaterals", "80 triangles, 3 quadrilaterals and 1 pentagon", … (largest groups first). */
+function describeFaceSizes(sizes) {
+  const groups = Object.entries(sizes).map(([k, count]) => [Number(k), count]).sort((a, b) => b[1] - a[1] || a[0] - b[0]);
+  const parts = groups.slice(0, 4).map(([k, count]) => {
+    const name = POLYGON_NAMES[k] ?? `${k}-gon`;
+    return `${fmtInt(count)} ${name}${count === 1 ? '' : 's'}`;
+  });
+  if (groups.length > 4) parts.push(`${groups.length - 4} other sizes`);
+  return parts.length > 1 ? `${parts.slice(0, -1).join(', ')} and ${parts.at(-1)}` : parts[0] ?? 'none';
+}
+
+/** A very thin 3D hull (near-coplanar points): its thickness, about 2 · volume / area. */
+function slabNote(msg, radius) {
+  if (msg.dimension !== 3 || !(msg.area > 0) || !(radius > 0)) return '';
+  const thickness = (2 * msg.volume) / msg.area;
+  if (thickness > 1e-6 * radius) return '';
+  return ` The hull is a slab about ${thickness.toExponential(1)} thick: a polytope for exact predicates, drawn flat at this scale.`;
+}
+
+const EXACT_NAME = 'exact predicates';
+
 function showResult(msg, params, roundTripMs, freshWorker) {
-  const faces = msg.triangles.length / 3;
+  const merged = Boolean(params.mergeCoplanar) && msg.dimension >= 2;
+  const faces = msg.faces ?? msg.triangles.length / 3;
   const vertices = msg.vertices.length;
   const edges = msg.edges.length / 2;
+  const comparison = msg.comparison ?? null;
   const d0 = performance.now();
-  drawScene(msg);
+  drawScene({ ...msg, dropped: comparison?.dropped ?? null });
   const drawMs = performance.now() - d0;
 
   runCount++;
@@ -604,25 +709,101 @@ function showResult(msg, params, roundTripMs, freshWorker) {
     volume: fmtReal(msg.volume), area: fmtReal(msg.area), ms: fmtMs(msg.hullMs), rtt: fmtMs(roundTripMs),
     draw: fmtMs(drawMs),
   });
+  ui.facesLabel.textContent = merged ? 'polygons' : 'triangles';
+  ui.stat.faces.title = merged
+    ? `${fmtInt(faces)} planar faces (${describeFaceSizes(msg.faceSizes ?? {})}), drawn as ${fmtInt(msg.triangles.length / 3)} triangles`
+    : 'triangles of the hull surface';
+  ui.stat.edges.title = merged ? 'sides of the polygon faces (no triangulation diagonals)' : 'edges of the triangles';
+  ui.stat.volume.title = String(msg.volume);
+  ui.stat.area.title = String(msg.area);
   ui.stat.ms.title = `hullkit.hull() inside the worker; points generated in ${fmtMs(msg.genMs)}, worker total ${fmtMs(msg.workerMs)}`;
   ui.stat.rtt.title = 'from posting the request to receiving the result (generation, hull, edges, transfer)';
   ui.stat.draw.title = 'building the three.js geometry and the first render on the main thread';
-  const seedNote = params.distribution === 'custom' ? '' : ` (seed ${params.seed})`;
+  const seedNote = params.distribution === 'custom' || params.distribution === 'grid' ? '' : ` (seed ${params.seed})`;
   let status = `Hull of ${params.distribution === 'custom' ? `${fmtInt(msg.n)} pasted points` : describeInput(params)}${seedNote}.`;
   if (DIMENSION_NOTES[msg.dimension]) status += ` ${DIMENSION_NOTES[msg.dimension](msg)}`;
+  if (merged && msg.dimension === 3) {
+    const sizes = msg.faceSizes ?? {};
+    status += Object.keys(sizes).every((k) => k === '3')
+      ? ` No coplanar triangles to merge: ${fmtInt(faces)} triangular faces.`
+      : ` Coplanar triangles merged into ${fmtInt(faces)} faces: ${describeFaceSizes(sizes)}.`;
+  }
+  status += slabNote(msg, viewRadius);
+  if (comparison) status += ` ${epsilonSentence(comparison, { vertices, faces, volume: msg.volume })}`;
   if (freshWorker) status += ' The round trip includes starting the worker and loading the WebAssembly module.';
   ui.status.textContent = status;
+  showComparison(comparison, { vertices, faces, volume: msg.volume }, merged);
 
   window.hullkitStats = {
-    n: msg.n, vertices, faces, edges, volume: msg.volume, area: msg.area, dimension: msg.dimension,
+    n: msg.n, vertices, faces, edges, triangles: msg.triangles.length / 3, merged,
+    volume: msg.volume, area: msg.area, dimension: msg.dimension,
     ms: msg.hullMs, roundTripMs, distribution: params.distribution, seed: params.seed,
-    algorithm: params.algorithm ?? null, run: runCount,
+    algorithm: params.algorithm ?? null, epsilon: params.epsilon ?? 'exact', run: runCount,
   };
+  window.hullkitEpsilon = comparison ? publicComparison(comparison, { vertices, faces, volume: msg.volume }) : null;
   window.hullkitError = null;
   setState('ready');
 }
 
-function showFailure(message, msg) {
+const fmtEps = (c) => `ε = ${c.epsilon.toExponential(1)}`;
+const hullSummary = (h) => `${fmtInt(h.vertices)} vertices, ${fmtInt(h.faces)} faces, volume ${fmtReal(h.volume)}`;
+
+/** What the seed's epsilon did, as one or two sentences for the status line. */
+function epsilonSentence(c, seed) {
+  const exact = c.exact;
+  if (!exact) return `Exact predicates could not be compared: ${c.exactError ?? 'unknown error'}.`;
+  if (c.outcome === 'failed') {
+    const exactHull = {
+      3: () => `is a polytope with ${hullSummary(exact)}`,
+      2: () => `is a flat polygon with ${fmtInt(exact.vertices)} corners`,
+      1: () => 'is a segment',
+      0: () => 'is a single point',
+    }[exact.dimension]?.() ?? 'is empty';
+    return `The seed's epsilon (${fmtEps(c)}) could not decide these points, so gift wrapping gave up; ` +
+      `with ${EXACT_NAME} the hull ${exactHull}.`;
+  }
+  if (c.outcome === 'same') {
+    return `The seed's epsilon (${fmtEps(c)}) made no difference here: ${EXACT_NAME} give the same ${fmtInt(exact.vertices)} vertices.`;
+  }
+  const parts = [];
+  const dropped = c.dropped?.length ?? 0;
+  if (dropped) parts.push(`left out ${fmtInt(dropped)} extreme point${dropped === 1 ? '' : 's'} (pink) that it took to lie on a face plane`);
+  if (c.added) parts.push(`kept ${fmtInt(c.added)} point${c.added === 1 ? '' : 's'} that ${c.added === 1 ? 'is' : 'are'} not extreme`);
+  if (!parts.length) parts.push('split the faces differently');
+  return `The seed's epsilon (${fmtEps(c)}) changed the hull: it ${parts.join(' and ')}; ` +
+    `${fmtInt(seed.vertices)} vertices instead of the exact ${fmtInt(exact.vertices)}.`;
+}
+
+function showComparison(c, seed, merged) {
+  if (!c) {
+    ui.compare.hidden = true;
+    return;
+  }
+  const cells = (row, values) => row.querySelectorAll('td').forEach((td, i) => { td.textContent = values[i] ?? ''; });
+  const facesWord = merged ? 'polygons' : 'triangles';
+  ui.compare.dataset.outcome = c.outcome;
+  ui.compareText.textContent = `The seed's ${fmtEps(c)} ` + {
+    same: 'gives the exact hull',
+    different: `gives a different hull from ${EXACT_NAME}`,
+    failed: `fails; ${EXACT_NAME} succeed`,
+  }[c.outcome];
+  if (seed) cells(ui.compareSeed, [fmtInt(seed.vertices), fmtInt(seed.faces), fmtReal(seed.volume)]);
+  else cells(ui.compareSeed, ['error', '—', '—']);
+  if (c.exact) cells(ui.compareExact, [fmtInt(c.exact.vertices), fmtInt(c.exact.faces), fmtReal(c.exact.volume)]);
+  else cells(ui.compareExact, ['error', '—', '—']);
+  ui.compare.querySelector('thead th:nth-child(3)').textContent = facesWord;
+  ui.compare.hidden = false;
+}
+
+function publicComparison(c, seed) {
+  return {
+    outcome: c.outcome, epsilon: c.epsilon, seed, exact: c.exact,
+    dropped: c.dropped ? c.dropped.length : 0, added: c.added ?? 0,
+  };
+}
+
+function showFailure(message, msg, params = null) {
+  const comparison = msg?.comparison ?? null;
   if (msg && msg.xyz && msg.xyz.length % 3 === 0) {
     drawScene({ xyz: msg.xyz }); // show the offending input
     setStats({ n: fmtInt(msg.n) });
@@ -631,10 +812,13 @@ function showFailure(message, msg) {
     requestRender();
     setStats({});
   }
+  ui.facesLabel.textContent = 'faces';
   ui.error.textContent = message;
   ui.error.hidden = false;
-  ui.status.textContent = '';
+  ui.status.textContent = comparison ? epsilonSentence(comparison, null) : '';
+  showComparison(comparison, null, Boolean(params?.mergeCoplanar));
   window.hullkitError = message;
+  window.hullkitEpsilon = comparison ? publicComparison(comparison, null) : null;
   setState('error');
 }
 
@@ -670,18 +854,15 @@ function requestCompute({ force = false } = {}) {
 
 function showWarning(params, estMs) {
   pendingConfirmKey = paramsKey(params);
-  const giftwrap = costKey(params.algorithm) === 'giftwrap';
-  let why;
-  if (giftwrap && params.distribution === 'sphere') {
-    why = `All ${fmtInt(params.n)} points on a sphere are hull vertices, and gift wrapping costs O(n·h) = O(n²) here.`;
-  } else if (giftwrap) {
-    why = `Gift wrapping costs O(n·h) for ${describeInput(params)}.`;
-  } else {
-    why = `This is a large input (${describeInput(params)}).`;
-  }
+  // Only gift wrapping asks (see needsConfirmation).
+  const why = params.distribution === 'sphere'
+    ? `All ${fmtInt(params.n)} points on a sphere are hull vertices, and gift wrapping costs O(n·h) = O(n²) here.`
+    : `Gift wrapping costs O(n·h) for ${describeInput(params)}.`;
   ui.warningText.textContent = `${why} Estimated time ≈ ${fmtDuration(estMs)}. ` +
-    'Click “Run anyway” to start; the page stays responsive and the run can be cancelled.';
+    'Click “Run anyway” to start; the page stays responsive and the run can be cancelled. ' +
+    'Quickhull computes the same hull in well under a second.';
   ui.useCap.hidden = params.distribution === 'custom' || params.n <= SPHERE_WARN_N;
+  ui.useQuickhull.hidden = ![...ui.algorithm.options].some((o) => o.value === 'quickhull');
   ui.warning.hidden = false;
   ui.compute.textContent = 'Run anyway';
   ui.compute.classList.add('warn');
@@ -713,6 +894,11 @@ ui.useCap.addEventListener('click', () => {
   ui.nSlider.value = String(nToSlider(SPHERE_WARN_N));
   requestCompute({ force: true });
 });
+ui.useQuickhull.addEventListener('click', () => {
+  ui.algorithm.value = 'quickhull';
+  updateEpsilonField();
+  requestCompute({ force: true });
+});
 ui.cancel.addEventListener('click', cancelJob);
 ui.nSlider.addEventListener('input', () => {
   ui.n.value = String(sliderToN(Number(ui.nSlider.value)));
@@ -725,7 +911,15 @@ ui.n.addEventListener('input', () => {
 });
 ui.seed.addEventListener('input', onParamsEdited);
 ui.customPoints.addEventListener('input', onParamsEdited);
-ui.algorithm.addEventListener('change', onParamsEdited);
+ui.algorithm.addEventListener('change', () => {
+  updateEpsilonField();
+  onParamsEdited();
+});
+ui.epsilon.addEventListener('change', () => {
+  updateEpsilonField();
+  onParamsEdited();
+});
+ui.merge.addEventListener('change', onParamsEdited);
 ui.distribution.addEventListener('change', () => {
   updateSourceFields();
   onParamsEdited();
@@ -735,6 +929,7 @@ ui.reseed.addEventListener('click', () => {
   onParamsEdited();
 });
 function onParamsEdited() {
+  updateNHint();
   if (pendingConfirmKey !== null && pendingConfirmKey !== paramsKey(readParams())) {
     hideWarning();
     if (!job) ui.status.textContent = '';
@@ -769,7 +964,7 @@ function warmUpShaders() {
     new THREE.Mesh(geom, materials.faceBack), new THREE.Mesh(geom, materials.faceFront),
     new THREE.LineSegments(geom, materials.edgeBack), new THREE.LineSegments(geom, materials.edgeFront),
     new THREE.Points(geom, materials.point), new THREE.Points(geom, materials.vertex),
-    new THREE.Points(geom, materials.vertexFront),
+    new THREE.Points(geom, materials.vertexFront), new THREE.Points(geom, materials.dropped),
   );
   group.position.copy(camera.position).multiplyScalar(3); // on the view axis, behind the camera
   for (const obj of group.children) obj.frustumCulled = false;
@@ -784,5 +979,6 @@ function warmUpShaders() {
 
 ui.customPoints.value = CUSTOM_SAMPLE;
 writeParams(paramsFromUrl());
+updateEpsilonField();
 spawnWorker(); // the first computation starts when the worker reports 'ready' (or 'load-error')
 warmUpShaders();

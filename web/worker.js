@@ -3,13 +3,23 @@
 //
 // worker -> main  {type: 'ready', algorithms}                  once the module is loaded
 //                 {type: 'load-error', message}                if it cannot be loaded
-// main -> worker  {type: 'compute', id, distribution, n, seed, algorithm?, text?}
+// main -> worker  {type: 'compute', id, distribution, n, seed, algorithm?, epsilon?,
+//                  mergeCoplanar?, text?}
 // worker -> main  {type: 'result', id, n, dimension, xyz, triangles, vertices, edges,
-//                  volume, area, hullMs, genMs, workerMs}        (buffers transferred)
-//                 {type: 'error', id, kind, message, n, xyz?}   (xyz transferred when available)
+//                  faces, faceSizes?, volume, area, extent, comparison?,
+//                  hullMs, genMs, workerMs}                     (buffers transferred)
+//                 {type: 'error', id, kind, message, n, xyz?, comparison?}
+//                                                               (xyz transferred when available)
 //   kind: 'input'    the input was rejected (by the library or the text parser)
 //         'load'     the hullkit module could not be loaded / instantiated
 //         'internal' anything else (wasm trap, malformed result, bug)
+//   faces:      polygons with mergeCoplanar (faceSizes: {corners: count}), else triangles
+//   edges:      pairs of point indices to draw: the polygon edges with mergeCoplanar, all
+//               triangle edges without; the outline of a flat result; a segment's two ends
+//   comparison: with epsilon 'seed' only, what exact predicates make of the same points:
+//               {epsilon, outcome: 'same' | 'different' | 'failed', exact: {dimension, vertices,
+//               faces, volume, area}, dropped (Uint32Array: exact hull vertices the seed's hull
+//               lacks), added (count of seed hull vertices that are not extreme)}
 import { generatePoints, parsePoints } from './distributions.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
@@ -61,7 +71,7 @@ self.onmessage = (event) => {
   }
 };
 
-async function compute({ id, distribution, n, seed, algorithm, text }) {
+async function compute({ id, distribution, n, seed, algorithm, epsilon, mergeCoplanar = false, text }) {
   const w0 = performance.now();
   let xyz;
   try {
@@ -81,45 +91,115 @@ async function compute({ id, distribution, n, seed, algorithm, text }) {
     return;
   }
 
+  const options = { mergeCoplanar: Boolean(mergeCoplanar) };
+  if (algorithm) options.algorithm = algorithm;
+  const seedEpsilon = epsilon === 'seed';
+  if (seedEpsilon) options.epsilon = 'seed';
+
   let result;
   const h0 = performance.now();
   try {
-    result = hullkit.hull(xyz, algorithm ? { algorithm } : undefined);
+    result = hullkit.hull(xyz, options);
   } catch (err) {
-    postError(id, isInputError(err) ? 'input' : 'internal', describe(err), xyz);
+    const kind = isInputError(err) ? 'input' : 'internal';
+    // The seed's epsilon may give up on near-degenerate input: say what exact predicates find.
+    const comparison = seedEpsilon && kind === 'input' && xyz.length % 3 === 0
+      ? compareWithExact(hullkit, xyz, options.mergeCoplanar, null) : undefined;
+    postError(id, kind, describe(err), xyz, comparison);
     return;
   }
   const hullMs = performance.now() - h0;
 
-  let triangles, vertices, edges, dimension;
+  let triangles, vertices, edges, faces, faceSizes, dimension;
   try {
+    dimension = result.dimension;
+    if (![3, 2, 1, 0, -1].includes(dimension)) throw new Error(`dimension ${dimension}`);
     triangles = ownedCopy(result.triangles, Uint32Array, 'triangles');
     vertices = ownedCopy(result.vertices, Uint32Array, 'vertices');
     validate(triangles, vertices, count);
-    ({ edges, dimension } = hullEdges(triangles, vertices, count, result.dimension));
+    if (options.mergeCoplanar && dimension >= 2) {
+      const polygons = checkPolygons(result.faceOffsets, result.faceVertices, count);
+      faces = polygons.length;
+      faceSizes = polygonSizes(polygons);
+      edges = dimension === 3 ? polygonEdges(polygons, count) : outline(vertices);
+    } else {
+      faces = triangles.length / 3;
+      edges = dimension === 3 ? triangleEdges(triangles, count) : dimension === 2 ? outline(vertices) : segment(vertices, dimension);
+    }
   } catch (err) {
     postError(id, 'internal', `unexpected hull result: ${describe(err)}`, xyz);
     return;
   }
 
+  const comparison = seedEpsilon ? compareWithExact(hullkit, xyz, options.mergeCoplanar, { result, faces }) : undefined;
   const workerMs = performance.now() - w0;
+  const transfer = [xyz.buffer, triangles.buffer, vertices.buffer, edges.buffer];
+  if (comparison?.dropped) transfer.push(comparison.dropped.buffer);
   self.postMessage(
     {
-      type: 'result', id, n: count, dimension, xyz, triangles, vertices, edges,
-      volume: Number(result.volume), area: Number(result.area),
+      type: 'result', id, n: count, dimension, xyz, triangles, vertices, edges, faces, faceSizes,
+      volume: Number(result.volume), area: Number(result.area), extent: taxicabExtent(xyz), comparison,
       hullMs, genMs, workerMs,
     },
-    [xyz.buffer, triangles.buffer, vertices.buffer, edges.buffer],
+    transfer,
   );
 }
 
-function postError(id, kind, message, xyz) {
-  self.postMessage({ type: 'error', id, kind, message, n: Math.floor(xyz.length / 3), xyz }, [xyz.buffer]);
+function postError(id, kind, message, xyz, comparison) {
+  self.postMessage({ type: 'error', id, kind, message, n: Math.floor(xyz.length / 3), xyz, comparison }, [xyz.buffer]);
 }
 
 function describe(err) {
   if (err instanceof Error) return err.message || String(err);
   return String(err);
+}
+
+/**
+ * The same points with exact predicates (quickhull, the fast default) next to the seed's
+ * epsilon run: `seed` is {result, faces} of that run, or null when it failed.
+ */
+function compareWithExact(hullkit, xyz, mergeCoplanar, seed) {
+  const extent = taxicabExtent(xyz);
+  const comparison = { epsilon: Number.EPSILON * extent, outcome: seed ? 'same' : 'failed', exact: null, dropped: null, added: 0 };
+  let exact;
+  try {
+    exact = hullkit.hull(xyz, { mergeCoplanar });
+  } catch (err) {
+    comparison.exactError = describe(err);
+    return comparison;
+  }
+  comparison.exact = {
+    dimension: exact.dimension,
+    vertices: exact.vertices.length,
+    faces: mergeCoplanar && exact.faceOffsets ? Math.max(0, exact.faceOffsets.length - 1) : exact.triangles.length / 3,
+    volume: Number(exact.volume),
+    area: Number(exact.area),
+  };
+  if (seed) {
+    const inSeed = new Set(seed.result.vertices);
+    const inExact = new Set(exact.vertices);
+    comparison.dropped = Uint32Array.from(exact.vertices.filter((v) => !inSeed.has(v)));
+    for (const v of seed.result.vertices) if (!inExact.has(v)) comparison.added++;
+    const same = comparison.dropped.length === 0 && comparison.added === 0 && exact.dimension === seed.result.dimension &&
+      comparison.exact.faces === seed.faces;
+    comparison.outcome = same ? 'same' : 'different';
+  }
+  return comparison;
+}
+
+/** |x extent| + |y extent| + |z extent| of the finite points (the seed's epsilon is DBL_EPSILON times this). */
+function taxicabExtent(xyz) {
+  let sum = 0;
+  for (let k = 0; k < 3; k++) {
+    let lo = Infinity, hi = -Infinity;
+    for (let i = k; i < xyz.length; i += 3) {
+      const v = xyz[i];
+      if (v < lo) lo = v;
+      if (v > hi) hi = v;
+    }
+    if (hi >= lo && Number.isFinite(hi - lo)) sum += hi - lo;
+  }
+  return sum;
 }
 
 // The result arrays must own their whole (non-shared) buffer to be
@@ -143,52 +223,77 @@ function validate(triangles, vertices, n) {
   }
 }
 
-/**
- * The edges to draw, as a flat Uint32Array [a0, b0, a1, b1, ...], and the
- * dimension of the hull (taken from the result when the API reports it):
- *   3  closed surface: every edge is shared by two triangles; all edges
- *   2  flat polygon (coplanar input): the boundary, i.e. edges used once
- *   1  segment between the two vertices;  0 / -1  none
- */
-function hullEdges(triangles, vertices, n, reportedDimension) {
-  const m = triangles.length;
-  const keys = new Float64Array(m); // lo * n + hi < 2^53 for n <= 2^26
-  for (let t = 0; t < m; t += 3) {
-    for (let k = 0; k < 3; k++) {
-      const a = triangles[t + k];
-      const b = triangles[t + (k === 2 ? 0 : k + 1)];
-      keys[t + k] = a < b ? a * n + b : b * n + a;
-    }
+/** faceOffsets/faceVertices as an array of polygons (subarrays), checked. */
+function checkPolygons(offsets, corners, n) {
+  if (!offsets || !corners) throw new Error('mergeCoplanar was requested but faceOffsets/faceVertices are missing');
+  if (offsets.length === 0 || offsets[0] !== 0 || offsets[offsets.length - 1] !== corners.length) {
+    throw new Error('faceOffsets does not span faceVertices');
   }
-  keys.sort();
-  const unique = [];
-  const boundary = [];
-  for (let i = 0; i < m; ) {
-    let j = i + 1;
-    while (j < m && keys[j] === keys[i]) j++;
-    unique.push(keys[i]);
-    if (j - i === 1) boundary.push(keys[i]);
-    i = j;
+  const polygons = [];
+  for (let f = 0; f + 1 < offsets.length; f++) {
+    if (offsets[f + 1] - offsets[f] < 3) throw new Error(`face ${f} has fewer than 3 corners`);
+    polygons.push(corners.subarray(offsets[f], offsets[f + 1]));
   }
-  let dimension;
-  if (Number.isInteger(reportedDimension)) dimension = reportedDimension;
-  else if (m > 0) dimension = boundary.length === 0 ? 3 : 2;
-  else dimension = vertices.length >= 2 ? 1 : vertices.length - 1;
+  for (let i = 0; i < corners.length; i++) {
+    if (corners[i] >= n) throw new Error(`face vertex index ${corners[i]} out of range (n = ${n})`);
+  }
+  return polygons;
+}
 
-  let chosen = [];
-  if (dimension === 3) chosen = unique;
-  else if (dimension === 2) chosen = boundary;
-  const segment = dimension === 1 && vertices.length >= 2;
-  const edges = new Uint32Array(segment ? 2 : 2 * chosen.length);
-  if (segment) {
-    edges[0] = vertices[0];
-    edges[1] = vertices[vertices.length - 1];
-  } else {
-    for (let i = 0; i < chosen.length; i++) {
-      const lo = Math.floor(chosen[i] / n);
-      edges[2 * i] = lo;
-      edges[2 * i + 1] = chosen[i] - lo * n;
-    }
+/** {corners: number of faces with that many corners}. */
+function polygonSizes(polygons) {
+  const sizes = {};
+  for (const p of polygons) sizes[p.length] = (sizes[p.length] ?? 0) + 1;
+  return sizes;
+}
+
+/** Closed loop through the vertices in order (a flat result's polygon). */
+function outline(vertices) {
+  const h = vertices.length;
+  if (h < 3) return segment(vertices, h - 1);
+  const edges = new Uint32Array(2 * h);
+  for (let i = 0; i < h; i++) {
+    edges[2 * i] = vertices[i];
+    edges[2 * i + 1] = vertices[(i + 1) % h];
   }
-  return { edges, dimension };
+  return edges;
+}
+
+function segment(vertices, dimension) {
+  return dimension === 1 && vertices.length >= 2
+    ? Uint32Array.of(vertices[0], vertices[vertices.length - 1]) : new Uint32Array(0);
+}
+
+/** Every edge of the triangles once (two triangles share each edge of a closed surface). */
+function triangleEdges(triangles, n) {
+  const keys = new Float64Array(triangles.length); // lo * n + hi < 2^53 for n <= 2^26
+  for (let t = 0; t < triangles.length; t += 3) {
+    for (let k = 0; k < 3; k++) keys[t + k] = edgeKey(triangles[t + k], triangles[t + (k === 2 ? 0 : k + 1)], n);
+  }
+  return uniqueEdges(keys, n);
+}
+
+/** The polygons' sides once each: no triangulation diagonals. */
+function polygonEdges(polygons, n) {
+  let m = 0;
+  for (const p of polygons) m += p.length;
+  const keys = new Float64Array(m);
+  let o = 0;
+  for (const p of polygons) {
+    for (let i = 0; i < p.length; i++) keys[o++] = edgeKey(p[i], p[(i + 1) % p.length], n);
+  }
+  return uniqueEdges(keys, n);
+}
+
+const edgeKey = (a, b, n) => (a < b ? a * n + b : b * n + a);
+
+function uniqueEdges(keys, n) {
+  keys.sort();
+  const out = [];
+  for (let i = 0; i < keys.length; i++) {
+    if (i > 0 && keys[i] === keys[i - 1]) continue;
+    const lo = Math.floor(keys[i] / n);
+    out.push(lo, keys[i] - lo * n);
+  }
+  return Uint32Array.from(out);
 }

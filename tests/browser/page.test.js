@@ -125,6 +125,18 @@ function averageColor(img, x0, y0, w, h) {
   return sum.map((s) => s / (w * h));
 }
 
+/** Pixels in the pink of the extreme points that the seed's epsilon left out. */
+function countPink(img) {
+  let count = 0;
+  for (let y = 0; y < img.height; y++) {
+    for (let x = 0; x < img.width; x++) {
+      const [r, g, b] = pixel(img, x, y);
+      if (r > 200 && g < 130 && b > 90 && b < 190) count++;
+    }
+  }
+  return count;
+}
+
 /** Pixel statistics of the canvas image: background, coverage of the centre, hull colours. */
 function analyseCanvas(img) {
   // Top-left corner: pure background (the view overlays sit on the right).
@@ -180,8 +192,11 @@ async function panelError(page) {
 }
 
 /** Set the inputs, click Compute and wait for the next finished run. */
-async function compute(page, { distribution, n, seed, text }) {
+async function compute(page, { distribution, n, seed, text, algorithm, epsilon, merge }) {
   const before = await page.evaluate(() => window.hullkitStats?.run ?? 0);
+  if (algorithm !== undefined) await page.selectOption('#algorithm', algorithm);
+  if (epsilon !== undefined) await page.selectOption('#epsilon', epsilon);
+  if (merge !== undefined) await page.setChecked('#merge', merge);
   if (distribution !== undefined) await page.selectOption('#distribution', distribution);
   if (n !== undefined) await page.fill('#n', String(n));
   if (seed !== undefined) await page.fill('#seed', String(seed));
@@ -268,6 +283,15 @@ test('demo page computes, draws and reports convex hulls', { timeout: 240_000 },
       assert.equal(await page.textContent('#stat-vertices'), firstStats.vertices.toLocaleString('en-US'));
       assert.equal(await page.textContent('#stat-faces'), firstStats.faces.toLocaleString('en-US'));
       assert.equal(await page.isVisible('#error'), false, 'no error shown');
+      // Quickhull is the default: listed first, selected, used; the epsilon is a gift wrapping option.
+      const algorithms = await page.$$eval('#algorithm option', (options) => options.map((o) => o.value));
+      assert.deepEqual(algorithms, ['quickhull', 'giftwrap'], 'the library\'s algorithms, its default first');
+      assert.equal(await page.inputValue('#algorithm'), 'quickhull');
+      assert.equal(firstStats.algorithm, 'quickhull');
+      assert.equal(firstStats.epsilon, 'exact');
+      assert.equal(firstStats.merged, false);
+      assert.equal(await page.isDisabled('#epsilon'), true, 'no epsilon choice with quickhull');
+      assert.equal(await page.evaluate(() => window.hullkitEpsilon), null);
     });
 
     await step('the hull is drawn on the canvas', async () => {
@@ -353,6 +377,94 @@ test('demo page computes, draws and reports convex hulls', { timeout: 240_000 },
       for (const key of ['n', 'vertices', 'faces', 'volume', 'area']) {
         assert.equal(r.stats[key], firstStats[key], `deterministic ${key}`);
       }
+    });
+
+    await step('quickhull runs 100 000 points on a sphere without asking', async () => {
+      const { state, stats } = await compute(page, { algorithm: 'quickhull', distribution: 'sphere', n: 100000, seed: 1 });
+      assert.equal(state, 'ready', `quickhull sphere: ${await panelError(page)}`);
+      assert.equal(await page.isVisible('#warning'), false, 'no confirmation for quickhull');
+      t.diagnostic(`quickhull sphere 100 000: hull ${stats.ms.toFixed(0)} ms, round trip ${stats.roundTripMs.toFixed(0)} ms`);
+      checkHullStats(stats, { n: 100000, distribution: 'sphere' });
+      assert.equal(stats.algorithm, 'quickhull');
+      assert.equal(stats.vertices, 100000, 'all points on a sphere are hull vertices');
+    });
+
+    await step('merging coplanar faces turns the cube grid into 6 squares', async () => {
+      let r = await compute(page, { distribution: 'grid', n: 1000, merge: true });
+      assert.equal(r.state, 'ready', `cube grid: ${await panelError(page)}`);
+      t.diagnostic(`cube grid, merged: ${JSON.stringify(r.stats)}`);
+      assert.equal(r.stats.n, 1000, '10 × 10 × 10 integer points');
+      assert.equal(r.stats.merged, true);
+      assert.deepEqual([r.stats.dimension, r.stats.vertices, r.stats.faces, r.stats.edges], [3, 8, 6, 12], '8 corners, 6 quads, 12 sides');
+      assert.equal(r.stats.triangles, 12, 'drawn as 12 triangles');
+      assert.equal(r.stats.volume, 729);
+      assert.equal(r.stats.area, 486);
+      assert.equal(await page.textContent('#stat-faces'), '6');
+      assert.equal(await page.textContent('#stat-faces-label'), 'polygons');
+      assert.match(await page.textContent('#status'), /6 faces: 6 quadrilaterals/);
+      assert.match(page.url(), /merge=1/, 'the option is kept in the URL');
+
+      // Without merging: the triangulation, diagonals included.
+      r = await compute(page, { merge: false });
+      assert.equal(r.state, 'ready');
+      assert.deepEqual([r.stats.vertices, r.stats.faces, r.stats.edges, r.stats.merged], [8, 12, 18, false]);
+      assert.equal(await page.textContent('#stat-faces-label'), 'triangles');
+    });
+
+    await step('the seed\'s epsilon fails or changes the hull where exact predicates do not', async () => {
+      // Exact predicates with gift wrapping: a slab 2e-13 thin is a polytope.
+      let r = await compute(page, { algorithm: 'giftwrap', epsilon: 'exact', distribution: 'near-coplanar', n: 2000, seed: 1 });
+      assert.equal(r.state, 'ready', `near-coplanar, exact: ${await panelError(page)}`);
+      assert.equal(await page.isDisabled('#epsilon'), false, 'epsilon choice with gift wrapping');
+      t.diagnostic(`near-coplanar, exact: ${JSON.stringify(r.stats)}`);
+      checkHullStats(r.stats, { n: 2000, distribution: 'near-coplanar' });
+      assert.ok(r.stats.volume > 0 && r.stats.volume < 4 * 2e-13, `slab volume ${r.stats.volume}`);
+      assert.equal(await page.evaluate(() => window.hullkitEpsilon), null);
+      assert.equal(await page.isVisible('#compare'), false);
+      const exact = r.stats;
+
+      // The seed's epsilon on the same points: gift wrapping gives up, as a user-visible error.
+      r = await compute(page, { epsilon: 'seed' });
+      assert.equal(r.state, 'error', 'the seed\'s epsilon cannot wrap the slab');
+      const message = await panelError(page);
+      t.diagnostic(`near-coplanar, seed's epsilon: ${message}`);
+      assert.match(message, /seed's epsilon/);
+      assert.match(page.url(), /eps=seed/);
+      const cmp = await page.evaluate(() => window.hullkitEpsilon);
+      assert.equal(cmp.outcome, 'failed');
+      assert.ok(cmp.epsilon > 1e-16 && cmp.epsilon < 1e-14, `ε ${cmp.epsilon}`);
+      // (compared with quickhull: the same hull, its volume summed in another order)
+      assert.deepEqual([cmp.exact.dimension, cmp.exact.vertices, cmp.exact.faces], [3, exact.vertices, exact.faces], 'compared with the exact hull');
+      assert.ok(Math.abs(cmp.exact.volume - exact.volume) < 1e-9 * exact.volume, `exact volume ${cmp.exact.volume}`);
+      assert.match(await page.textContent('#status'), /seed's epsilon \(ε = [\d.]+e-1\d\) could not decide/);
+      assert.equal(await page.isVisible('#compare'), true, 'both outcomes side by side');
+      const rows = await page.$$eval('#compare tbody tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent.trim()).join(' ')));
+      assert.equal(rows[0], 'seed\'s ε error — —');
+      assert.match(rows[1], new RegExp(`^exact ${exact.vertices} ${exact.faces} 7\\.\\d\\de-13$`));
+
+      // A rotated integer grid: the epsilon snaps the rounded face points back onto the faces.
+      r = await compute(page, { distribution: 'rotated-grid', n: 1000, seed: 2 });
+      assert.equal(r.state, 'ready', `rotated grid, seed's epsilon: ${await panelError(page)}`);
+      const diff = await page.evaluate(() => window.hullkitEpsilon);
+      t.diagnostic(`rotated grid, seed's epsilon vs exact: ${JSON.stringify(diff)}`);
+      assert.equal(diff.outcome, 'different');
+      assert.equal(r.stats.vertices, 8, 'the seed\'s epsilon keeps the 8 corners only');
+      assert.ok(diff.exact.vertices > 8 && diff.dropped === diff.exact.vertices - 8, `exact vertices ${diff.exact.vertices}`);
+      assert.match(await page.textContent('#status'), /changed the hull: it left out \d+ extreme points/);
+      await nextFrames(page);
+      const pink = countPink(decodePng(await page.locator('#canvas').screenshot()));
+      assert.ok(pink > 100, `the left-out extreme points are drawn in pink (${pink} pixels)`);
+
+      // Quickhull has no epsilon: the choice is disabled and runs are exact.
+      r = await compute(page, { algorithm: 'quickhull' });
+      assert.equal(r.state, 'ready');
+      assert.equal(await page.isDisabled('#epsilon'), true);
+      assert.equal(r.stats.epsilon, 'exact');
+      assert.equal(r.stats.vertices, diff.exact.vertices);
+      assert.equal(await page.isVisible('#compare'), false);
+      assert.equal(await page.isVisible('#legend-dropped'), false);
+      await page.selectOption('#algorithm', 'giftwrap');
+      await page.selectOption('#epsilon', 'exact');
     });
 
     await step('an expensive sphere run asks first and can be cancelled', async () => {
