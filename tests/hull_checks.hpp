@@ -19,18 +19,8 @@
 
 namespace hullkit_test {
 
-/// Exact sign of ((b-a) x (c-a)) . (d-a); a double filter with a generous bound, then GMP.
-inline int exact_orient3d(const double* a, const double* b, const double* c, const double* d) {
-    const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
-    const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
-    const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
-    const double det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
-    const double permanent = std::fabs(dx) * (std::fabs(by * cz) + std::fabs(bz * cy)) +
-                             std::fabs(dy) * (std::fabs(bz * cx) + std::fabs(bx * cz)) +
-                             std::fabs(dz) * (std::fabs(bx * cy) + std::fabs(by * cx));
-    // Far above the rounding error of this expression (about 1e-15 * permanent, differences included).
-    // Trusted only far from underflow and overflow (1e-250 < permanent < 1e250).
-    if (permanent > 1e-250 && permanent < 1e250 && std::fabs(det) > 1e-10 * permanent) return det > 0 ? 1 : -1;
+/// Exact sign of ((b-a) x (c-a)) . (d-a) by GMP rational arithmetic.
+inline int rational_orient3d(const double* a, const double* b, const double* c, const double* d) {
     auto q = [](double v) { return mpq_class(v); };
     const mpq_class ebx = q(b[0]) - q(a[0]), eby = q(b[1]) - q(a[1]), ebz = q(b[2]) - q(a[2]);
     const mpq_class ecx = q(c[0]) - q(a[0]), ecy = q(c[1]) - q(a[1]), ecz = q(c[2]) - q(a[2]);
@@ -38,6 +28,37 @@ inline int exact_orient3d(const double* a, const double* b, const double* c, con
     const mpq_class exact =
         edx * (eby * ecz - ebz * ecy) + edy * (ebz * ecx - ebx * ecz) + edz * (ebx * ecy - eby * ecx);
     return sgn(exact);
+}
+
+/// Exact sign of ((b-a) x (c-a)) . (d-a): a double filter with a generous bound (after scaling the
+/// four points by one power of two so that the largest coordinate is near 1, which changes no
+/// sign), then GMP.
+inline int exact_orient3d(const double* a, const double* b, const double* c, const double* d) {
+    const double* in[4] = {a, b, c, d};
+    double largest = 0.0;
+    for (const double* p : in)
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    double s[4][3];
+    for (int i = 0; i < 4; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            s[i][k] = std::ldexp(in[i][k], -exponent);
+            // A coordinate that would lose bits to underflow: no shortcut.
+            if (in[i][k] != 0.0 && std::fabs(s[i][k]) < 1e-250) return rational_orient3d(a, b, c, d);
+        }
+    }
+    const double bx = s[1][0] - s[0][0], by = s[1][1] - s[0][1], bz = s[1][2] - s[0][2];
+    const double cx = s[2][0] - s[0][0], cy = s[2][1] - s[0][1], cz = s[2][2] - s[0][2];
+    const double dx = s[3][0] - s[0][0], dy = s[3][1] - s[0][1], dz = s[3][2] - s[0][2];
+    const double det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+    const double permanent = std::fabs(dx) * (std::fabs(by * cz) + std::fabs(bz * cy)) +
+                             std::fabs(dy) * (std::fabs(bz * cx) + std::fabs(bx * cz)) +
+                             std::fabs(dz) * (std::fabs(bx * cy) + std::fabs(by * cx));
+    // Far above the rounding error of this expression (about 1e-15 * permanent, differences
+    // included), trusted only far from underflow.
+    if (permanent > 1e-200 && std::fabs(det) > 1e-10 * permanent) return det > 0 ? 1 : -1;
+    return rational_orient3d(a, b, c, d);
 }
 
 /// Exact test that c lies on the line through a and b.

@@ -1060,9 +1060,16 @@ void verify_solid(const Prepared& prepared, const Hull& hull, VerifyReport& repo
         return;
     }
     SurfaceVerifier(prepared, hull.triangles.data(), hull.face_count(), report).run();
-    std::vector<Index> corners(hull.triangles);
-    std::sort(corners.begin(), corners.end());
-    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    std::vector<Index> corners;  // ascending, without repeats (indices out of range are reported already)
+    {
+        std::vector<char> used(prepared.points.count, 0);
+        for (Index i : hull.triangles) {
+            if (i < used.size()) used[i] = 1;
+        }
+        for (std::size_t i = 0; i < used.size(); ++i) {
+            if (used[i]) corners.push_back(static_cast<Index>(i));
+        }
+    }
     if (corners != hull.vertices) {
         std::vector<Index> listed(hull.vertices);
         std::sort(listed.begin(), listed.end());
