@@ -50,9 +50,9 @@ TEST_CASE("quickhull: random points in a cube, a ball and on a sphere match gift
 }
 
 TEST_CASE("quickhull: large clouds exercise the interior box and the spatial order") {
-    // 200 000 points: above the sizes where interior points are culled and work is reordered.
+    // 60 000 points: above the sizes where interior points are culled and work is reordered.
     for (Cloud cloud : {Cloud::Cube, Cloud::Ball}) {
-        const auto xyz = hullkit_test::random_cloud(cloud, 200000, 42);
+        const auto xyz = hullkit_test::random_cloud(cloud, 60000, 42);
         const auto hull = quickhull(xyz);
         require_valid(xyz, hull);
     }
