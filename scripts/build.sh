@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds hullkit. With no arguments: the native library, CLI and tests (build/native) and the wasm
-# module (build/wasm). Arguments pick among: native, wasm, asan (the C++ tests under
-# AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan).
+# module (build/wasm). Arguments pick among: native, cli (the library and the hullkit command
+# alone, in build/native), wasm, asan (the C++ tests under AddressSanitizer +
+# UndefinedBehaviorSanitizer, in build/asan).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=("$@")
@@ -10,9 +11,13 @@ jobs=$(nproc)
 
 for target in "${targets[@]}"; do
   case "$target" in
-    native)
+    native | cli)
       cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DHULLKIT_BENCH=OFF >/dev/null
-      cmake --build build/native -j "$jobs"
+      if [ "$target" = cli ]; then
+        cmake --build build/native -j "$jobs" --target hullkit
+      else
+        cmake --build build/native -j "$jobs"
+      fi
       ;;
     wasm)
       # Debian's emscripten runs acorn from /usr/share/nodejs, which this Node does not search.
@@ -27,7 +32,7 @@ for target in "${targets[@]}"; do
       cmake --build build/asan -j "$jobs"
       ;;
     *)
-      echo "build.sh: unknown target \"$target\" (known: native, wasm, asan)" >&2
+      echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, asan)" >&2
       exit 2
       ;;
   esac
