@@ -4,8 +4,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,7 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -21,88 +18,20 @@
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
+
+using hullkit_test::data_path;
+using hullkit_test::read_text;
+using hullkit_test::run_cli;
+using hullkit_test::run_shell;
+using hullkit_test::RunResult;
+using hullkit_test::sh_quote;
+using hullkit_test::TempDir;
+using hullkit_test::write_text;
+
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string data_path(const std::string& name) { return std::string(HULLKIT_TEST_DATA) + "/" + name; }
-
-/// A fresh directory under /tmp, removed with everything in it when the test ends.
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "hullkit-cli-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    REQUIRE(out.good());
-}
-
-/// Single-quotes a word for /bin/sh.
-std::string sh_quote(const std::string& word) {
-    std::string quoted = "'";
-    for (char c : word) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-struct RunResult {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-
-    std::vector<std::string> err_lines() const {
-        std::vector<std::string> lines;
-        std::istringstream in(err);
-        for (std::string line; std::getline(in, line);) lines.push_back(line);
-        return lines;
-    }
-};
-
-/// Runs a shell command line with stdout and stderr captured in files of `dir`.
-RunResult run_shell(const TempDir& dir, const std::string& command) {
-    const std::string out = dir.file("run.out"), err = dir.file("run.err");
-    // The parentheses keep redirections inside `command` apart from the captured ones.
-    const std::string full = "(" + command + ") >" + sh_quote(out) + " 2>" + sh_quote(err);
-    int status = std::system(full.c_str());
-    RunResult result;
-    REQUIRE(status != -1);
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = slurp(out);
-    result.err = slurp(err);
-    return result;
-}
-
-/// Runs `hullkit ARGS` (each argument quoted), optionally with stdin from a file.
-RunResult run_cli(const TempDir& dir, const std::vector<std::string>& args,
-                  const std::string& stdin_path = "") {
-    std::string command = sh_quote(HULLKIT_CLI_PATH);
-    for (const std::string& arg : args) command += " " + sh_quote(arg);
-    command += " <" + sh_quote(stdin_path.empty() ? "/dev/null" : stdin_path);
-    return run_shell(dir, command);
-}
 
 /// A failure must be exit code 2 and exactly one stderr line; returns that line.
 std::string single_error_line(const RunResult& result) {
@@ -291,7 +220,7 @@ void require_on_path(const TempDir& dir, const std::string& tool) {
 // ---- usage and errors ----
 
 TEST_CASE("cli: --help, hull --help and --version") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     RunResult help = run_cli(dir, {"--help"});
     CHECK(help.exit_code == 0);
     CHECK(help.out.rfind("Usage: hullkit <command>", 0) == 0);
@@ -309,7 +238,7 @@ TEST_CASE("cli: --help, hull --help and --version") {
 }
 
 TEST_CASE("cli: malformed file exits 2 with one line naming file and line") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string path = data_path("malformed-line3.txt");
     RunResult result = run_cli(dir, {"hull", path});
     CHECK(single_error_line(result) == "hullkit: " + path + ":3: expected 3 coordinates, got 2");
@@ -322,7 +251,7 @@ TEST_CASE("cli: malformed file exits 2 with one line naming file and line") {
 }
 
 TEST_CASE("cli: usage problems exit 2 with one line") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string tetra = data_path("tetra.off");
     CHECK(single_error_line(run_cli(dir, {"hull", "--frobnicate", tetra})) ==
           "hullkit: unknown option \"--frobnicate\" (try 'hullkit hull --help')");
@@ -343,7 +272,7 @@ TEST_CASE("cli: usage problems exit 2 with one line") {
 }
 
 TEST_CASE("cli: unreadable input and unwritable output exit 2") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string missing = dir.file("missing.txt");
     CHECK(single_error_line(run_cli(dir, {"hull", missing})) ==
           "hullkit: " + missing + ": cannot open: No such file or directory");
@@ -355,7 +284,7 @@ TEST_CASE("cli: unreadable input and unwritable output exit 2") {
 }
 
 TEST_CASE("cli: hull errors are prefixed with the input name") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     SECTION("a non-finite coordinate names the point") {
         const std::string path = dir.file("nan.txt");
         write_text(path, "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 nan 1\n");
@@ -382,7 +311,7 @@ TEST_CASE("cli: hull errors are prefixed with the input name") {
 TEST_CASE("cli: lower-dimensional point sets give a flat hull, not an error") {
     // hullkit::hull reports coplanar, collinear and single points as hulls of dimension 2, 1, 0
     // (hull.hpp); the CLI writes them like any other hull.
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     struct Case {
         std::string points;
         std::size_t vertices, faces;
@@ -415,7 +344,7 @@ TEST_CASE("cli: lower-dimensional point sets give a flat hull, not an error") {
 
 
 TEST_CASE("cli: stdin input gives the same hull as a file") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string cube = data_path("cube.obj");
     RunResult from_file = run_cli(dir, {"hull", cube});
     RunResult from_stdin = run_cli(dir, {"hull"}, cube);
@@ -435,7 +364,7 @@ TEST_CASE("cli: stdin input gives the same hull as a file") {
 }
 
 TEST_CASE("cli: -o writes the file, the format follows the extension unless --format is given") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string tetra = data_path("tetra.off");
     struct Case {
         std::vector<std::string> extra;
@@ -458,7 +387,7 @@ TEST_CASE("cli: -o writes the file, the format follows the extension unless --fo
         CHECK(result.exit_code == 0);
         CHECK(result.out.empty());
         CHECK(result.err.empty());
-        CHECK(slurp(dir.file(c.output)).rfind(c.starts_with, 0) == 0);
+        CHECK(read_text(dir.file(c.output)).rfind(c.starts_with, 0) == 0);
     }
     // A failed run leaves no output file behind.
     RunResult failed = run_cli(dir, {"hull", data_path("malformed-line3.txt"), "-o", dir.file("no.off")});
@@ -467,7 +396,7 @@ TEST_CASE("cli: -o writes the file, the format follows the extension unless --fo
 }
 
 TEST_CASE("cli: --stats writes one JSON line with the hull's numbers") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     RunResult result = run_cli(dir, {"hull", data_path("cube.obj"), "--stats", "-o", dir.file("c.off"),
                                      "--algorithm", "giftwrap"});
     REQUIRE(result.exit_code == 0);
@@ -491,7 +420,7 @@ TEST_CASE("cli: --stats writes one JSON line with the hull's numbers") {
 }
 
 TEST_CASE("cli: each output format parses back to the same hull") {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     const std::string input = dir.file("points.txt");
     // A jittered grid plus random points: many interior points, awkward decimals.
     std::string text = "# test points\n";
@@ -585,7 +514,7 @@ namespace {
 /// Runs rbox with `rbox_args`, then qconvex and hullkit (each algorithm) on the same file, and
 /// compares the hull vertex set, the triangle count, the volume and the area.
 void check_against_qconvex(const std::string& rbox_args) {
-    TempDir dir;
+    TempDir dir("hullkit-cli");
     require_on_path(dir, "rbox");
     require_on_path(dir, "qconvex");
     const std::string input = dir.file("rbox.txt");

@@ -9,20 +9,11 @@
 
 using hullkit::GiftwrapScan;
 using hullkit_test::Cloud;
+using hullkit_test::cube_corners;
 using hullkit_test::hull_problems;
 using hullkit_test::join;
 
 namespace {
-
-std::vector<double> cube_corners(double half = 1.0) {
-    std::vector<double> xyz;
-    for (int i = 0; i < 8; ++i) {
-        xyz.push_back(i & 1 ? half : -half);
-        xyz.push_back(i & 2 ? half : -half);
-        xyz.push_back(i & 4 ? half : -half);
-    }
-    return xyz;
-}
 
 void require_valid(const std::vector<double>& xyz, const hullkit::Hull& hull) {
     INFO(hull.error);

@@ -123,6 +123,18 @@ inline std::string join(const std::vector<std::string>& lines) {
     return out.str();
 }
 
+/// The 8 corners of the cube [-half, half]^3; corner i has x > 0 if bit 0 of i is set, y > 0 if
+/// bit 1, z > 0 if bit 2.
+inline std::vector<double> cube_corners(double half = 1.0) {
+    std::vector<double> xyz;
+    for (int i = 0; i < 8; ++i) {
+        xyz.push_back(i & 1 ? half : -half);
+        xyz.push_back(i & 2 ? half : -half);
+        xyz.push_back(i & 4 ? half : -half);
+    }
+    return xyz;
+}
+
 /// Seeded point clouds shared by the tests and benchmarks.
 enum class Cloud { Cube, Ball, Sphere };
 

@@ -4,19 +4,14 @@
 
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
 #include "hull_checks.hpp"
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_io.hpp"
@@ -26,6 +21,13 @@ using hullkit::Hull;
 using hullkit::HullOptions;
 using hullkit::VerifyReport;
 using hullkit_test::Cloud;
+using hullkit_test::cube_corners;
+using hullkit_test::data_path;
+using hullkit_test::read_text;
+using hullkit_test::run_cli;
+using hullkit_test::RunResult;
+using hullkit_test::TempDir;
+using hullkit_test::write_text;
 
 namespace {
 
@@ -66,16 +68,6 @@ void require_ok(const std::vector<double>& xyz, const Hull& hull) {
     REQUIRE(report.ok);
     CHECK(report.problem_count == 0);
     CHECK(report.checked_points == xyz.size() / 3);
-}
-
-std::vector<double> cube_corners(double half = 1.0) {
-    std::vector<double> xyz;
-    for (int i = 0; i < 8; ++i) {
-        xyz.push_back(i & 1 ? half : -half);
-        xyz.push_back(i & 2 ? half : -half);
-        xyz.push_back(i & 4 ? half : -half);
-    }
-    return xyz;
 }
 
 const std::vector<double> kTetra = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -482,65 +474,6 @@ TEST_CASE("verify: broken lower-dimensional results are caught") {
 
 namespace {
 
-namespace fs = std::filesystem;
-
-class ScratchDir {
-public:
-    ScratchDir() {
-        std::string pattern = (fs::temp_directory_path() / "hullkit-verify-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path_ = pattern;
-    }
-    ~ScratchDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    ScratchDir(const ScratchDir&) = delete;
-    ScratchDir& operator=(const ScratchDir&) = delete;
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
-};
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    REQUIRE(out.good());
-}
-
-std::string quote(const std::string& word) {
-    std::string quoted = "'";
-    for (char c : word) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-struct Run {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-Run run_hullkit(const ScratchDir& dir, const std::vector<std::string>& args) {
-    std::string command = quote(HULLKIT_CLI_PATH);
-    for (const auto& arg : args) command += " " + quote(arg);
-    const std::string out = dir.file("stdout"), err = dir.file("stderr");
-    command = "(" + command + " </dev/null) >" + quote(out) + " 2>" + quote(err);
-    const int status = std::system(command.c_str());
-    REQUIRE(status != -1);
-    Run run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    run.out = read_text(out);
-    run.err = read_text(err);
-    return run;
-}
-
 std::string points_text(const std::vector<double>& xyz) {
     std::string text;
     for (std::size_t i = 0; i < xyz.size(); i += 3) {
@@ -553,16 +486,16 @@ std::string points_text(const std::vector<double>& xyz) {
 }  // namespace
 
 TEST_CASE("verify: cli accepts the hulls that hullkit hull writes") {
-    ScratchDir dir;
+    TempDir dir("hullkit-verify");
     auto xyz = hullkit_test::random_cloud(Cloud::Ball, 3000, 31);
     auto cube = cube_corners(1.0);
     xyz.insert(xyz.end(), cube.begin(), cube.end());
     const std::string points = dir.file("points.txt"), off = dir.file("hull.off");
     write_text(points, points_text(xyz));
     for (const char* algorithm : {"quickhull", "giftwrap"}) {
-        Run hull = run_hullkit(dir, {"hull", points, "-o", off, "--algorithm", algorithm});
+        RunResult hull = run_cli(dir, {"hull", points, "-o", off, "--algorithm", algorithm});
         REQUIRE(hull.exit_code == 0);
-        Run check = run_hullkit(dir, {"verify", points, off});
+        RunResult check = run_cli(dir, {"verify", points, off});
         INFO(check.out << check.err);
         CHECK(check.exit_code == 0);
         CHECK(check.out == "ok: 3008 points, 12 triangles, 8 vertices\n");
@@ -577,8 +510,8 @@ TEST_CASE("verify: cli accepts the hulls that hullkit hull writes") {
     };
     for (const auto& [cloud, expected] : flat) {
         write_text(points, points_text(cloud));
-        REQUIRE(run_hullkit(dir, {"hull", points, "-o", off}).exit_code == 0);
-        Run check = run_hullkit(dir, {"verify", points, off});
+        REQUIRE(run_cli(dir, {"hull", points, "-o", off}).exit_code == 0);
+        RunResult check = run_cli(dir, {"verify", points, off});
         INFO(read_text(off) << check.out << check.err);
         CHECK(check.exit_code == 0);
         CHECK(check.out == expected);
@@ -586,10 +519,10 @@ TEST_CASE("verify: cli accepts the hulls that hullkit hull writes") {
 }
 
 TEST_CASE("verify: cli reports a broken hull with exit status 1") {
-    ScratchDir dir;
+    TempDir dir("hullkit-verify");
     const std::string points = dir.file("points.txt"), off = dir.file("hull.off");
     write_text(points, points_text(cube_corners()) + "0.5 0.5 0.5\n");
-    REQUIRE(run_hullkit(dir, {"hull", points, "-o", off}).exit_code == 0);
+    REQUIRE(run_cli(dir, {"hull", points, "-o", off}).exit_code == 0);
     const std::string good = read_text(off);
 
     // The last triangle dropped: the header is adjusted so the file stays well-formed.
@@ -597,7 +530,7 @@ TEST_CASE("verify: cli reports a broken hull with exit status 1") {
     text.erase(text.find_last_of('\n', text.size() - 2) + 1);
     text.replace(text.find("8 12 0"), 6, "8 11 0");
     write_text(off, text);
-    Run run = run_hullkit(dir, {"verify", points, off});
+    RunResult run = run_cli(dir, {"verify", points, off});
     INFO(text << run.out << run.err);
     CHECK(run.exit_code == 1);
     CHECK(run.out.find("has no reverse edge") != std::string::npos);
@@ -608,7 +541,7 @@ TEST_CASE("verify: cli reports a broken hull with exit status 1") {
     text = good;
     text.replace(text.find("\n1 1 1\n"), 7, "\n1 1 1.5\n");
     write_text(off, text);
-    run = run_hullkit(dir, {"verify", points, off});
+    run = run_cli(dir, {"verify", points, off});
     INFO(text << run.out);
     CHECK(run.exit_code == 1);
     CHECK(run.out.find("(1 1 1.5) is not one of the input points") != std::string::npos);
@@ -616,41 +549,41 @@ TEST_CASE("verify: cli reports a broken hull with exit status 1") {
     // The hull of other points: point 8 is outside.
     write_text(off, good);
     write_text(points, points_text(cube_corners()) + "0.5 0.5 1.25\n");
-    run = run_hullkit(dir, {"verify", points, off});
+    run = run_cli(dir, {"verify", points, off});
     INFO(run.out);
     CHECK(run.exit_code == 1);
     CHECK(run.out.find("point 8 (0.5 0.5 1.25) is outside the hull") != std::string::npos);
 }
 
 TEST_CASE("verify: cli usage and input errors exit 2 with one line") {
-    ScratchDir dir;
+    TempDir dir("hullkit-verify");
     const std::string points = dir.file("points.txt"), off = dir.file("hull.off");
     write_text(points, points_text(kTetra));
     write_text(off, "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 7\n");
-    Run run = run_hullkit(dir, {"verify", points, off});
+    RunResult run = run_cli(dir, {"verify", points, off});
     CHECK(run.exit_code == 2);
     CHECK(run.out.empty());
     CHECK(run.err.rfind("hullkit: " + off + ":7:", 0) == 0);
     CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
 
-    const std::string malformed = std::string(HULLKIT_TEST_DATA) + "/malformed-line3.txt";
-    run = run_hullkit(dir, {"verify", malformed, off});
+    const std::string malformed = data_path("malformed-line3.txt");
+    run = run_cli(dir, {"verify", malformed, off});
     CHECK(run.exit_code == 2);
     CHECK(run.err == "hullkit: " + malformed + ":3: expected 3 coordinates, got 2\n");
 
-    run = run_hullkit(dir, {"verify", points});
+    run = run_cli(dir, {"verify", points});
     CHECK(run.exit_code == 2);
     CHECK(run.err == "hullkit: verify needs two files, POINTS and HULL.off, got 1 (try 'hullkit verify --help')\n");
-    run = run_hullkit(dir, {"verify", "--fast", points, off});
+    run = run_cli(dir, {"verify", "--fast", points, off});
     CHECK(run.exit_code == 2);
     CHECK(run.err == "hullkit: unknown option \"--fast\" (try 'hullkit verify --help')\n");
-    run = run_hullkit(dir, {"verify", points, dir.file("missing.off")});
+    run = run_cli(dir, {"verify", points, dir.file("missing.off")});
     CHECK(run.exit_code == 2);
     CHECK(run.err.rfind("hullkit: " + dir.file("missing.off") + ": cannot open", 0) == 0);
 
-    run = run_hullkit(dir, {"verify", "--help"});
+    run = run_cli(dir, {"verify", "--help"});
     CHECK(run.exit_code == 0);
     CHECK(run.out.rfind("Usage: hullkit verify POINTS HULL.off", 0) == 0);
-    run = run_hullkit(dir, {"--help"});
+    run = run_cli(dir, {"--help"});
     CHECK(run.out.find("\n  verify      ") != std::string::npos);
 }
