@@ -255,8 +255,11 @@ public:
                       "consistently oriented surface");
             return;
         }
-        const bool surface = check_fans() & check_connected() & check_euler();
-        if (!surface) {
+        // All three run (each reports its own problems) before the verdict.
+        const bool fans = check_fans();
+        const bool connected = check_connected();
+        const bool euler = check_euler();
+        if (!(fans && connected && euler)) {
             out_.note("convexity and containment were not checked: the triangles do not form a sphere");
             return;
         }
