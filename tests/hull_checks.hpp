@@ -38,12 +38,12 @@ inline int exact_orient3d(const double* a, const double* b, const double* c, con
     double largest = 0.0;
     for (const double* p : in)
         for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(p[k]));
-    int exponent = 0;
-    std::frexp(largest, &exponent);
+    int exponent = 0;  // unit-scale data (the common case) is left alone
+    if (largest < 0x1p-100 || largest > 0x1p+100) std::frexp(largest, &exponent);
     double s[4][3];
     for (int i = 0; i < 4; ++i) {
         for (int k = 0; k < 3; ++k) {
-            s[i][k] = std::ldexp(in[i][k], -exponent);
+            s[i][k] = exponent == 0 ? in[i][k] : std::ldexp(in[i][k], -exponent);
             // A coordinate that would lose bits to underflow: no shortcut.
             if (in[i][k] != 0.0 && std::fabs(s[i][k]) < 1e-250) return rational_orient3d(a, b, c, d);
         }

@@ -56,10 +56,10 @@ TEST_CASE("quickhull: large clouds exercise the interior box and the spatial ord
         const auto hull = quickhull(xyz);
         require_valid(xyz, hull);
     }
-    const auto sphere = hullkit_test::random_cloud(Cloud::Sphere, 20000, 43);
+    const auto sphere = hullkit_test::random_cloud(Cloud::Sphere, 6000, 43);
     const auto hull = quickhull(sphere);
     require_valid(sphere, hull);
-    CHECK(hull.vertices.size() == 20000);
+    CHECK(hull.vertices.size() == 6000);
 }
 
 TEST_CASE("quickhull: a cube's faces are merged, its face centres and edge midpoints are not vertices") {

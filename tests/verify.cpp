@@ -423,7 +423,8 @@ TEST_CASE("verify: Hull fields that do not match the triangles are caught") {
 }
 
 TEST_CASE("verify: broken lower-dimensional results are caught") {
-    std::vector<double> square = {0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0, 1, 1, 0, 1, 0, 0};
+    // Seen from +z (hull()'s side for this plane) the corners 0 3 2 1 run counter-clockwise.
+    std::vector<double> square = {0, 0, 0, 2, 0, 0, 2, -2, 0, 0, -2, 0, 1, -1, 0, 1, 0, 0};
     const Hull polygon = compute(square);
     REQUIRE(polygon.dimension == 2);
     REQUIRE(polygon.vertices == std::vector<std::uint32_t>{0, 3, 2, 1});  // counter-clockwise about the normal
@@ -446,12 +447,12 @@ TEST_CASE("verify: broken lower-dimensional results are caught") {
     auto moved = square;
     moved[3 * 4 + 2] = 0x1p-400;  // point 4 leaves the plane, by a tiny amount (rescaled for the check)
     CHECK(hullkit::verify(moved, polygon).problems ==
-          std::vector<std::string>{"point 4 (1 1 3.8725919148493183e-121) is not in the polygon's plane"});
+          std::vector<std::string>{"point 4 (1 -1 3.8725919148493183e-121) is not in the polygon's plane"});
     moved[3 * 4 + 2] = 1e-300;  // more than 2^585 from the other coordinates: cannot be checked
     CHECK(mentions(hullkit::verify(moved, polygon), "span more than a factor of 2^585"));
     moved = square;
-    moved[3 * 5 + 1] = -0.5;  // point 5 leaves the polygon, in its plane
-    CHECK(mentions(hullkit::verify(moved, polygon), "point 5 (1 -0.5 0) is outside the polygon: beyond its edge 1-0"));
+    moved[3 * 5 + 1] = 0.5;  // point 5 leaves the polygon, in its plane
+    CHECK(mentions(hullkit::verify(moved, polygon), "point 5 (1 0.5 0) is outside the polygon: beyond its edge 1-0"));
 
     const std::vector<double> line = {0, 0, 0, 4, 4, 4, 1, 1, 1};
     const Hull segment = compute(line);

@@ -57,18 +57,28 @@ Simplex find_simplex(PointSpan points) {
     if (n == 0) return s;
     auto at = [&](std::uint32_t i) { return vec3(points[i]); };
 
-    // The lowest and highest point along each axis (lowest index on ties).
-    std::uint32_t extreme[6] = {0, 0, 0, 0, 0, 0};
-    for (std::uint32_t i = 1; i < n; ++i) {
+    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box.
+    double best_value[14];
+    for (int k = 0; k < 14; ++k) best_value[k] = -std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) s.lo[axis] = s.hi[axis] = points[0][axis];
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const double* p = points[i];
+        const double value[7] = {p[0], p[1], p[2], p[0] + p[1] + p[2], p[0] + p[1] - p[2], p[0] - p[1] + p[2], p[0] - p[1] - p[2]};
+        for (int k = 0; k < 7; ++k) {
+            if (value[k] > best_value[2 * k]) best_value[2 * k] = value[k], s.extreme[2 * k] = i;
+            if (-value[k] > best_value[2 * k + 1]) best_value[2 * k + 1] = -value[k], s.extreme[2 * k + 1] = i;
+        }
         for (int axis = 0; axis < 3; ++axis) {
-            if (points[i][axis] < points[extreme[2 * axis]][axis]) extreme[2 * axis] = i;
-            if (points[i][axis] > points[extreme[2 * axis + 1]][axis]) extreme[2 * axis + 1] = i;
+            s.lo[axis] = std::min(s.lo[axis], p[axis]);
+            s.hi[axis] = std::max(s.hi[axis], p[axis]);
         }
     }
-    // The farthest pair of them (rounded distances choose; equality of points is exact).
+    const std::uint32_t* extreme = s.extreme;
+
+    // The farthest pair of extremes (rounded distances choose; equality of points is exact).
     double best = -1.0;
-    for (int i = 0; i < 6; ++i) {
-        for (int j = i + 1; j < 6; ++j) {
+    for (int i = 0; i < 14; ++i) {
+        for (int j = i + 1; j < 14; ++j) {
             const glm::dvec3 d = at(extreme[j]) - at(extreme[i]);
             if (const double d2 = glm::dot(d, d); d2 > best) {
                 best = d2;
@@ -86,15 +96,15 @@ Simplex find_simplex(PointSpan points) {
     }
     s.dimension = 1;
 
-    // The point farthest from the line a-b, else any point off it.
+    // The extreme farthest from the line a-b, else the first point off it (exactly).
     const glm::dvec3 pa = at(s.p[0]);
     const glm::dvec3 ab = at(s.p[1]) - pa;
     best = -1.0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const glm::dvec3 c = glm::cross(ab, at(i) - pa);
-        if (const double c2 = glm::dot(c, c); c2 > best) {
+    for (std::uint32_t e : s.extreme) {
+        const glm::dvec3 c = glm::cross(ab, at(e) - pa);
+        if (const double c2 = glm::dot(c, c); c2 > best || (c2 == best && e < s.p[2])) {
             best = c2;
-            s.p[2] = i;
+            s.p[2] = e;
         }
     }
     if (collinear3d(a, b, points[s.p[2]])) {
@@ -105,14 +115,14 @@ Simplex find_simplex(PointSpan points) {
     }
     s.dimension = 2;
 
-    // The point farthest from the plane a, b, c, else any point off it.
+    // The extreme farthest from the plane a, b, c, else the first point off it (exactly).
     const double* c = points[s.p[2]];
     const glm::dvec3 normal = glm::cross(ab, at(s.p[2]) - pa);
     best = -1.0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (const double h = std::fabs(glm::dot(normal, at(i) - pa)); h > best) {
+    for (std::uint32_t e : s.extreme) {
+        if (const double h = std::fabs(glm::dot(normal, at(e) - pa)); h > best || (h == best && e < s.p[3])) {
             best = h;
-            s.p[3] = i;
+            s.p[3] = e;
         }
     }
     if (orient3d(a, b, c, points[s.p[3]]) == 0) {
@@ -132,40 +142,38 @@ namespace {
 using detail::Polygons;
 using detail::Simplex;
 
-/// Non-finite coordinates and too many points; else an ok() Hull.
-Hull check_input(PointSpan points) {
+/// Non-finite coordinates and too many points; else an ok() Hull and, in *exponent, the power of
+/// two that brings the coordinates into the predicates' exact range (0 if they are in it). Fails
+/// when no single power of two can.
+Hull check_input(PointSpan points, int* exponent) {
     if (points.count > std::numeric_limits<std::uint32_t>::max()) {
         return detail::failure("too many points: " + std::to_string(points.count) +
                                " (at most 4294967295 fit 32-bit indices)");
     }
+    double largest = 0.0;
+    double smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < points.count; ++i) {
         for (int axis = 0; axis < 3; ++axis) {
             const double value = points[i][axis];
-            if (!std::isfinite(value)) {
+            const double magnitude = std::fabs(value);
+            if (!(magnitude <= std::numeric_limits<double>::max())) {  // inf or nan
                 static const char* const kAxis[] = {"x", "y", "z"};
                 const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
                 return detail::failure("point " + std::to_string(i) + " has a non-finite " + kAxis[axis] +
                                            " coordinate (" + what + ")",
                                        static_cast<std::int64_t>(i));
             }
+            largest = std::max(largest, magnitude);
+            if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
         }
     }
-    return Hull{};
-}
-
-/// The power of two that brings the coordinates into the predicates' exact range (0 if they are
-/// in it); false when no single power of two can.
-bool scale_exponent(PointSpan points, int* exponent) {
-    double largest = 0.0;
-    double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < 3 * points.count; ++i) {
-        const double magnitude = std::fabs(points.xyz[i]);
-        largest = std::max(largest, magnitude);
-        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
-    }
     *exponent = 0;
-    if (predicates_range_ok(largest, smallest)) return true;
-    return predicates_scale_exponent(largest, smallest, exponent);
+    if (!predicates_range_ok(largest, smallest) && !predicates_scale_exponent(largest, smallest, exponent)) {
+        return detail::failure(
+            "coordinates span too many orders of magnitude: the nonzero |coordinates| must fit within "
+            "a factor of 2^585 (about 1e176) of each other for exact predicates");
+    }
+    return Hull{};
 }
 
 /// Rotates each polygon to start at its lowest index.
@@ -187,6 +195,12 @@ void fill_from_polygons(std::size_t point_count, const Polygons& faces, Hull& hu
         for (std::size_t k = 1; k + 1 < m; ++k) {
             hull.triangles.insert(hull.triangles.end(), {corners[0], corners[k], corners[k + 1]});
         }
+    }
+    if (faces.vertices.size() < point_count / 16) {  // few corners: sorting them is cheaper
+        hull.vertices = faces.vertices;
+        std::sort(hull.vertices.begin(), hull.vertices.end());
+        hull.vertices.erase(std::unique(hull.vertices.begin(), hull.vertices.end()), hull.vertices.end());
+        return;
     }
     std::vector<std::uint8_t> is_vertex(point_count, 0);
     for (std::uint32_t v : faces.vertices) is_vertex[v] = 1;
@@ -222,10 +236,15 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
         hull.vertices = {std::min(lo, hi), std::max(lo, hi)};
         return hull;
     }
-    // A convex polygon in the plane of the simplex's first three points.
+    // A convex polygon in the plane of the simplex's first three points, seen from the side where
+    // the normal's largest component is positive (so the orientation does not depend on which
+    // three points span the plane): the sign of that component is an exact orient2d.
+    std::uint32_t a = s.p[0], b = s.p[1], c = s.p[2];
+    int i = 0, j = 0;
+    if (detail::plane_projection(detail::ExactSides{}, points[a], points[b], points[c], &i, &j) < 0) std::swap(b, c);
     std::vector<std::uint32_t> all(points.count), polygon;
     std::iota(all.begin(), all.end(), 0u);
-    detail::convex_polygon(points, detail::ExactSides{}, std::move(all), s.p[0], s.p[1], s.p[2], polygon);
+    detail::convex_polygon(points, detail::ExactSides{}, std::move(all), a, b, c, polygon);
     Polygons faces;
     faces.add(polygon.begin(), polygon.end());
     rotate_to_lowest(faces);
@@ -234,8 +253,8 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
     double volume = 0.0, area = 0.0;
     detail::measure(points, faces, &volume, &area);
     unscale(exponent, 0.0, area, hull);  // flat: no volume, the area of one side
-    const glm::dvec3 a = detail::vec3(points[s.p[0]]);
-    const glm::dvec3 normal = glm::cross(detail::vec3(points[s.p[1]]) - a, detail::vec3(points[s.p[2]]) - a);
+    const glm::dvec3 origin = detail::vec3(points[a]);
+    const glm::dvec3 normal = glm::cross(detail::vec3(points[b]) - origin, detail::vec3(points[c]) - origin);
     const glm::dvec3 unit = glm::normalize(normal);
     std::copy(&unit.x, &unit.x + 3, hull.normal);
     return hull;
@@ -244,17 +263,12 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
 }  // namespace
 
 Hull hull(PointSpan input, const HullOptions& options) {
-    if (Hull invalid = check_input(input); !invalid.ok()) return invalid;
+    int exponent = 0;
+    if (Hull invalid = check_input(input, &exponent); !invalid.ok()) return invalid;
     const bool seed = options.side_test == SideTest::Seed;
     if (seed && options.algorithm != Algorithm::Giftwrap)
         return detail::failure("the seed's epsilon side tests exist for gift wrapping only");
 
-    int exponent = 0;
-    if (!scale_exponent(input, &exponent)) {
-        return detail::failure(
-            "coordinates span too many orders of magnitude: the nonzero |coordinates| must fit within "
-            "a factor of 2^585 (about 1e176) of each other for exact predicates");
-    }
     std::vector<double> scaled;
     PointSpan points = input;
     if (exponent != 0) {  // multiplying by a power of two is exact

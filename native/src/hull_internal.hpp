@@ -22,10 +22,16 @@ struct Polygons {
     }
 };
 
-/// Four points spanning the cloud's affine hull: `dimension` + 1 of them are meaningful.
+/// Four points spanning the cloud's affine hull (`dimension` + 1 of them are meaningful), found
+/// among the points extreme in 14 directions, which are kept for the hull algorithms.
 struct Simplex {
     int dimension = -1;
     std::uint32_t p[4] = {0, 0, 0, 0};
+    /// The points with the largest and the smallest x, y, z, x+y+z, x+y-z, x-y+z, x-y-z (in that
+    /// order, largest first; lowest index on ties), and the bounding box.
+    std::uint32_t extreme[14] = {};
+    double lo[3] = {0.0, 0.0, 0.0};
+    double hi[3] = {0.0, 0.0, 0.0};
 };
 
 /// A failed Hull carrying `message` (and the index of the point to blame, if any).

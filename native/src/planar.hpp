@@ -21,7 +21,7 @@ int plane_projection(const Sides& sides, const double* a, const double* b, const
     // Drop the axis along which the normal is largest (rounded); the exact test confirms it.
     const glm::dvec3 normal = glm::abs(glm::cross(vec3(b) - vec3(a), vec3(c) - vec3(a)));
     int order[3] = {0, 1, 2};
-    std::sort(order, order + 3, [&](int p, int q) { return normal[p] > normal[q]; });
+    std::stable_sort(order, order + 3, [&](int p, int q) { return normal[p] > normal[q]; });  // ties: x, y, z
     for (int dropped : order) {
         *i = (dropped + 1) % 3;
         *j = (dropped + 2) % 3;

@@ -383,27 +383,9 @@ void spatial_order(PointSpan points, std::vector<Index>& ids) {
 std::vector<Index> candidates(PointSpan points, const Simplex& simplex) {
     const auto n = static_cast<Index>(points.count);
     std::vector<Index> all;
-    // The extremes along the axes and the four diagonals x+-y+-z, both ways.
-    Index extreme[14];
-    double best[14];
-    for (int k = 0; k < 14; ++k) {
-        extreme[k] = 0;
-        best[k] = -std::numeric_limits<double>::infinity();
-    }
-    double lo[3], hi[3];
-    for (int axis = 0; axis < 3; ++axis) lo[axis] = hi[axis] = points[0][axis];
-    for (Index i = 0; i < n; ++i) {
-        const double* p = points[i];
-        const double value[7] = {p[0], p[1], p[2], p[0] + p[1] + p[2], p[0] + p[1] - p[2], p[0] - p[1] + p[2], p[0] - p[1] - p[2]};
-        for (int k = 0; k < 7; ++k) {
-            if (value[k] > best[2 * k]) best[2 * k] = value[k], extreme[2 * k] = i;
-            if (-value[k] > best[2 * k + 1]) best[2 * k + 1] = -value[k], extreme[2 * k + 1] = i;
-        }
-        for (int axis = 0; axis < 3; ++axis) {
-            lo[axis] = std::min(lo[axis], p[axis]);
-            hi[axis] = std::max(hi[axis], p[axis]);
-        }
-    }
+    const Index* extreme = simplex.extreme;
+    const double* lo = simplex.lo;
+    const double* hi = simplex.hi;
     auto everything = [&] {
         all.resize(n);
         for (Index i = 0; i < n; ++i) all[i] = i;

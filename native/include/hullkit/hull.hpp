@@ -60,7 +60,9 @@ struct HullOptions {
 ///   3   a polytope: `triangles` cover its boundary, counter-clockwise seen from outside;
 ///       `vertices` are its extreme points, ascending.
 ///   2   a convex polygon: `vertices` are its corners in counter-clockwise order seen from the side
-///       `normal` points to; `triangles` fan it in the same orientation; volume 0, area its area.
+///       `normal` points to (the side where the normal's largest component, x before y before z
+///       on ties, is positive);
+///       `triangles` fan it in the same orientation; volume 0, area its area.
 ///   1   a segment: `vertices` are its two end points; no triangles.
 ///   0   a single point (possibly repeated): `vertices` holds it; no triangles.
 ///  -1   no points at all.
