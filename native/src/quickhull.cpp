@@ -90,12 +90,13 @@ public:
             const Face& face = faces_[f];
             if (!face.alive) continue;
             std::copy(face.v, face.v + 3, &triangles[3 * std::size_t{number[f]}]);
+            const Plane plane = plane_of(static_cast<Index>(f));
             for (int k = 0; k < 3; ++k) {
                 const Index g = face.twin[k] / 3;
                 if (g < f) continue;  // each pair once
                 const Index apex = faces_[g].v[(face.twin[k] % 3 + 2) % 3];  // g's corner off the shared edge
                 double h;
-                if (side(plane_of(static_cast<Index>(f)), apex, &h) == 0) coplanar.push_back({number[f], number[g]});
+                if (side(plane, apex, &h) == 0) coplanar.push_back({number[f], number[g]});
             }
         }
         return true;
