@@ -9,7 +9,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "hullkit/hull.hpp"
@@ -59,27 +58,6 @@ std::string read_input(const std::string& path) {
     return text;
 }
 
-struct Key {
-    double xyz[3];
-    bool operator==(const Key& other) const {
-        return xyz[0] == other.xyz[0] && xyz[1] == other.xyz[1] && xyz[2] == other.xyz[2];
-    }
-};
-
-struct KeyHash {
-    std::size_t operator()(const Key& key) const {
-        std::uint64_t h = 0x9e3779b97f4a7c15ull;
-        for (double c : key.xyz) {
-            std::uint64_t bits;
-            std::memcpy(&bits, &c, sizeof bits);
-            h = (h ^ bits) * 0x100000001b3ull;
-            h ^= h >> 29;
-        }
-        return static_cast<std::size_t>(h);
-    }
-};
-
-Key key_of(const double* p) { return Key{{p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}}; }  // -0 == +0
 
 std::string coordinates(const double* p) {
     return hullkit::format_double(p[0]) + " " + hullkit::format_double(p[1]) + " " + hullkit::format_double(p[2]);
@@ -104,19 +82,13 @@ int verify_files(const std::string& points_path, const std::string& hull_path) {
 
     // Each OFF vertex is the input point with the same coordinates (the lowest index of equals).
     const std::size_t m = mesh.point_count();
-    std::unordered_map<Key, std::uint32_t, KeyHash> wanted;  // coordinates -> input index (or unset)
-    constexpr std::uint32_t kUnset = ~std::uint32_t{0};
-    wanted.reserve(2 * m + 1);
-    for (std::size_t k = 0; k < m; ++k) wanted.emplace(key_of(&mesh.xyz[3 * k]), kUnset);
-    for (std::size_t i = 0; i < points.count(); ++i) {
-        auto it = wanted.find(key_of(&points.xyz[3 * i]));
-        if (it != wanted.end() && it->second == kUnset) it->second = static_cast<std::uint32_t>(i);
-    }
+    const std::vector<std::int64_t> found =
+        hullkit::match_points(hullkit::PointSpan(points.xyz), hullkit::PointSpan(mesh.xyz.data(), m));
     std::vector<std::uint32_t> input_index(m);
     std::vector<std::string> unmatched;
     for (std::size_t k = 0; k < m; ++k) {
-        input_index[k] = wanted.at(key_of(&mesh.xyz[3 * k]));
-        if (input_index[k] == kUnset) {
+        input_index[k] = static_cast<std::uint32_t>(found[k]);
+        if (found[k] < 0) {
             unmatched.push_back(hull_path + ": OFF vertex " + std::to_string(k) + " (" + coordinates(&mesh.xyz[3 * k]) +
                                 ") is not one of the input points");
         }

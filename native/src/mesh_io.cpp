@@ -13,6 +13,9 @@
 #include <string_view>
 #include <utility>
 #include <system_error>
+#include <unordered_map>
+
+#include "point_key.hpp"
 
 namespace hullkit {
 namespace {
@@ -783,6 +786,19 @@ std::string format_json_number(double value) {
     std::string out;
     append_json_number(out, value);
     return out;
+}
+
+std::vector<std::int64_t> match_points(PointSpan points, PointSpan wanted) {
+    std::unordered_map<detail::PointKey, std::int64_t, detail::PointKeyHash> index;  // coordinates -> input index
+    index.reserve(2 * wanted.count + 1);
+    for (std::size_t k = 0; k < wanted.count; ++k) index.emplace(detail::key_of(wanted[k]), -1);
+    for (std::size_t i = 0; i < points.count; ++i) {
+        auto it = index.find(detail::key_of(points[i]));
+        if (it != index.end() && it->second < 0) it->second = static_cast<std::int64_t>(i);
+    }
+    std::vector<std::int64_t> found(wanted.count);
+    for (std::size_t k = 0; k < wanted.count; ++k) found[k] = index.at(detail::key_of(wanted[k]));
+    return found;
 }
 
 }  // namespace hullkit

@@ -90,4 +90,9 @@ std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull);
 std::string format_double(double value);
 std::string format_json_number(double value);
 
+/// For each of the `wanted` points, the lowest index of an input point with exactly the same
+/// coordinates (-0 and +0 alike), or -1 when there is none. Used to tie the vertices of a hull file
+/// back to the input points.
+std::vector<std::int64_t> match_points(PointSpan points, PointSpan wanted);
+
 }  // namespace hullkit
