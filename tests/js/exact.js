@@ -1,3 +1,5 @@
+import { mulberry32 } from '../../web/distributions.js';
+
 // Exact geometry for the JS tests, independent of hullkit: every double is a rational with a
 // power-of-two denominator, so scaling by a common power of two makes all coordinates BigInts.
 
@@ -64,20 +66,11 @@ export function hullProblems(xyz, hull) {
   return problems;
 }
 
-/** Seeded uniform numbers in [0, 1) (mulberry32). */
-export function seededRandom(seed) {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** Seeded uniform numbers in [0, 1): the page's generator. */
+export { mulberry32 as seededRandom };
 
 export function randomBall(n, seed) {
-  const random = seededRandom(seed);
+  const random = mulberry32(seed);
   const xyz = new Float64Array(3 * n);
   for (let i = 0; i < n; ) {
     const p = [random() * 2 - 1, random() * 2 - 1, random() * 2 - 1];
