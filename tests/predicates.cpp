@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "hull_checks.hpp"
+
 using hullkit::collinear3d;
 using hullkit::kPredicateMaxMagnitude;
 using hullkit::kPredicateMinMagnitude;
@@ -37,26 +39,13 @@ int oracle_orient2d(double ax, double ay, double bx, double by, double cx, doubl
     return sgn(det);
 }
 
-std::array<mpq_class, 3> oracle_cross(const P3& a, const P3& b, const P3& c) {
-    std::array<mpq_class, 3> u, v;
-    for (int i = 0; i < 3; ++i) {
-        u[i] = mpq_class(b[i]) - mpq_class(a[i]);
-        v[i] = mpq_class(c[i]) - mpq_class(a[i]);
-    }
-    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-/// The definition: sign of ((b-a) x (c-a)) . (d-a).
+/// The definition: sign of ((b-a) x (c-a)) . (d-a), in rationals (shared with the hull checks).
 int oracle_orient3d(const P3& a, const P3& b, const P3& c, const P3& d) {
-    const auto n = oracle_cross(a, b, c);
-    mpq_class dot = 0;
-    for (int i = 0; i < 3; ++i) dot += n[i] * (mpq_class(d[i]) - mpq_class(a[i]));
-    return sgn(dot);
+    return hullkit_test::rational_orient3d(a.data(), b.data(), c.data(), d.data());
 }
 
 int oracle_collinear3d(const P3& a, const P3& b, const P3& c) {
-    const auto n = oracle_cross(a, b, c);
-    return sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0 ? 1 : 0;
+    return hullkit_test::exact_collinear(a.data(), b.data(), c.data()) ? 1 : 0;
 }
 
 // ---- helpers ----
