@@ -10,12 +10,14 @@ debian_packages=(
   emscripten              # the wasm build (emcc, emcmake)
   catch2 libgmp-dev       # C++ tests (GMP: exact rational checks)
   libglm-dev              # vector math
+  nlohmann-json3-dev      # scene JSON (route checking)
+  libcli11-dev            # command-line parsing
   qhull-bin               # rbox/qconvex: test inputs and cross-checks
   chromium                # browser tests (driven by playwright-core)
 )
 
 if [ "${1:-}" = bench ]; then
-  debian_packages+=(libqhull-dev libcgal-dev libmpfr-dev)
+  debian_packages+=(libqhull-dev libcgal-dev libmpfr-dev libfcl-dev)
 fi
 
 missing=()

@@ -1,6 +1,11 @@
 // hullkit for JavaScript: the WebAssembly build of the C++ core behind plain functions that take
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
+import { HullkitError, checkOptions, copyIn, toFloat64, toUint32 } from './internal.js';
+import { delaunay, delaunayFind, delaunayVoronoi, DELAUNAY_ALGORITHMS } from './delaunay.js';
+import { checkRoute, RouteChecker } from './route.js';
+
+export { HullkitError };
 
 const ALGORITHMS = ['quickhull', 'giftwrap'];
 const EPSILONS = ['exact', 'seed'];
@@ -23,16 +28,18 @@ export default async function createHullkit() {
   return Object.freeze({
     hull: (xyz, options) => hull(core, xyz, options),
     verify: (xyz, result) => verify(core, xyz, result),
+    delaunay: (xy, options) => delaunay(core, xy, options),
+    find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
+    voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
+    checkRoute: (scene, options) => checkRoute(core, scene, options),
+    RouteChecker: class extends RouteChecker {
+      constructor(scene) {
+        super(core, scene);
+      }
+    },
     algorithms: Object.freeze([...ALGORITHMS]),
+    delaunayAlgorithms: Object.freeze([...DELAUNAY_ALGORITHMS]),
   });
-}
-
-export class HullkitError extends Error {
-  constructor(message, { pointIndex } = {}) {
-    super(message);
-    this.name = 'HullkitError';
-    if (pointIndex !== undefined && pointIndex >= 0) this.pointIndex = pointIndex;
-  }
 }
 
 function hull(core, xyz, options = {}) {
@@ -78,15 +85,6 @@ function hull(core, xyz, options = {}) {
   }
 }
 
-/** Copies `array` (a typed array) into a fresh malloc'ed block; returns its address. */
-function copyIn(core, array, where) {
-  const bytes = Math.max(array.byteLength, 8);
-  const address = core._malloc(bytes);
-  if (!address) throw new HullkitError(`${where}: cannot allocate ${bytes} bytes`);
-  // HEAP views are re-read after malloc: memory growth replaces the buffer behind old views.
-  new array.constructor(core.HEAPU8.buffer, address, array.length).set(array);
-  return address;
-}
 
 function verify(core, xyz, result) {
   const points = toFloat64(xyz, 'verify');
@@ -111,42 +109,5 @@ function verify(core, xyz, result) {
   }
 }
 
-function toUint32(values, where) {
-  if (values instanceof Uint32Array) return values;
-  if (values == null || typeof values.length !== 'number' || typeof values === 'string') {
-    throw new TypeError(`${where} must be a Uint32Array or an array of indices`);
-  }
-  for (let i = 0; i < values.length; i++) {
-    const v = values[i];
-    if (!Number.isInteger(v) || v < 0 || v > 0xffffffff) throw new HullkitError(`${where}: entry ${i} (${v}) is not a valid index`);
-  }
-  return Uint32Array.from(values);
-}
 
-function toFloat64(xyz, where) {
-  let points = xyz;
-  if (!(xyz instanceof Float64Array)) {
-    if (xyz == null || typeof xyz.length !== 'number' || typeof xyz === 'string') {
-      throw new TypeError(`${where}: points must be a Float64Array (or an array of numbers) x0 y0 z0 x1 y1 z1 ...`);
-    }
-    points = Float64Array.from(xyz);
-  }
-  if (points.length % 3 !== 0) {
-    throw new HullkitError(`${where}: ${points.length} coordinates is not a whole number of 3D points`);
-  }
-  if (points.length / 3 > 0xffffffff) {
-    throw new HullkitError(`${where}: too many points (${points.length / 3}), at most 4294967295`);
-  }
-  return points;
-}
 
-function checkOptions(options, known, where) {
-  if (options === undefined || options === null) return {};
-  if (typeof options !== 'object') throw new TypeError(`${where}: options must be an object`);
-  for (const key of Object.keys(options)) {
-    if (!known.includes(key)) {
-      throw new HullkitError(`${where}: unknown option "${key}" (known: ${known.join(', ')})`);
-    }
-  }
-  return options;
-}

@@ -4,6 +4,8 @@
 // memory). Every failure prints exactly one line "hullkit: ..." on stderr.
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_io.hpp"
+#include "delaunay_command.hpp"
+#include "route_command.hpp"
 #include "verify_command.hpp"
 
 #include <cerrno>
@@ -31,8 +33,11 @@ const char* const kMainUsage =
     R"(Usage: hullkit <command> [options]
 
 Commands:
-  hull        compute the convex hull of a 3D point set
-  verify      check exactly that an OFF file is the convex hull of a point set
+  hull             compute the convex hull of a 3D point set
+  verify           check exactly that an OFF file is the convex hull of a point set
+  delaunay         Delaunay triangulation of 2D points (by lifting to a paraboloid)
+  verify-delaunay  check exactly that an OFF file is a Delaunay triangulation
+  route            check a traverse's route of straight legs against obstacles
 
 Options:
   -h, --help  show this help
@@ -306,6 +311,9 @@ int run(int argc, char** argv) {
     }
     if (command == "hull") return run_hull(std::move(rest));
     if (command == "verify") return hullkit_cli::run_verify(rest);
+    if (command == "delaunay") return hullkit_cli::run_delaunay(rest);
+    if (command == "verify-delaunay") return hullkit_cli::run_verify_delaunay(rest);
+    if (command == "route") return hullkit_cli::run_route(rest);
     if (!command.empty() && command[0] == '-') {
         throw CliError("unknown option \"" + command + "\" (try 'hullkit --help')");
     }

@@ -1,0 +1,127 @@
+// hullkit: Delaunay triangulation of 2D points by lifting to the paraboloid z = x^2 + y^2.
+//
+// The Delaunay triangulation is the projection of the lower convex hull of the lifted points
+// (the seed document's last section). "Is point d below the lifted plane of triangle a, b, c" is
+// exactly the 2D in-circle test, so every decision here is made by the exact predicates
+// orient2d and incircle on the original coordinates; no rounded lifted z decides anything.
+//
+// Output is compatible with delaunator (npm): `triangles` as index triples, `halfedges` with -1 on
+// the hull, `hull` as a cycle of indices; orientation as delaunator's, see Delaunay below.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hullkit {
+
+/// A read-only view of `count` 2D points stored as 2*count doubles: x0 y0 x1 y1 ...
+/// The caller keeps the storage alive while the view is in use; nothing is copied.
+struct PointSpan2 {
+    const double* xy = nullptr;
+    std::size_t count = 0;
+
+    PointSpan2() = default;
+    PointSpan2(const double* xy_, std::size_t count_) : xy(xy_), count(count_) {}
+    /// View of a flat vector; a trailing odd coordinate is ignored (callers that accept user data
+    /// check the size first).
+    PointSpan2(const std::vector<double>& flat) : xy(flat.data()), count(flat.size() / 2) {}
+
+    const double* operator[](std::size_t i) const { return xy + 2 * i; }
+};
+
+enum class DelaunayAlgorithm {
+    Incremental,  ///< dedicated incremental insertion in a space-filling-curve order (default)
+    Giftwrap,     ///< the seed's gift wrapping on the lifted points: O(n^2), for teaching and checking
+};
+
+struct DelaunayOptions {
+    DelaunayAlgorithm algorithm = DelaunayAlgorithm::Incremental;
+    /// Also report the Delaunay polygons (Delaunay::polygon_offsets / polygon_vertices): the lower
+    /// faces of the lifted hull before triangulation (a square grid gives squares).
+    bool merge_cocircular = false;
+};
+
+/// A Delaunay triangulation. On failure `error` says what is wrong and, where one point is to
+/// blame, `error_point` is its index; the other fields are then empty.
+///
+/// Orientation (as delaunator): every triangle a, b, c is CLOCKWISE with the y axis pointing up,
+/// i.e. counter-clockwise on a screen whose y axis points down (orient2d(a, b, c) < 0).
+/// Half-edge e = 3t + k goes from triangles[e] to triangles[next(e)], next(e) = e % 3 == 2 ? e - 2 : e + 1;
+/// halfedges[e] is the opposite half-edge in the neighbouring triangle, or -1 on the hull.
+///
+/// Cocircular points (square grids, regular polygons): the Delaunay polygons are unique; each is
+/// triangulated by one documented rule that every algorithm shares (see delaunay.cpp / README), so
+/// every algorithm returns identical triangles, and no triangle has zero area.
+///
+/// `dimension`: 2 when the distinct points span the plane; 1 when they are all collinear (no
+/// triangles; `hull` holds the distinct points in order along the line); 0 one distinct point;
+/// -1 no points.
+struct Delaunay {
+    int dimension = -1;
+    std::vector<std::uint32_t> triangles;  ///< 3 indices per triangle into the input points
+    std::vector<std::int32_t> halfedges;   ///< one per entry of `triangles`; -1 on the hull
+    std::vector<std::uint32_t> hull;       ///< the convex hull as a cycle, in delaunator's orientation,
+                                           ///< including points that lie on hull edges
+    /// For each input point, the index of the point that represents it: itself, or the lowest index
+    /// with exactly the same coordinates (duplicates are merged, never dropped silently).
+    std::vector<std::uint32_t> representative;
+    std::size_t duplicate_count = 0;  ///< points whose representative is not themselves
+
+    /// With DelaunayOptions::merge_cocircular: polygon p is
+    /// polygon_vertices[polygon_offsets[p]] ... polygon_vertices[polygon_offsets[p + 1] - 1], in the
+    /// triangles' orientation, starting at its lowest index. Empty otherwise.
+    std::vector<std::uint32_t> polygon_offsets;
+    std::vector<std::uint32_t> polygon_vertices;
+
+    std::string error;              ///< empty on success
+    std::int64_t error_point = -1;  ///< index of the offending point, -1 if none
+
+    bool ok() const { return error.empty(); }
+    std::size_t triangle_count() const { return triangles.size() / 3; }
+};
+
+/// Triangulates `points` exactly. Fails only on a non-finite coordinate (naming the point), more
+/// than 2^31 - 1 points, or coordinates whose nonzero magnitudes span more than the exact
+/// predicates allow after a power-of-two rescaling.
+Delaunay delaunay(PointSpan2 points, const DelaunayOptions& options = {});
+
+/// "incremental", "giftwrap"
+const char* delaunay_algorithm_name(DelaunayAlgorithm algorithm);
+/// Parses an algorithm name; returns false (and leaves *out alone) for an unknown name.
+bool parse_delaunay_algorithm(const std::string& name, DelaunayAlgorithm* out);
+
+/// The input point nearest to (x, y) (exact ties: the lowest index), found by walking the
+/// triangulation from `start` (any point index; a good guess makes it fast). Returns -1 when the
+/// triangulation has no points.
+std::int64_t delaunay_find(PointSpan2 points, const Delaunay& triangulation, double x, double y,
+                           std::uint32_t start = 0);
+
+/// Voronoi cells clipped to the rectangle [xmin, xmax] x [ymin, ymax]: cell i is the polygon
+/// cell_xy[2*cell_offsets[i]] ... (x y pairs) up to cell_offsets[i + 1], counter-clockwise with y
+/// up; empty for duplicates and for points whose cell misses the rectangle. Built from the
+/// triangles' circumcentres.
+struct VoronoiCells {
+    std::vector<std::uint32_t> cell_offsets;  ///< point count + 1 entries
+    std::vector<double> cell_xy;
+};
+VoronoiCells delaunay_voronoi(PointSpan2 points, const Delaunay& triangulation, double xmin,
+                              double ymin, double xmax, double ymax);
+
+/// An exact check that `triangles` (triangle_count index triples) is a Delaunay triangulation of
+/// the distinct points of `points`: indices in range, every triangle clockwise (y up) and not
+/// degenerate, each undirected edge in at most two triangles with opposite directions, the
+/// boundary one convex cycle that is the convex hull, every distinct point used, the triangle count
+/// 2n - h - 2, and the exact empty-circle test on every interior edge.
+struct DelaunayVerifyReport {
+    bool ok = true;
+    std::vector<std::string> problems;  ///< one line each, at most a few dozen, then a count
+    std::size_t problem_count = 0;
+    std::size_t distinct_points = 0;
+    std::size_t hull_points = 0;
+};
+DelaunayVerifyReport verify_delaunay(PointSpan2 points, const std::uint32_t* triangles,
+                                     std::size_t triangle_count);
+
+}  // namespace hullkit

@@ -1,0 +1,125 @@
+// hullkit: route checking with swept traverses (the seed document's first paragraph).
+//
+// A traverse (one or more triangle meshes, its "parts") moves along a route of straight
+// translations; waypoint k to waypoint k + 1 is leg k. For each leg one check answers whether the
+// traverse stays more than `margin` away from every obstacle over the whole leg:
+//   broad phase   the convex hull of each part's vertices at both ends of the leg (everything the
+//                 part sweeps lies inside it): clear of every obstacle by more than the margin
+//                 means clear, with no false negatives by construction;
+//   narrow phase  where the broad phase hits, each triangle of the part sweeps the convex hull of
+//                 itself at both ends (a prism of at most 6 points); the part sweeps the union of
+//                 those plus its own volume at the start, so a non-convex part gives no false hit;
+//   first contact the smallest fraction of the leg at which the traverse comes within the margin,
+//                 bracketed in [lo, hi] with lo never after the true contact.
+// Intersection decisions use exact predicates; a method that cannot certify "clear" reports a hit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hullkit {
+
+/// A triangle mesh: points x0 y0 z0 x1 ... and 3 indices per triangle. Triangle soups and open
+/// surfaces are allowed; a closed mesh (every edge shared by exactly two triangles with opposite
+/// directions) also counts its inside.
+struct TriangleMesh {
+    std::string name;
+    std::vector<double> xyz;
+    std::vector<std::uint32_t> triangles;
+};
+
+/// What a route check needs: the traverse's parts, the obstacles, the waypoints (translation
+/// offsets applied to every traverse vertex) and the required clearance.
+struct Scene {
+    std::vector<TriangleMesh> parts;
+    std::vector<TriangleMesh> obstacles;
+    std::vector<double> route;  ///< waypoints, flat x y z; at least 2
+    double margin = 0.0;        ///< required clearance, >= 0
+};
+
+enum class LegStatus {
+    Clear,         ///< more than `margin` from every obstacle over the whole leg
+    Hit,           ///< comes within `margin` of an obstacle during the leg
+    StartOverlap,  ///< already within `margin` of an obstacle at the leg's start
+};
+
+/// "clear", "hit", "start-overlap"
+const char* leg_status_name(LegStatus status);
+
+struct LegReport {
+    LegStatus status = LegStatus::Clear;
+    /// Hit / StartOverlap: the obstacle, its triangle and the traverse part in contact.
+    /// Clear: the nearest obstacle over the leg (when clearance was computed), else -1.
+    std::int64_t obstacle = -1;
+    std::int64_t triangle = -1;
+    std::int64_t part = -1;
+    /// Hit: [lo, hi] brackets the first moment the traverse comes within the margin; hi - lo <= 1e-9
+    /// and lo is never after the true first contact. StartOverlap: [0, 0].
+    /// Clear: both are the fraction at which the minimum clearance occurs.
+    double fraction_lo = 0.0;
+    double fraction_hi = 0.0;
+    double position[3] = {0.0, 0.0, 0.0};  ///< the traverse offset at fraction_lo
+    /// Clear: the minimum distance over the leg, correct to 1e-9 relative (infinity without
+    /// obstacles; NaN when RouteOptions::clearance is off). Hit / StartOverlap: at most the margin.
+    double clearance = std::numeric_limits<double>::quiet_NaN();
+    /// With RouteOptions::samples = N > 0: what checking the traverse statically at N + 1 evenly
+    /// spaced poses (fractions 0, 1/N, ..., 1) finds: whether any pose is within the margin, and the
+    /// first such fraction (NaN when none is).
+    bool sampled_hit = false;
+    double sampled_fraction = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct RouteOptions {
+    /// Compute the clearance of clear legs (minimum distance, where it occurs and to what).
+    bool clearance = true;
+    /// Also run N-step discrete sampling per leg, for comparison (0: off).
+    std::uint32_t samples = 0;
+};
+
+struct RouteReport {
+    bool clear = true;  ///< every leg clear
+    double min_clearance = std::numeric_limits<double>::infinity();  ///< over all legs
+    std::vector<LegReport> legs;
+    double build_seconds = 0.0;  ///< preparing the scene (hulls, BVH) after reading it
+    double seconds = 0.0;        ///< checking all legs
+    std::string error;           ///< empty on success; then nothing in the report means anything
+
+    bool ok() const { return error.empty(); }
+};
+
+/// Keeps what a scene needs between checks: the parts' geometry and hulls, and the obstacles'
+/// bounding-volume hierarchy, built once. check() may be called many times (interactive dragging).
+class RouteChecker {
+public:
+    /// Builds the acceleration structures. A bad scene (an index out of range, a non-finite
+    /// coordinate, a negative or non-finite margin, no parts) leaves error() non-empty, naming the
+    /// part or obstacle and the triangle or point; check() then returns that error.
+    explicit RouteChecker(Scene scene);
+    ~RouteChecker();
+    RouteChecker(RouteChecker&&) noexcept;
+    RouteChecker& operator=(RouteChecker&&) noexcept;
+
+    const std::string& error() const;
+    const Scene& scene() const;
+    double build_seconds() const;
+
+    /// Checks `waypoint_count` waypoints (flat x y z) against the scene's obstacles with the
+    /// scene's margin. Fewer than 2 waypoints or a non-finite one is an error in the report.
+    RouteReport check(const double* route_xyz, std::size_t waypoint_count,
+                      const RouteOptions& options = {}) const;
+    /// Checks the scene's own route.
+    RouteReport check(const RouteOptions& options = {}) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// One-shot: builds a RouteChecker for `scene` and checks its route.
+RouteReport check_route(Scene scene, const RouteOptions& options = {});
+
+}  // namespace hullkit
