@@ -123,9 +123,10 @@ TEST_CASE("mesh_io: malformed numbers are quoted with their line") {
     CHECK(error_of("+-1 2 3\n") == "t.txt:1: coordinate \"+-1\" is not a number");
     CHECK(error_of("0x10 2 3\n") == "t.txt:1: coordinate \"0x10\" is not a number");
     CHECK(error_of("1 2 3;\n") == "t.txt:1: coordinate \"3;\" is not a number");
-    // Binary junk and very long tokens stay printable and short in the one-line message.
-    CHECK(error_of(std::string("1 2 \x01\x02", 6) + "\n") ==
-          "t.txt:1: coordinate \"??\" is not a number");
+    // Bytes that are not printable ASCII and very long tokens stay printable and short in the
+    // one-line message. (Control bytes near the start make the whole input "binary data".)
+    CHECK(error_of("1 2 \xc3\xa9\n") == "t.txt:1: coordinate \"??\" is not a number");
+    CHECK(error_of(std::string(5000, '#') + "\n1 2 \x01\x02\n") == "t.txt:2: coordinate \"??\" is not a number");
     std::string long_token(100, '7');
     long_token += 'x';
     CHECK(error_of("1 2 " + long_token + "\n") ==
@@ -142,7 +143,7 @@ TEST_CASE("mesh_io: nan and inf parse as numbers (the hull reports them)") {
     CHECK(xyz[6] == 0.0);       // underflow: 0
 }
 
-TEST_CASE("mesh_io: 17 significant digits round-trip through the reader") {
+TEST_CASE("mesh_io: shortest round-trip numbers read back to the same doubles") {
     std::mt19937_64 random(12345);
     std::uniform_real_distribution<double> uniform(-1e3, 1e3);
     std::vector<double> values;
@@ -153,7 +154,7 @@ TEST_CASE("mesh_io: 17 significant digits round-trip through the reader") {
         text += hullkit::format_double(v) + (i % 3 == 2 ? "\n" : " ");
     }
     CHECK(points_of(text) == values);
-    CHECK(hullkit::format_double(0.1) == "0.10000000000000001");
+    CHECK(hullkit::format_double(0.1) == "0.1");  // the shortest text that reads back exactly
     CHECK(hullkit::format_double(1.0) == "1");
     CHECK(hullkit::format_json_number(NAN) == "null");
     CHECK(hullkit::format_json_number(-INFINITY) == "null");

@@ -84,6 +84,115 @@ export interface Hullkit {
   ): VerifyReport;
   /** The algorithm names `hull` accepts, the default first. */
   readonly algorithms: readonly HullAlgorithm[];
+  /**
+   * The Delaunay triangulation of the 2D points `xy`, a flat array x0 y0 x1 y1 ... (a Float64Array
+   * is used as it is; other array-likes of numbers are converted): the lower convex hull of the
+   * points lifted to the paraboloid z = x² + y², projected back. Every decision is exact.
+   * Degenerate input is a value, not an error: duplicates are merged (`representative`), collinear
+   * points or fewer than three distinct points give no triangles (`dimension` 1, 0 or -1).
+   * The arrays are laid out as delaunator's, so code written for delaunator works on the result.
+   *
+   * @throws {HullkitError} for a coordinate count that is not even, a non-finite coordinate
+   *   (`pointIndex` names the point), magnitudes the exact predicates cannot take after rescaling
+   *   (`pointIndex` too), or an unknown option or option value.
+   */
+  delaunay(xy: Float64Array | ArrayLike<number>, options?: DelaunayOptions): DelaunayResult;
+  /**
+   * The index of the input point nearest to (x, y) (exact ties: the lowest index; a duplicate is
+   * never returned, its representative is), found by walking `triangulation` from point `start`
+   * (default 0; the previous answer is a good start for a moving query). -1 when there are no points.
+   * `xy` and `triangulation` are copied into the WebAssembly heap on each call (O(n)).
+   *
+   * @throws {HullkitError} for a non-finite x or y, a `start` that is not a point index, or a
+   *   triangulation whose arrays do not fit `xy` (an index out of range, mismatched lengths).
+   */
+  find(xy: Float64Array | ArrayLike<number>, triangulation: DelaunayTriangulation, x: number, y: number, start?: number): number;
+  /**
+   * The Voronoi cells of the points, clipped to the rectangle `bounds` = [xmin, ymin, xmax, ymax],
+   * built from the circumcentres of `triangulation`'s triangles.
+   *
+   * @throws {HullkitError} for bounds that are not four finite numbers with xmin < xmax and
+   *   ymin < ymax, or a triangulation whose arrays do not fit `xy`.
+   */
+  voronoi(xy: Float64Array | ArrayLike<number>, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
+  /** The algorithm names `delaunay` accepts, the default first. */
+  readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
+}
+
+/** Algorithms available to {@link Hullkit.delaunay}; every one returns identical triangles. */
+export type DelaunayAlgorithm = 'incremental' | 'giftwrap';
+
+export interface DelaunayOptions {
+  /**
+   * `'incremental'` (default): insertion in a space-filling-curve order with a walking locate,
+   * exact. `'giftwrap'`: the seed document's gift wrapping on the lifted points, O(n²), for
+   * teaching and checking.
+   */
+  algorithm?: DelaunayAlgorithm;
+  /**
+   * Also return the Delaunay polygons (`polygonOffsets`, `polygonVertices`): the lower faces of the
+   * lifted hull before they are cut into triangles (a square grid gives its squares).
+   */
+  mergeCocircular?: boolean;
+}
+
+/**
+ * What {@link Hullkit.find} and {@link Hullkit.voronoi} need of a triangulation: a
+ * {@link DelaunayResult}, or a delaunator object (then no duplicates are assumed).
+ */
+export interface DelaunayTriangulation {
+  triangles: Uint32Array | ArrayLike<number>;
+  halfedges: Int32Array | ArrayLike<number>;
+  hull: Uint32Array | ArrayLike<number>;
+  representative?: Uint32Array | ArrayLike<number>;
+  dimension?: number;
+}
+
+export interface DelaunayResult {
+  /**
+   * 2 when the distinct points span the plane; 1 when they are all collinear (no triangles, `hull`
+   * lists the distinct points in order along the line); 0 one distinct point; -1 no points.
+   */
+  dimension: 2 | 1 | 0 | -1;
+  /**
+   * Three indices per triangle into the input points. Orientation as delaunator's: clockwise with
+   * the y axis pointing up, i.e. counter-clockwise on a screen whose y axis points down.
+   * Cocircular points (grids, regular polygons) are triangulated by one documented rule that every
+   * algorithm shares; no triangle has zero area.
+   */
+  triangles: Uint32Array;
+  /**
+   * One entry per entry of `triangles`: half-edge e goes from `triangles[e]` to
+   * `triangles[next(e)]` with next(e) = e % 3 === 2 ? e - 2 : e + 1; `halfedges[e]` is the opposite
+   * half-edge in the neighbouring triangle, or -1 on the hull (as delaunator's).
+   */
+  halfedges: Int32Array;
+  /** The convex hull as a cycle of point indices in the triangles' orientation, including points on hull edges. */
+  hull: Uint32Array;
+  /**
+   * For each input point, the index that stands for it: itself, or the lowest index with exactly
+   * the same coordinates (duplicates are merged, never dropped silently).
+   */
+  representative: Uint32Array;
+  /** How many points are duplicates (`representative[i] !== i`). */
+  duplicateCount: number;
+  /**
+   * With `mergeCocircular`: polygon p is `polygonVertices.subarray(polygonOffsets[p], polygonOffsets[p + 1])`,
+   * in the triangles' orientation, starting at its lowest index.
+   */
+  polygonOffsets?: Uint32Array;
+  polygonVertices?: Uint32Array;
+}
+
+export interface VoronoiCells {
+  /**
+   * One more entry than there are points: cell i is the polygon of points
+   * `cellXY.subarray(2 * cellOffsets[i], 2 * cellOffsets[i + 1])` (x y pairs), counter-clockwise
+   * with y up; empty for duplicates and for points whose cell misses the rectangle.
+   */
+  cellOffsets: Uint32Array;
+  /** The cells' corners, x y pairs. */
+  cellXY: Float64Array;
 }
 
 export interface VerifyReport {

@@ -1,3 +1,4 @@
+// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit.checkRoute and RouteChecker: the JS side of native/include/hullkit/route.hpp.
 import { HullkitError } from './internal.js';
 

@@ -1,3 +1,4 @@
+// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit demo page: UI, worker orchestration and three.js rendering.
 //
 // Test hooks: document.body.dataset.state is 'loading' | 'computing' | 'ready' |

@@ -209,42 +209,31 @@ HullArgs parse_hull_args(std::vector<std::string> argv) {
 
 bool is_stdio(const std::string& path) { return path.empty() || path == "-"; }
 
-std::string read_stdin() {
-    std::string text;
-    char buffer[1 << 16];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, n);
-    if (std::ferror(stdin)) {
-        throw CliError(std::string("<stdin>: cannot read: ") + std::strerror(errno));
-    }
-    return text;
-}
-
-std::string read_input(const std::string& path) {
-    if (is_stdio(path)) return read_stdin();
-    std::string text, error;
-    if (!hullkit::read_file(path, &text, &error)) throw CliError(error);
-    return text;
-}
-
-void write_output(const std::string& path, const std::string& text) {
+/// Writes the hull to `path` (or stdout) in pieces, never holding the whole text.
+void write_output(const std::string& path, hullkit::OutputFormat format, hullkit::PointSpan points,
+                  const hullkit::Hull& hull) {
+    int error_number = 0;
     if (is_stdio(path)) {
-        if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() ||
-            std::fflush(stdout) != 0) {
-            throw CliError(std::string("<stdout>: cannot write: ") + std::strerror(errno));
+        if (!hullkit::write_hull_file(format, points, hull, stdout, &error_number) || std::fflush(stdout) != 0) {
+            throw CliError(std::string("<stdout>: cannot write: ") + std::strerror(error_number ? error_number : errno));
         }
         return;
     }
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) throw CliError(path + ": cannot open for writing: " + std::strerror(errno));
-    bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    int saved_errno = errno;
+    bool written = false;
+    try {
+        written = hullkit::write_hull_file(format, points, hull, file, &error_number);
+    } catch (...) {
+        std::fclose(file);
+        throw;
+    }
     // fclose flushes, so a full disk may only show up here.
     if (std::fclose(file) != 0 && written) {
         written = false;
-        saved_errno = errno;
+        error_number = errno;
     }
-    if (!written) throw CliError(path + ": cannot write: " + std::strerror(saved_errno));
+    if (!written) throw CliError(path + ": cannot write: " + std::strerror(error_number));
 }
 
 void print_stats(std::size_t points, const hullkit::Hull& hull, hullkit::Algorithm algorithm,
@@ -261,8 +250,10 @@ void print_stats(std::size_t points, const hullkit::Hull& hull, hullkit::Algorit
 
 // ---- commands ----
 
+/// Reads the points of `input` (a path, or stdin for "-") in chunks, without a copy of the text.
 hullkit::PointsResult load_points(const std::string& input, const std::string& name) {
-    hullkit::PointsResult points = hullkit::parse_points(read_input(input), name);
+    hullkit::PointsResult points =
+        is_stdio(input) ? hullkit::read_points_file(stdin, name) : hullkit::read_points_file(input);
     if (!points.ok()) throw CliError(points.error);
     return points;
 }
@@ -289,7 +280,7 @@ int run_hull(std::vector<std::string> argv) {
     const auto stop = std::chrono::steady_clock::now();
     if (!hull.ok()) throw CliError(name + ": " + hull.error);
 
-    write_output(args.output, hullkit::write_hull(args.format, hullkit::PointSpan(points.xyz), hull));
+    write_output(args.output, args.format, hullkit::PointSpan(points.xyz), hull);
     if (args.stats) {
         print_stats(points.count(), hull, args.algorithm,
                     std::chrono::duration<double>(stop - start).count());

@@ -9,11 +9,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <new>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
 #include <system_error>
 #include <unordered_map>
+
+#include <sys/stat.h>
 
 #include "point_key.hpp"
 
@@ -28,16 +32,27 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' |
 
 /// Walks the text line by line, handing out only lines with content: the part before any '#'
 /// that is not all whitespace. Line numbers count every line, so messages match an editor's.
+/// The text is either one string in memory or a file read in chunks into one reused buffer
+/// (so a 60 MB file never sits in memory whole); a line handed out stays valid until the next
+/// call to next().
 class LineCursor {
 public:
     explicit LineCursor(const std::string& text)
-        : pos_(text.data()), end_(text.data() + text.size()) {}
+        : pos_(text.data()), end_(text.data() + text.size()), at_eof_(true) {}
+
+    /// Reads `file` in chunks; a read error is reported by read_failed() / read_errno().
+    explicit LineCursor(std::FILE* file) : file_(file), buffer_(kChunk), pos_(buffer_.data()), end_(pos_) {}
 
     /// Advances to the next line with content; false at the end of the text.
     bool next(std::string_view* content) {
-        while (pos_ < end_) {
+        for (;;) {
+            const char* newline = pos_ < end_ ? static_cast<const char*>(std::memchr(pos_, '\n', end_ - pos_)) : nullptr;
+            if (!newline && !at_eof_) {  // an incomplete line: read on
+                refill();
+                continue;
+            }
+            if (pos_ >= end_) return false;
             const char* begin = pos_;
-            const char* newline = static_cast<const char*>(std::memchr(pos_, '\n', end_ - pos_));
             const char* stop = newline ? newline : end_;
             pos_ = newline ? newline + 1 : end_;
             ++line_number_;
@@ -50,15 +65,42 @@ public:
                 return true;
             }
         }
-        return false;
     }
 
     /// The number of the line last read (with or without content).
     std::size_t line_number() const { return line_number_; }
+    bool read_failed() const { return read_errno_ != 0; }
+    int read_errno() const { return read_errno_; }
+
+    /// The first bytes of the input (up to `size`), read ahead if needed, for format sniffing.
+    std::string_view head(std::size_t size) {
+        while (static_cast<std::size_t>(end_ - pos_) < size && !at_eof_) refill();
+        return std::string_view(pos_, std::min<std::size_t>(size, static_cast<std::size_t>(end_ - pos_)));
+    }
 
 private:
+    static constexpr std::size_t kChunk = std::size_t{1} << 20;
+
+    /// Moves the unread rest to the front of the buffer and appends the next chunk of the file.
+    void refill() {
+        const std::size_t rest = static_cast<std::size_t>(end_ - pos_);
+        if (pos_ != buffer_.data()) std::memmove(buffer_.data(), pos_, rest);
+        if (buffer_.size() - rest < kChunk / 2) buffer_.resize(2 * buffer_.size());  // a very long line
+        const std::size_t got = std::fread(buffer_.data() + rest, 1, buffer_.size() - rest, file_);
+        pos_ = buffer_.data();
+        end_ = pos_ + rest + got;
+        if (got == 0) {
+            at_eof_ = true;
+            if (std::ferror(file_)) read_errno_ = errno ? errno : EIO;
+        }
+    }
+
+    std::FILE* file_ = nullptr;
+    std::vector<char> buffer_;
     const char* pos_;
     const char* end_;
+    bool at_eof_ = false;
+    int read_errno_ = 0;
     std::size_t line_number_ = 0;
 };
 
@@ -168,8 +210,12 @@ constexpr std::uint64_t kMaxCount = 0xffffffffu;
 
 /// Reserving a header's count up front is only safe when the text could hold that many points
 /// (every point needs at least "0 0 0\n"), so a lying header cannot exhaust memory.
+/// `text_size` is kUnknownSize for a stream (a pipe); then at most 2^24 points are reserved
+/// (address space only: pages are touched as points arrive) and the array grows beyond that.
+constexpr std::size_t kUnknownSize = ~std::size_t{0};
+
 std::size_t safe_reserve(std::uint64_t declared, std::size_t text_size) {
-    std::uint64_t possible = text_size / 6 + 1;
+    std::uint64_t possible = text_size == kUnknownSize ? std::uint64_t{1} << 24 : text_size / 6 + 1;
     return static_cast<std::size_t>(std::min(declared, possible));
 }
 
@@ -181,12 +227,17 @@ class Reader {
 public:
     Reader(const std::string& text, const std::string& source)
         : cursor_(text), source_(source), text_size_(text.size()) {}
+    /// Reads `file` in chunks; `size` is its size in bytes if known (a regular file), else
+    /// kUnknownSize. It only sizes buffers: the text itself decides where it ends.
+    Reader(std::FILE* file, std::size_t size, const std::string& source)
+        : cursor_(file), source_(source), text_size_(size) {}
 
     /// Advances to the next line with content; false at the end of the text.
     bool next_line() { return cursor_.next(&line_); }
     std::string_view line() const { return line_; }
     std::size_t line_number() const { return cursor_.line_number(); }
     std::size_t text_size() const { return text_size_; }
+    LineCursor& cursor() { return cursor_; }
 
     /// Splits the current line; on an empty comma field records the error and returns false.
     bool split(bool allow_commas) {
@@ -224,6 +275,23 @@ public:
 
     /// The current line must be exactly "x y z"; appends the point to *xyz.
     bool append_point_line(bool allow_commas, std::vector<double>* xyz) {
+        // Fast path for the common line, three numbers separated by whitespace, without
+        // splitting into fields; anything else (commas, a wrong count, a bad number) takes the
+        // general path below, which gives the error messages.
+        double point[3];
+        const char* p = line_.data();
+        const char* const end = p + line_.size();
+        int k = 0;
+        for (; k < 3; ++k) {
+            while (p < end && is_space(*p)) ++p;
+            const char* start = p;
+            while (p < end && !is_space(*p) && *p != ',') ++p;
+            if (!parse_double(std::string_view(start, static_cast<std::size_t>(p - start)), &point[k])) break;
+        }
+        if (k == 3 && p == end) {  // the line is trimmed: nothing may follow the third number
+            xyz->insert(xyz->end(), point, point + 3);
+            return true;
+        }
         if (!split(allow_commas)) return false;
         if (fields_.size() != 3) {
             return fail("expected 3 coordinates, got " + std::to_string(fields_.size()));
@@ -287,8 +355,10 @@ PointFormat detect_format(const std::vector<std::string_view>& first_fields) {
 // ---------------------------------------------------------------------------------------------
 
 bool read_xyz(Reader& reader, std::vector<double>* xyz) {
-    // No header count to go by: a typical "x y z" line takes ~20 bytes per coordinate.
-    xyz->reserve(reader.text_size() / 20);
+    // No header count to go by: reserve for as many points as the text could hold ("0 0 0\n"
+    // is 6 bytes), so the array never grows and copies itself. Only address space: the pages
+    // are touched as points arrive.
+    xyz->reserve(3 * safe_reserve(kMaxCount, reader.text_size()));
     do {
         if (!reader.append_point_line(/*allow_commas=*/true, xyz)) return false;
     } while (reader.next_line());
@@ -331,6 +401,7 @@ bool read_rbox(Reader& reader, std::vector<double>* xyz) {
 }
 
 bool read_obj(Reader& reader, std::vector<double>* xyz) {
+    xyz->reserve(3 * safe_reserve(kMaxCount, reader.text_size()));
     do {
         if (!reader.split(false)) return false;
         const auto& fields = reader.fields();
@@ -478,101 +549,180 @@ bool read_off_faces(Reader& reader, const OffHeader& header,
 // Writers
 // ---------------------------------------------------------------------------------------------
 
-void append_uint(std::string& out, std::uint64_t value) {
-    char buffer[24];
-    int n = std::snprintf(buffer, sizeof buffer, "%llu", static_cast<unsigned long long>(value));
-    out.append(buffer, static_cast<std::size_t>(n));
-}
+/// Where writers put their text: a string, or a file written in ~1 MiB pieces through one
+/// reused buffer (the text of a 1e6-point hull is ~100 MB: never held whole). Numbers are
+/// formatted with std::to_chars: the shortest text that reads back to the same double.
+class TextOut {
+public:
+    TextOut() = default;
+    explicit TextOut(std::FILE* file) : file_(file) { buffer_.reserve(kFlushAt + 4096); }
 
-void append_double(std::string& out, double value) {
-    char buffer[40];
-    int n = std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    out.append(buffer, static_cast<std::size_t>(n));
-}
-
-void append_json_number(std::string& out, double value) {
-    if (std::isfinite(value)) {
-        append_double(out, value);
-    } else {
-        out += "null";
+    void put(char c) { buffer_ += c; }
+    void put(std::string_view text) { buffer_.append(text.data(), text.size()); }
+    void uint(std::uint64_t value) {
+        char digits[24];
+        const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+        buffer_.append(digits, static_cast<std::size_t>(end - digits));
     }
-}
-
-void append_xyz(std::string& out, const double* p, const char* separator) {
-    append_double(out, p[0]);
-    out += separator;
-    append_double(out, p[1]);
-    out += separator;
-    append_double(out, p[2]);
-}
-
-/// For each triangle corner, its position in hull.vertices: OFF and OBJ list only the hull's
-/// vertices, so faces must be re-indexed. hull.vertices is ascending for a polytope but in
-/// polygon order for a planar hull, so the lookup does not rely on any order.
-/// Throws if the hull does not fit the points.
-/// The faces to write: the merged polygons when the hull has them (merge_coplanar), else its
-/// triangles as polygons of three corners.
-struct FaceList {
-    const std::vector<std::uint32_t>& corners;
-    std::vector<std::uint32_t> offsets;
-
-    explicit FaceList(const Hull& hull)
-        : corners(hull.face_offsets.empty() ? hull.triangles : hull.face_vertices), offsets(hull.face_offsets) {
-        if (offsets.empty()) {
-            for (std::size_t i = 0; i <= hull.triangles.size(); i += 3) offsets.push_back(static_cast<std::uint32_t>(i));
+    /// Shortest round-trip text ("0.1", "1", "1e+22", "-0", "inf", "nan").
+    void number(double value) {
+        char digits[32];
+        const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+        buffer_.append(digits, static_cast<std::size_t>(end - digits));
+    }
+    /// JSON has no NaN or infinity: those are written as null.
+    void json_number(double value) {
+        if (std::isfinite(value)) {
+            number(value);
+        } else {
+            put("null");
         }
     }
-    std::size_t size() const { return offsets.size() - 1; }
+    void xyz(const double* p) {
+        number(p[0]);
+        put(' ');
+        number(p[1]);
+        put(' ');
+        number(p[2]);
+    }
+    /// Called after each record: hands a full buffer to the file.
+    void record_done() {
+        if (file_ && buffer_.size() >= kFlushAt) flush();
+    }
+    /// Writes out what is buffered (file mode); false once a write failed (errno kept).
+    bool flush() {
+        if (file_ && !buffer_.empty()) {
+            if (!failed_ && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+                failed_ = true;
+                errno_ = errno;
+            }
+            buffer_.clear();
+        }
+        return !failed_;
+    }
+    int error_number() const { return errno_; }
+    std::string& text() { return buffer_; }
+    void reserve(std::size_t bytes) {
+        if (!file_) buffer_.reserve(bytes);
+    }
+
+private:
+    static constexpr std::size_t kFlushAt = std::size_t{1} << 20;
+    std::FILE* file_ = nullptr;
+    std::string buffer_;
+    bool failed_ = false;
+    int errno_ = 0;
 };
 
-std::vector<std::uint32_t> local_corner_indices(PointSpan points, const Hull& hull,
-                                                const std::vector<std::uint32_t>& corners) {
-    // (input index, position in hull.vertices), sorted by input index for binary search.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> position;
-    position.reserve(hull.vertices.size());
-    for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
-        if (hull.vertices[i] >= points.count) {
-            throw std::invalid_argument("hull vertex " + std::to_string(hull.vertices[i]) +
-                                        " is out of range for " + std::to_string(points.count) +
-                                        " points");
+/// The faces to write: the merged polygons when the hull has them (merge_coplanar), else its
+/// triangles as polygons of three corners (without building an offset table for them).
+struct FaceList {
+    const std::vector<std::uint32_t>& corners;
+    const std::vector<std::uint32_t>* offsets;  // null: triangles
+
+    explicit FaceList(const Hull& hull)
+        : corners(hull.face_offsets.empty() ? hull.triangles : hull.face_vertices),
+          offsets(hull.face_offsets.empty() ? nullptr : &hull.face_offsets) {}
+    std::size_t size() const { return offsets ? offsets->size() - 1 : corners.size() / 3; }
+    std::size_t begin(std::size_t f) const { return offsets ? (*offsets)[f] : 3 * f; }
+    std::size_t end(std::size_t f) const { return offsets ? (*offsets)[f + 1] : 3 * f + 3; }
+};
+
+/// For each input point, its position in hull.vertices: OFF and OBJ list only the hull's
+/// vertices, so faces must be re-indexed. hull.vertices is ascending for a polytope but in
+/// polygon order for a planar hull, so the lookup does not rely on any order.
+class VertexPositions {
+public:
+    /// Throws std::invalid_argument if a vertex is out of range or listed twice.
+    VertexPositions(PointSpan points, const Hull& hull)
+        : count_(points.count),
+          // calloc: the zeroed pages of a large table are mapped lazily, so only the pages that
+          // hold a hull vertex's entry are ever touched (a cube's few hundred vertices among
+          // 1e6 points touch a few pages, not 4 MB).
+          position_(static_cast<std::uint32_t*>(std::calloc(points.count ? points.count : 1, sizeof(std::uint32_t)))) {
+        if (!position_) throw std::bad_alloc();
+        for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
+            const std::uint32_t v = hull.vertices[i];
+            if (v >= points.count) {
+                throw std::invalid_argument("hull vertex " + std::to_string(v) + " is out of range for " +
+                                            std::to_string(points.count) + " points");
+            }
+            if (position_.get()[v] != 0) {
+                throw std::invalid_argument("hull vertex " + std::to_string(v) + " is listed twice");
+            }
+            position_.get()[v] = static_cast<std::uint32_t>(i) + 1;  // 0: not a vertex
         }
-        position.emplace_back(hull.vertices[i], static_cast<std::uint32_t>(i));
-    }
-    std::sort(position.begin(), position.end());
-    for (std::size_t i = 1; i < position.size(); ++i) {
-        if (position[i].first == position[i - 1].first) {
-            throw std::invalid_argument("hull vertex " + std::to_string(position[i].first) +
-                                        " is listed twice");
+        if (hull.triangles.size() % 3 != 0) {
+            throw std::invalid_argument("hull triangle index count is not a multiple of 3");
         }
     }
-    if (hull.triangles.size() % 3 != 0) {
-        throw std::invalid_argument("hull triangle index count is not a multiple of 3");
-    }
-    std::vector<std::uint32_t> local;
-    local.reserve(corners.size());
-    for (std::uint32_t corner : corners) {
-        auto it = std::lower_bound(position.begin(), position.end(),
-                                   std::make_pair(corner, std::uint32_t{0}));
-        if (it == position.end() || it->first != corner) {
-            throw std::invalid_argument("triangle corner " + std::to_string(corner) +
-                                        " is not a hull vertex");
+
+    /// The position of input point `corner` in hull.vertices; throws if it is not listed there.
+    std::uint32_t of(std::uint32_t corner) const {
+        const std::uint32_t stored = corner < count_ ? position_.get()[corner] : 0;
+        if (stored == 0) {
+            throw std::invalid_argument("triangle corner " + std::to_string(corner) + " is not a hull vertex");
         }
-        local.push_back(it->second);
+        return stored - 1;
     }
-    return local;
+
+private:
+    struct Free {
+        void operator()(std::uint32_t* p) const { std::free(p); }
+    };
+    std::size_t count_;
+    std::unique_ptr<std::uint32_t, Free> position_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Inputs that are not text
+// ---------------------------------------------------------------------------------------------
+
+/// How much of the start of an input is looked at to tell binary data from text.
+constexpr std::size_t kSniffBytes = 4096;
+
+/// Empty if `head` (the first bytes of an input of `size` bytes) looks like text; else why the
+/// input cannot be read, naming the format when it is recognisable ("binary STL is not supported
+/// ...", "not a point file: binary data ..."). `expected` names what was wanted ("point file").
+/// Text formats of other kinds (PLY, ASCII STL) are named too, so the message is not a
+/// complaint about coordinates. No byte of the input is echoed.
+std::string binary_input_message(std::string_view head, std::size_t size, const char* expected) {
+    auto starts_with = [&](std::string_view word) {
+        return head.size() >= word.size() && head.substr(0, word.size()) == word &&
+               (head.size() == word.size() || std::isspace(static_cast<unsigned char>(head[word.size()])));
+    };
+    const std::string what = std::string("not a ") + expected + ": ";
+    if (starts_with("ply")) return what + "PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)";
+    if (starts_with("solid") && head.find("facet") != std::string_view::npos) {
+        return what + "ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)";
+    }
+    for (std::size_t i = 0; i < head.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(head[i]);
+        const bool text = c >= 0x20 ? c != 0x7f : (c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f');
+        if (text) continue;
+        // Binary STL: an 80-byte header, a little-endian uint32 triangle count, 50 bytes each.
+        if (head.size() >= 84 && size != kUnknownSize) {
+            std::uint32_t triangles = 0;
+            for (int k = 3; k >= 0; --k) triangles = triangles << 8 | static_cast<unsigned char>(head[80 + k]);
+            if (std::uint64_t{84} + std::uint64_t{50} * triangles == size) {
+                return what + "binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)";
+            }
+        }
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "binary data (byte 0x%02x at offset %zu)", c, i);
+        return what + detail;
+    }
+    return {};
 }
 
-}  // namespace
-
-// ---------------------------------------------------------------------------------------------
-// Public API
-// ---------------------------------------------------------------------------------------------
-
-PointsResult parse_points(const std::string& text, const std::string& source) {
+/// parse_points on any text source: sniffs for binary input, detects the format, reads.
+PointsResult read_points_with(Reader& reader) {
     PointsResult result;
-    Reader reader(text, source);
     bool ok;
-    if (!reader.next_line()) {
+    std::string binary = binary_input_message(reader.cursor().head(kSniffBytes), reader.text_size(), "point file");
+    if (!binary.empty()) {
+        ok = reader.fail_whole(binary);
+    } else if (!reader.next_line()) {
         ok = reader.fail_whole("no points found (the input is empty)");
     } else if (!reader.split(false)) {
         ok = false;
@@ -593,9 +743,49 @@ PointsResult parse_points(const std::string& text, const std::string& source) {
     if (!ok) {
         result.xyz = {};
         result.error = reader.error();
-    } else {
-        result.xyz.shrink_to_fit();
     }
+    // No shrink_to_fit: it would copy the whole array; the spare capacity is address space that
+    // was never touched.
+    return result;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Public API
+// ---------------------------------------------------------------------------------------------
+
+PointsResult parse_points(const std::string& text, const std::string& source) {
+    Reader reader(text, source);
+    return read_points_with(reader);
+}
+
+PointsResult read_points_file(std::FILE* file, const std::string& source) {
+    std::size_t size = kUnknownSize;
+    struct stat info {};
+    if (fstat(fileno(file), &info) == 0 && S_ISREG(info.st_mode)) {
+        // From the current position: a caller may have read part of the file already.
+        const long at = std::ftell(file);
+        size = static_cast<std::size_t>(info.st_size) - static_cast<std::size_t>(at > 0 ? at : 0);
+    }
+    Reader reader(file, size, source);
+    PointsResult result = read_points_with(reader);
+    if (reader.cursor().read_failed()) {
+        result.xyz = {};
+        result.error = source + ": cannot read: " + std::strerror(reader.cursor().read_errno());
+    }
+    return result;
+}
+
+PointsResult read_points_file(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) {
+        PointsResult result;
+        result.error = path + ": cannot open: " + std::strerror(errno);
+        return result;
+    }
+    PointsResult result = read_points_file(file, path);
+    std::fclose(file);
     return result;
 }
 
@@ -603,10 +793,12 @@ MeshResult read_off_mesh(const std::string& text, const std::string& source) {
     MeshResult result;
     Reader reader(text, source);
     OffHeader header;
-    bool ok = reader.next_line() ? read_off_header(reader, &header) &&
-                                       read_off_vertices(reader, header, &result.xyz) &&
-                                       read_off_faces(reader, header, &result.triangles)
-                                 : reader.fail_whole("empty input, expected an OFF file");
+    std::string binary = binary_input_message(reader.cursor().head(kSniffBytes), text.size(), "OFF file");
+    bool ok = !binary.empty() ? reader.fail_whole(binary)
+              : reader.next_line() ? read_off_header(reader, &header) &&
+                                         read_off_vertices(reader, header, &result.xyz) &&
+                                         read_off_faces(reader, header, &result.triangles)
+                                   : reader.fail_whole("empty input, expected an OFF file");
     if (!ok) {
         result = MeshResult{};
         result.error = reader.error();
@@ -662,130 +854,172 @@ bool output_format_from_path(const std::string& path, OutputFormat* out) {
     return parse_output_format(extension, out);
 }
 
-/// Appends each face as `prefix` then its corners (as local indices + `base`), one face a line.
-void append_faces(std::string& out, const FaceList& faces, const std::vector<std::uint32_t>& local,
-                  unsigned long long base, bool with_count) {
+namespace {
+
+/// Appends each face, one a line: "n i j k ..." (OFF, with_count) or "f i j k ..." (OBJ), the
+/// corners as positions in hull.vertices plus `base`.
+void put_faces(TextOut& out, const FaceList& faces, const VertexPositions& position, unsigned base,
+               bool with_count) {
     for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t begin = faces.offsets[f], end = faces.offsets[f + 1];
+        const std::size_t begin = faces.begin(f), end = faces.end(f);
         if (with_count) {
-            append_uint(out, end - begin);
+            out.uint(end - begin);
         } else {
-            out += 'f';
+            out.put('f');
         }
-        for (std::uint32_t k = begin; k < end; ++k) {
-            out += ' ';
-            append_uint(out, local[k] + base);
+        for (std::size_t k = begin; k < end; ++k) {
+            out.put(' ');
+            out.uint(std::uint64_t{position.of(faces.corners[k])} + base);
         }
-        out += '\n';
+        out.put('\n');
+        out.record_done();
     }
 }
 
-std::string write_off(PointSpan points, const Hull& hull) {
+void put_off(TextOut& out, PointSpan points, const Hull& hull) {
     const FaceList faces(hull);
-    std::vector<std::uint32_t> local = local_corner_indices(points, hull, faces.corners);
-    std::string out = "OFF\n";
+    const VertexPositions position(points, hull);
     out.reserve(64 * hull.vertices.size() + 24 * faces.size() + 32);
-    append_uint(out, hull.vertices.size());
-    out += ' ';
-    append_uint(out, faces.size());
-    out += " 0\n";
+    out.put("OFF\n");
+    out.uint(hull.vertices.size());
+    out.put(' ');
+    out.uint(faces.size());
+    out.put(" 0\n");
     for (std::uint32_t v : hull.vertices) {
-        append_xyz(out, points[v], " ");
-        out += '\n';
+        out.xyz(points[v]);
+        out.put('\n');
+        out.record_done();
     }
-    append_faces(out, faces, local, 0, true);
-    return out;
+    put_faces(out, faces, position, 0, true);
 }
 
-std::string write_obj(PointSpan points, const Hull& hull) {
+void put_obj(TextOut& out, PointSpan points, const Hull& hull) {
     const FaceList faces(hull);
-    std::vector<std::uint32_t> local = local_corner_indices(points, hull, faces.corners);
-    std::string out;
+    const VertexPositions position(points, hull);
     out.reserve(64 * hull.vertices.size() + 24 * faces.size());
     for (std::uint32_t v : hull.vertices) {
-        out += "v ";
-        append_xyz(out, points[v], " ");
-        out += '\n';
+        out.put("v ");
+        out.xyz(points[v]);
+        out.put('\n');
+        out.record_done();
     }
-    append_faces(out, faces, local, 1, false);  // OBJ indices are 1-based
-    return out;
+    put_faces(out, faces, position, 1, false);  // OBJ indices are 1-based
 }
 
-std::string write_json(PointSpan points, const Hull& hull) {
-    local_corner_indices(points, hull, hull.triangles);  // only to validate: JSON keeps input indices
-    std::string out;
+void put_json(TextOut& out, PointSpan points, const Hull& hull) {
+    {  // only to validate: JSON keeps input indices
+        const VertexPositions position(points, hull);
+        for (std::uint32_t corner : hull.triangles) position.of(corner);
+    }
     out.reserve(80 * hull.vertices.size() + 32 * hull.face_count() + 64);
-    out += "{\"vertices\":[";
+    out.put("{\"vertices\":[");
     for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
-        if (i) out += ',';
-        append_uint(out, hull.vertices[i]);
+        if (i) out.put(',');
+        out.uint(hull.vertices[i]);
+        out.record_done();
     }
-    out += "],\"triangles\":[";
+    out.put("],\"triangles\":[");
     for (std::size_t i = 0; i < hull.triangles.size(); i += 3) {
-        if (i) out += ',';
-        out += '[';
-        append_uint(out, hull.triangles[i]);
-        out += ',';
-        append_uint(out, hull.triangles[i + 1]);
-        out += ',';
-        append_uint(out, hull.triangles[i + 2]);
-        out += ']';
+        if (i) out.put(',');
+        out.put('[');
+        out.uint(hull.triangles[i]);
+        out.put(',');
+        out.uint(hull.triangles[i + 1]);
+        out.put(',');
+        out.uint(hull.triangles[i + 2]);
+        out.put(']');
+        out.record_done();
     }
-    out += "],\"points\":[";
+    out.put("],\"points\":[");
     for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
-        if (i) out += ',';
+        if (i) out.put(',');
         const double* p = points[hull.vertices[i]];
-        out += '[';
-        append_json_number(out, p[0]);
-        out += ',';
-        append_json_number(out, p[1]);
-        out += ',';
-        append_json_number(out, p[2]);
-        out += ']';
+        out.put('[');
+        out.json_number(p[0]);
+        out.put(',');
+        out.json_number(p[1]);
+        out.put(',');
+        out.json_number(p[2]);
+        out.put(']');
+        out.record_done();
     }
-    out += ']';
+    out.put(']');
     if (!hull.face_offsets.empty()) {  // merge_coplanar: the faces as polygons of input indices
-        out += ",\"faces\":[";
+        out.put(",\"faces\":[");
         for (std::size_t f = 0; f + 1 < hull.face_offsets.size(); ++f) {
-            if (f) out += ',';
-            out += '[';
+            if (f) out.put(',');
+            out.put('[');
             for (std::uint32_t k = hull.face_offsets[f]; k < hull.face_offsets[f + 1]; ++k) {
-                if (k > hull.face_offsets[f]) out += ',';
-                append_uint(out, hull.face_vertices[k]);
+                if (k > hull.face_offsets[f]) out.put(',');
+                out.uint(hull.face_vertices[k]);
             }
-            out += ']';
+            out.put(']');
+            out.record_done();
         }
-        out += ']';
+        out.put(']');
     }
-    out += ",\"volume\":";
-    append_json_number(out, hull.volume);
-    out += ",\"area\":";
-    append_json_number(out, hull.area);
-    out += ",\"dimension\":";
-    out += std::to_string(hull.dimension);
-    out += "}\n";
-    return out;
+    out.put(",\"volume\":");
+    out.json_number(hull.volume);
+    out.put(",\"area\":");
+    out.json_number(hull.area);
+    out.put(",\"dimension\":");
+    out.put(std::to_string(hull.dimension));
+    out.put("}\n");
 }
 
-std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull) {
+void put_hull(TextOut& out, OutputFormat format, PointSpan points, const Hull& hull) {
     switch (format) {
-        case OutputFormat::Off: return write_off(points, hull);
-        case OutputFormat::Obj: return write_obj(points, hull);
-        case OutputFormat::Json: return write_json(points, hull);
+        case OutputFormat::Off: return put_off(out, points, hull);
+        case OutputFormat::Obj: return put_obj(out, points, hull);
+        case OutputFormat::Json: return put_json(out, points, hull);
     }
     throw std::invalid_argument("unknown output format");
 }
 
+/// The text a writer produces, as one string.
+template <class Put>
+std::string to_text(Put put) {
+    TextOut out;
+    put(out);
+    return std::move(out.text());
+}
+
+}  // namespace
+
+std::string write_off(PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_off(out, points, hull); });
+}
+
+std::string write_obj(PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_obj(out, points, hull); });
+}
+
+std::string write_json(PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_json(out, points, hull); });
+}
+
+std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_hull(out, format, points, hull); });
+}
+
+bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number) {
+    TextOut out(file);
+    put_hull(out, format, points, hull);
+    if (out.flush()) return true;
+    *error_number = out.error_number();
+    return false;
+}
+
 std::string format_double(double value) {
-    std::string out;
-    append_double(out, value);
-    return out;
+    TextOut out;
+    out.number(value);
+    return std::move(out.text());
 }
 
 std::string format_json_number(double value) {
-    std::string out;
-    append_json_number(out, value);
-    return out;
+    TextOut out;
+    out.json_number(value);
+    return std::move(out.text());
 }
 
 std::vector<std::int64_t> match_points(PointSpan points, PointSpan wanted) {

@@ -1,3 +1,4 @@
+// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit: Delaunay triangulation of 2D points by lifting to the paraboloid z = x^2 + y^2.
 //
 // The Delaunay triangulation is the projection of the lower convex hull of the lifted points

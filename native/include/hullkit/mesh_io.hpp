@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,37 @@ struct PointsResult {
 /// the line. Coordinates are parsed like strtod but the whole token must be a number; "nan"
 /// and "inf" are accepted here (hullkit::hull reports them with the point's index).
 /// An input without a single point is an error.
+/// Input that is not text (binary data, binary STL) or a format not read here (PLY, ASCII STL)
+/// is rejected as such ("source: not a point file: binary STL is not supported ..."), never
+/// with a complaint about coordinates, and no byte of it is echoed.
 PointsResult parse_points(const std::string& text, const std::string& source);
+
+/// parse_points on an open file (or stdin), read in ~1 MiB chunks through one buffer, so the
+/// whole text is never in memory; for a regular file its size sizes the point array once.
+/// `source` starts the error messages; a read error gives "source: cannot read: REASON".
+PointsResult read_points_file(std::FILE* file, const std::string& source);
+/// The same for a path: "PATH: cannot open: REASON" if it cannot be opened.
+PointsResult read_points_file(const std::string& path);
+
+/// 2D points read from text, flat x0 y0 x1 y1 ... (size always even).
+struct Points2Result {
+    std::vector<double> xy;
+    std::string error;  ///< empty on success; on failure `xy` is empty
+
+    bool ok() const { return error.empty(); }
+    std::size_t count() const { return xy.size() / 2; }
+};
+
+/// Parses 2D points (native/src/io/points2d.cpp), detecting the format from the first content line:
+///   - one integer, optionally followed by a non-numeric comment ("2 rbox 1000 D2"): qhull/rbox:
+///     dimension (2, or 3 whose z is ignored), point count, points;
+///   - anything else: "x y" lines, or "x y z" lines whose z is ignored (every line as the first),
+///     separated by whitespace.
+/// Blank lines and '#' comments as parse_points; a coordinate that is not a finite number is an
+/// error naming its line and point. With `point_lines`, also the 1-based line number of each
+/// point (for later messages about a point).
+Points2Result parse_points_2d(const std::string& text, const std::string& source,
+                              std::vector<std::size_t>* point_lines = nullptr);
 
 /// A triangle mesh read from an OFF file: points plus 3 indices per triangle.
 struct MeshResult {
@@ -59,7 +90,7 @@ bool read_file(const std::string& path, std::string* out, std::string* error);
 
 // ---- writers ----
 // All writers emit only the hull's vertices, in the order of Hull::vertices, with coordinates
-// to 17 significant digits so that reading them back gives the same doubles. A hull of lower
+// in the shortest form that reads back to the same doubles (std::to_chars). A hull of lower
 // dimension (a polygon, segment or point) is written the same way: its triangles, if any, and
 // its vertices. They throw std::invalid_argument if `hull` does not fit `points` (an index out
 // of range, a vertex listed twice, or a triangle corner not listed in Hull::vertices); a Hull
@@ -84,8 +115,12 @@ std::string write_obj(PointSpan points, const Hull& hull);
 std::string write_json(PointSpan points, const Hull& hull);
 /// Dispatches to one of the writers above.
 std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull);
+/// write_hull straight into `file` in ~1 MiB pieces (the text is never held whole). Returns
+/// false with *error_number = errno if a write failed; throws like the writers above.
+bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number);
 
-/// A double as text that reads back to the same value ("%.17g"); JSON has no NaN/inf, so
+/// A double as the shortest text that reads back to the same value ("0.1", "1", "1e+22");
+/// JSON has no NaN/inf, so
 /// non-finite values come out as "null" from format_json_number.
 std::string format_double(double value);
 std::string format_json_number(double value);

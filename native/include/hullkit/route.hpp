@@ -1,3 +1,4 @@
+// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit: route checking with swept traverses (the seed document's first paragraph).
 //
 // A traverse (one or more triangle meshes, its "parts") moves along a route of straight

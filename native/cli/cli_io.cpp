@@ -1,0 +1,54 @@
+// See cli_io.hpp.
+#include "cli_io.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "hullkit/mesh_io.hpp"
+
+namespace hullkit_cli {
+
+std::string read_input(const std::string& path) {
+    std::string text;
+    if (path == "-") {
+        char buffer[1 << 16];
+        std::size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, n);
+        if (std::ferror(stdin)) throw UsageError(std::string("<stdin>: cannot read: ") + std::strerror(errno));
+        return text;
+    }
+    std::string error;
+    if (!hullkit::read_file(path, &text, &error)) throw UsageError(error);
+    return text;
+}
+
+void write_output(const std::string& path, const std::string& text) {
+    if (path.empty() || path == "-") {
+        if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+            throw UsageError(std::string("<stdout>: cannot write: ") + std::strerror(errno));
+        }
+        return;
+    }
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw UsageError(path + ": cannot open for writing: " + std::strerror(errno));
+    bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    int saved_errno = errno;
+    // fclose flushes, so a full disk may only show up here.
+    if (std::fclose(file) != 0 && written) {
+        written = false;
+        saved_errno = errno;
+    }
+    if (!written) throw UsageError(path + ": cannot write: " + std::strerror(saved_errno));
+}
+
+int print_usage_error(const std::string& message) {
+    std::string line = message;
+    for (char& c : line) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    std::fprintf(stderr, "hullkit: %s\n", line.c_str());
+    return 2;
+}
+
+}  // namespace hullkit_cli

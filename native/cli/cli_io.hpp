@@ -1,0 +1,26 @@
+// Input, output and error lines shared by the `hullkit` subcommands: reading a file or standard
+// input, writing a file or standard output, and the one-line "hullkit: ..." message.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace hullkit_cli {
+
+/// A usage or input problem: reported as one line "hullkit: <what>" and exit status 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// The whole of `path`, or of standard input for "-". Throws UsageError naming the file.
+std::string read_input(const std::string& path);
+
+/// Writes `text` to `path`, or to standard output for "" and "-". Throws UsageError naming the
+/// file when it cannot be opened or written (a full disk included).
+void write_output(const std::string& path, const std::string& text);
+
+/// Prints "hullkit: <message>" as one line on standard error (line breaks in `message` become
+/// spaces) and returns 2, the exit status of a usage or input problem.
+int print_usage_error(const std::string& message);
+
+}  // namespace hullkit_cli

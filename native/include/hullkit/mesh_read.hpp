@@ -1,0 +1,48 @@
+// hullkit: reading triangle meshes from OBJ, OFF, PLY and STL files held in memory.
+//
+// Every reader takes the file's bytes plus a `source` name (a file name, or a field name such as
+// "obstacles[2].mesh" when the bytes came from elsewhere) that every error message starts with.
+// Errors are one line: "source:LINE: what is wrong" for text formats (LINE 1-based),
+// "source: record N (byte B): what is wrong" for binary ones, "source: what is wrong" otherwise.
+// Faces with more than 3 vertices are fan-triangulated (v0 v1 v2, v0 v2 v3, ...). Coordinates
+// must be finite. A mesh without a single triangle is an error.
+#pragma once
+
+#include "hullkit/mesh_io.hpp"
+
+#include <string>
+
+namespace hullkit {
+
+enum class MeshFormat { Unknown, Obj, Off, Ply, StlAscii, StlBinary };
+
+/// "unknown", "OBJ", "OFF", "PLY", "ASCII STL", "binary STL".
+const char* mesh_format_name(MeshFormat format);
+
+/// Picks the format from the content: "ply" on the first line; a binary STL whose size is exactly
+/// 84 + 50 * (its triangle count) and that does not read as ASCII STL; "solid" (ASCII STL); "OFF";
+/// an OBJ record (v, f, vt, vn, o, g, ...). When the content decides nothing, the extension of
+/// `source` (.obj .off .ply .stl, any case) does, so a truncated binary STL still gets a useful
+/// message. Unknown otherwise.
+MeshFormat detect_mesh_format(const std::string& bytes, const std::string& source);
+
+/// Reads a mesh in any of the formats above (detect_mesh_format decides which).
+MeshResult read_mesh(const std::string& bytes, const std::string& source);
+
+/// OBJ: "v x y z [w | r g b]" vertices and "f" faces whose corners are "i", "i/t", "i//n" or
+/// "i/t/n" (1-based; negative indices count back from the last vertex read so far). Texture,
+/// normal, group, material, smoothing and line records are ignored; any other record is an error.
+MeshResult read_obj_mesh(const std::string& text, const std::string& source);
+
+/// PLY 1.0, ascii, binary_little_endian or binary_big_endian: element "vertex" with scalar
+/// properties x y z (any PLY scalar type), element "face" with a list property "vertex_indices"
+/// (or "vertex_index"); other elements and properties are read and skipped.
+MeshResult read_ply_mesh(const std::string& bytes, const std::string& source);
+
+/// STL, ASCII ("solid" ... "facet" "outer loop" 3 x "vertex x y z" "endloop" "endfacet" ...
+/// "endsolid") or binary (80-byte header, uint32 triangle count, 50 bytes per triangle, little
+/// endian). STL repeats every corner; corners with exactly the same coordinates (-0 and +0 alike)
+/// are merged into one vertex, in the order of first appearance.
+MeshResult read_stl_mesh(const std::string& bytes, const std::string& source);
+
+}  // namespace hullkit

@@ -1,0 +1,64 @@
+// hullkit: the route-checking scene and report as JSON (the format `hullkit route` and the JS
+// layer read and write).
+//
+// Scene:
+//   {"traverse": {"parts": [PART, ...]}, "route": [[x,y,z], ...], "obstacles": [PART, ...], "margin": m}
+// where PART is {"name": "...", and exactly one of
+//   "box": {"min": [x,y,z], "max": [x,y,z]}                       an axis-aligned box, 12 triangles
+//   "vertices": [[x,y,z], ...], "triangles": [[i,j,k], ...]      an inline triangle mesh
+//   "mesh": "file.stl"                                            OBJ, OFF, PLY or STL, see mesh_read.hpp
+// }. "margin" is optional (default 0). Parts without a name are called "part K", obstacles
+// "obstacle K" (K their index). Rotations are not supported: a key "rotation", "orientation",
+// "transform" (or similar) anywhere, or a waypoint that is not 3 numbers, is rejected as such.
+// Every problem gives one line naming the JSON path: "scene.json: obstacles[2].box.min: expected
+// 3 numbers"; unknown keys are errors too (a misspelt "margn" must not silently mean margin 0).
+#pragma once
+
+#include "hullkit/route.hpp"
+
+#include <functional>
+#include <string>
+
+namespace hullkit {
+
+/// Fetches the bytes of the mesh file a scene names (`path` exactly as written in the scene).
+/// Returns false and sets *error to a one-line reason (e.g. "vessel.obj: cannot open: No such file").
+using MeshLoader = std::function<bool(const std::string& path, std::string* bytes, std::string* error)>;
+
+/// A loader reading `path` relative to `directory` ("" or "." for the current directory; absolute
+/// paths are used as they are).
+MeshLoader file_mesh_loader(const std::string& directory);
+
+struct SceneReadOptions {
+    /// A scene without "route" is an error; off for a RouteChecker whose routes come later.
+    bool require_route = true;
+};
+
+struct SceneResult {
+    Scene scene;
+    std::string error;  ///< empty on success: "SOURCE: JSON.PATH: what is wrong"
+
+    bool ok() const { return error.empty(); }
+};
+
+/// Parses a scene from JSON text. `source` starts every error message (the scene's file name);
+/// `load_mesh` fetches "mesh" files (without one, a "mesh" entry is an error).
+SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
+                        const SceneReadOptions& options = {});
+
+/// Reads a scene file; mesh paths are relative to the scene file's directory. "-" reads standard
+/// input (mesh paths then relative to the current directory).
+SceneResult read_scene_file(const std::string& path, const SceneReadOptions& options = {});
+
+/// The report as JSON text (one leg per line):
+///   {"clear": bool, "min_clearance": d|null, "legs": [LEG, ...], "build_seconds": b, "seconds": s}
+/// with LEG one of
+///   {"status":"hit","obstacle":NAME,"triangle":i,"part":NAME,"fraction":[lo,hi],"position":[x,y,z]}
+///   {"status":"clear","clearance":d|null,"obstacle":NAME|null,"fraction":f|null}
+///   {"status":"start-overlap","obstacle":NAME,"part":NAME,"triangle":i}
+/// plus "sampled": {"hit": bool, "fraction": f|null} on every leg when options.samples > 0.
+/// Names come from `scene`. JSON has no infinity: a clearance that was not computed, or is
+/// infinite (no obstacles), is null. Numbers are written so that they read back exactly.
+std::string write_report_json(const Scene& scene, const RouteReport& report, const RouteOptions& options);
+
+}  // namespace hullkit

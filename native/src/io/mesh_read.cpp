@@ -1,0 +1,191 @@
+// Mesh format detection and the shared helpers of the mesh readers.
+#include "hullkit/mesh_read.hpp"
+
+#include "mesh_read_internal.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+namespace hullkit {
+namespace io {
+
+std::vector<std::string_view> split_words(std::string_view line, char comment) {
+    if (comment != 0) {
+        std::size_t cut = line.find(comment);
+        if (cut != std::string_view::npos) line = line.substr(0, cut);
+    }
+    std::vector<std::string_view> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        std::size_t start = i;
+        while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        if (i > start) words.push_back(line.substr(start, i - start));
+    }
+    return words;
+}
+
+bool parse_finite(std::string_view field, double* out) {
+    if (field.empty() || field.size() > 400) return false;
+    std::string copy(field);  // strtod needs a terminated string
+    char* end = nullptr;
+    errno = 0;
+    double value = std::strtod(copy.c_str(), &end);
+    // Overflow gives inf (rejected below); underflow to a subnormal or zero is a fine value.
+    if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return false;
+    *out = value;
+    return true;
+}
+
+bool parse_integer(std::string_view field, std::int64_t* out) {
+    if (field.empty() || field.size() > 19) return false;
+    std::size_t i = (field[0] == '-' || field[0] == '+') ? 1 : 0;
+    if (i == field.size()) return false;
+    std::int64_t value = 0;
+    for (; i < field.size(); ++i) {
+        if (field[i] < '0' || field[i] > '9') return false;
+        value = value * 10 + (field[i] - '0');
+    }
+    *out = field[0] == '-' ? -value : value;
+    return true;
+}
+
+std::string quote(std::string_view field) {
+    std::string text(field.substr(0, 40));
+    for (char& c : text) {
+        if (static_cast<unsigned char>(c) < 32) c = '?';
+    }
+    return "\"" + text + (field.size() > 40 ? "...\"" : "\"");
+}
+
+std::string extension_of(const std::string& source) {
+    std::size_t dot = source.find_last_of("./\\");
+    if (dot == std::string::npos || source[dot] != '.') return "";
+    std::string extension = source.substr(dot + 1);
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+MeshResult mesh_error(std::string message) {
+    MeshResult result;
+    result.error = std::move(message);
+    return result;
+}
+
+std::string at_line(const std::string& source, std::size_t line, const std::string& what) {
+    return source + ":" + std::to_string(line) + ": " + what;
+}
+
+void append_fan(const std::vector<std::uint32_t>& corners, std::vector<std::uint32_t>* triangles) {
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+        triangles->insert(triangles->end(), {corners[0], corners[k], corners[k + 1]});
+    }
+}
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+    return text.size() >= word.size() && text.compare(0, word.size(), word) == 0 &&
+           (text.size() == word.size() || std::isspace(static_cast<unsigned char>(text[word.size()])));
+}
+
+/// A binary STL's size is exactly 84 + 50 * the count stored at byte 80.
+bool has_binary_stl_size(const std::string& bytes) {
+    if (bytes.size() < 84) return false;
+    const auto* b = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
+    std::uint64_t count = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint64_t{b[3]} << 24);
+    return bytes.size() == 84 + 50 * count;
+}
+
+/// ASCII STL starts with "solid"; binary STL headers sometimes do too, so also look for "facet"
+/// or "endsolid" and for the absence of NUL bytes near the start.
+bool looks_like_ascii_stl(const std::string& bytes) {
+    if (!starts_with_word(bytes, "solid")) return false;
+    std::string_view head = std::string_view(bytes).substr(0, 1024);
+    if (head.find('\0') != std::string_view::npos) return false;
+    return head.find("facet") != std::string_view::npos || head.find("endsolid") != std::string_view::npos;
+}
+
+}  // namespace io
+
+namespace {
+
+using io::starts_with_word;
+
+/// The first field of the first line that is neither blank nor a '#' comment.
+std::string_view first_word(const std::string& bytes) {
+    io::LineCursor lines(std::string_view(bytes).substr(0, std::min<std::size_t>(bytes.size(), 1 << 16)));
+    std::string_view line;
+    while (lines.next(&line)) {
+        std::vector<std::string_view> words = io::split_words(line, '#');
+        if (!words.empty()) return words[0];
+    }
+    return {};
+}
+
+bool is_obj_record(std::string_view word) {
+    static const char* const kRecords[] = {"v",  "vt", "vn",     "vp",     "f", "l",      "p",
+                                           "o",  "g",  "s",      "mtllib", "usemtl", "cstype"};
+    for (const char* record : kRecords) {
+        if (word == record) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+const char* mesh_format_name(MeshFormat format) {
+    switch (format) {
+        case MeshFormat::Unknown: return "unknown";
+        case MeshFormat::Obj: return "OBJ";
+        case MeshFormat::Off: return "OFF";
+        case MeshFormat::Ply: return "PLY";
+        case MeshFormat::StlAscii: return "ASCII STL";
+        case MeshFormat::StlBinary: return "binary STL";
+    }
+    return "unknown";
+}
+
+MeshFormat detect_mesh_format(const std::string& bytes, const std::string& source) {
+    if (starts_with_word(bytes, "ply")) return MeshFormat::Ply;
+    if (io::looks_like_ascii_stl(bytes)) return MeshFormat::StlAscii;
+    if (io::has_binary_stl_size(bytes)) return MeshFormat::StlBinary;
+    const std::string extension = io::extension_of(source);
+    if (bytes.find('\0') == std::string::npos) {
+        std::string_view word = first_word(bytes);
+        if (word == "OFF") return MeshFormat::Off;
+        if (word == "solid") return MeshFormat::StlAscii;
+        if (is_obj_record(word)) return MeshFormat::Obj;
+    }
+    if (extension == "obj") return MeshFormat::Obj;
+    if (extension == "off") return MeshFormat::Off;
+    if (extension == "ply") return MeshFormat::Ply;
+    if (extension == "stl") return starts_with_word(bytes, "solid") ? MeshFormat::StlAscii : MeshFormat::StlBinary;
+    return MeshFormat::Unknown;
+}
+
+MeshResult read_mesh(const std::string& bytes, const std::string& source) {
+    MeshResult result;
+    switch (detect_mesh_format(bytes, source)) {
+        case MeshFormat::Obj: result = read_obj_mesh(bytes, source); break;
+        case MeshFormat::Off: result = read_off_mesh(bytes, source); break;
+        case MeshFormat::Ply: result = read_ply_mesh(bytes, source); break;
+        case MeshFormat::StlAscii:
+        case MeshFormat::StlBinary: result = read_stl_mesh(bytes, source); break;
+        case MeshFormat::Unknown:
+            return io::mesh_error(source + (bytes.empty() ? ": empty file, expected a mesh (OBJ, OFF, PLY or STL)"
+                                                           : ": not a mesh file this reader knows (OBJ, OFF, PLY or STL)"));
+    }
+    if (!result.ok()) return result;
+    // read_off_mesh accepts any numbers; the other readers already refuse non-finite ones.
+    for (std::size_t i = 0; i < result.xyz.size(); ++i) {
+        if (!std::isfinite(result.xyz[i])) {
+            return io::mesh_error(source + ": vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
+        }
+    }
+    if (result.triangles.empty()) return io::mesh_error(source + ": the mesh has no triangles");
+    return result;
+}
+
+}  // namespace hullkit

@@ -1,0 +1,371 @@
+// The route-checking scene and report as JSON, with nlohmann-json.
+//
+// No exceptions: the wasm build does not catch them, so the parser runs through a SAX handler
+// with exceptions off, and every value's type is checked before it is read.
+#include "hullkit/scene_io.hpp"
+
+#include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace hullkit {
+
+namespace {
+
+using nlohmann::json;
+
+/// The DOM parser with exceptions off that remembers why parsing failed.
+struct LocatingParser : nlohmann::detail::json_sax_dom_parser<json> {
+    explicit LocatingParser(json& root) : json_sax_dom_parser(root, false) {}
+    bool parse_error(std::size_t /*position*/, const std::string& /*last_token*/, const nlohmann::detail::exception& ex) {
+        message = ex.what();
+        return false;
+    }
+    std::string message;
+};
+
+/// nlohmann's "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag.
+std::string readable_parse_error(std::string message) {
+    std::size_t tag_end = message.find("] ");
+    if (message.rfind("[json.exception.", 0) == 0 && tag_end != std::string::npos) message.erase(0, tag_end + 2);
+    return message;
+}
+
+/// Keys that would describe a rotation; refused with a message that says so.
+bool is_rotation_key(const std::string& key) {
+    static const char* const kKeys[] = {"rotation", "rotations", "orientation", "orientations", "transform",
+                                        "transforms", "quaternion", "matrix", "pose", "poses", "euler", "angle",
+                                        "angles", "axis_angle", "rotate"};
+    for (const char* name : kKeys) {
+        if (key == name) return true;
+    }
+    return false;
+}
+
+const char* type_name(const json& value) {
+    switch (value.type()) {
+        case json::value_t::null: return "null";
+        case json::value_t::boolean: return "a boolean";
+        case json::value_t::string: return "a string";
+        case json::value_t::array: return "an array";
+        case json::value_t::object: return "an object";
+        case json::value_t::number_integer:
+        case json::value_t::number_unsigned:
+        case json::value_t::number_float: return "a number";
+        default: return "an unknown value";
+    }
+}
+
+/// Walks the JSON tree; the first problem found is kept and stops the walk.
+class SceneParser {
+public:
+    SceneParser(const std::string& source, const MeshLoader& load_mesh) : source_(source), load_mesh_(load_mesh) {}
+
+    bool fail(const std::string& path, const std::string& what) {
+        if (error_.empty()) error_ = source_ + ": " + (path.empty() ? "" : path + ": ") + what;
+        return false;
+    }
+    const std::string& error() const { return error_; }
+
+    /// An object whose keys are all in `known` (a rotation key gets its own message).
+    bool check_object(const json& value, const std::string& path, std::initializer_list<const char*> known) {
+        if (!value.is_object()) return fail(path, std::string("expected an object, got ") + type_name(value));
+        for (auto it = value.begin(); it != value.end(); ++it) {
+            const std::string& key = it.key();
+            bool ok = false;
+            for (const char* name : known) ok = ok || key == name;
+            if (ok) continue;
+            const std::string where = path.empty() ? key : path + "." + key;
+            if (is_rotation_key(key)) {
+                return fail(where, "rotations are not supported: a route is translations only (waypoints [x, y, z])");
+            }
+            std::string list;
+            for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
+            return fail(where, "unknown key (known here: " + list + ")");
+        }
+        return true;
+    }
+
+    bool finite_number(const json& value, const std::string& path, double* out) {
+        if (!value.is_number()) return fail(path, std::string("expected a number, got ") + type_name(value));
+        *out = value.get<double>();
+        if (!std::isfinite(*out)) return fail(path, "expected a finite number");
+        return true;
+    }
+
+    /// [x, y, z], appended to *out.
+    bool vec3(const json& value, const std::string& path, std::vector<double>* out, const char* hint = "") {
+        if (!value.is_array() || value.size() != 3) {
+            if (value.is_object()) {
+                for (auto it = value.begin(); it != value.end(); ++it) {
+                    if (is_rotation_key(it.key())) {
+                        return fail(path + "." + it.key(),
+                                    "rotations are not supported: a route is translations only (waypoints [x, y, z])");
+                    }
+                }
+            }
+            return fail(path, std::string("expected 3 numbers [x, y, z]") + hint + ", got " +
+                                  (value.is_array() ? std::to_string(value.size()) + " values" : type_name(value)));
+        }
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            double x;
+            if (!value[axis].is_number()) {
+                return fail(path, std::string("expected 3 numbers [x, y, z]") + hint + ", entry " + std::to_string(axis) +
+                                      " is " + type_name(value[axis]));
+            }
+            if (!finite_number(value[axis], path + "[" + std::to_string(axis) + "]", &x)) return false;
+            out->push_back(x);
+        }
+        return true;
+    }
+
+    bool box(const json& value, const std::string& path, TriangleMesh* mesh) {
+        if (!check_object(value, path, {"min", "max"})) return false;
+        if (!value.contains("min")) return fail(path, "missing \"min\"");
+        if (!value.contains("max")) return fail(path, "missing \"max\"");
+        std::vector<double> lo, hi;
+        if (!vec3(value["min"], path + ".min", &lo) || !vec3(value["max"], path + ".max", &hi)) return false;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (lo[axis] > hi[axis]) {
+                return fail(path, "min[" + std::to_string(axis) + "] is greater than max[" + std::to_string(axis) + "]");
+            }
+        }
+        // Corner c has x from bit 0, y from bit 1, z from bit 2 (0: min, 1: max).
+        for (int c = 0; c < 8; ++c) {
+            for (int axis = 0; axis < 3; ++axis) mesh->xyz.push_back((c >> axis) & 1 ? hi[axis] : lo[axis]);
+        }
+        // Two triangles per face, counter-clockwise seen from outside.
+        static const std::uint32_t kTriangles[36] = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                                                     2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+        mesh->triangles.assign(kTriangles, kTriangles + 36);
+        return true;
+    }
+
+    bool inline_mesh(const json& value, const std::string& path, TriangleMesh* mesh) {
+        if (!value.contains("triangles")) return fail(path, "\"vertices\" without \"triangles\"");
+        const json& vertices = value["vertices"];
+        const json& triangles = value["triangles"];
+        if (!vertices.is_array()) return fail(path + ".vertices", std::string("expected an array of [x, y, z], got ") + type_name(vertices));
+        if (!triangles.is_array()) return fail(path + ".triangles", std::string("expected an array of [i, j, k], got ") + type_name(triangles));
+        if (vertices.size() > 0xffffffffULL) return fail(path + ".vertices", "too many vertices");
+        mesh->xyz.reserve(3 * vertices.size());
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            if (!vec3(vertices[i], path + ".vertices[" + std::to_string(i) + "]", &mesh->xyz)) return false;
+        }
+        if (triangles.empty()) return fail(path + ".triangles", "no triangles");
+        const std::uint64_t count = vertices.size();
+        mesh->triangles.reserve(3 * triangles.size());
+        for (std::size_t t = 0; t < triangles.size(); ++t) {
+            const std::string where = path + ".triangles[" + std::to_string(t) + "]";
+            const json& corners = triangles[t];
+            if (!corners.is_array() || corners.size() != 3) return fail(where, "expected 3 vertex indices [i, j, k]");
+            for (std::size_t k = 0; k < 3; ++k) {
+                const json& index = corners[k];
+                const std::string at = where + "[" + std::to_string(k) + "]";
+                if (!index.is_number_integer() && !(index.is_number_float() && std::floor(index.get<double>()) == index.get<double>())) {
+                    return fail(at, std::string("expected a vertex index (an integer >= 0), got ") + type_name(index));
+                }
+                const double i = index.get<double>();
+                if (i < 0 || i >= static_cast<double>(count)) {
+                    return fail(at, "index " + (index.is_number_integer() ? index.dump() : std::to_string(i)) +
+                                        " out of range (" + std::to_string(count) + " vertices)");
+                }
+                mesh->triangles.push_back(static_cast<std::uint32_t>(i));
+            }
+        }
+        return true;
+    }
+
+    bool mesh_file(const json& value, const std::string& path, TriangleMesh* mesh) {
+        if (!value.is_string()) return fail(path, std::string("expected a file name, got ") + type_name(value));
+        const std::string file = value.get<std::string>();
+        if (file.empty()) return fail(path, "empty file name");
+        if (!load_mesh_) return fail(path, "mesh files cannot be read here");
+        std::string bytes, why;
+        if (!load_mesh_(file, &bytes, &why)) return fail(path, why);
+        MeshResult result = read_mesh(bytes, file);
+        if (!result.ok()) {
+            // Bytes handed in by the JS layer are named after their field: no need to say it twice.
+            return file == path ? fail("", result.error) : fail(path, result.error);
+        }
+        mesh->xyz = std::move(result.xyz);
+        mesh->triangles = std::move(result.triangles);
+        return true;
+    }
+
+    /// A part or an obstacle.
+    bool shape(const json& value, const std::string& path, const std::string& default_name, TriangleMesh* mesh) {
+        if (!check_object(value, path, {"name", "box", "vertices", "triangles", "mesh"})) return false;
+        mesh->name = default_name;
+        if (value.contains("name")) {
+            if (!value["name"].is_string()) return fail(path + ".name", std::string("expected a string, got ") + type_name(value["name"]));
+            mesh->name = value["name"].get<std::string>();
+        }
+        const int kinds = int(value.contains("box")) + int(value.contains("vertices") || value.contains("triangles")) +
+                          int(value.contains("mesh"));
+        if (kinds == 0) return fail(path, "needs one of \"box\", \"vertices\" + \"triangles\" or \"mesh\"");
+        if (kinds > 1) return fail(path, "give only one of \"box\", \"vertices\" + \"triangles\" and \"mesh\"");
+        if (value.contains("box")) return box(value["box"], path + ".box", mesh);
+        if (value.contains("mesh")) return mesh_file(value["mesh"], path + ".mesh", mesh);
+        if (!value.contains("vertices")) return fail(path, "\"triangles\" without \"vertices\"");
+        return inline_mesh(value, path, mesh);
+    }
+
+    bool shapes(const json& value, const std::string& path, const char* noun, std::vector<TriangleMesh>* out) {
+        if (!value.is_array()) return fail(path, std::string("expected an array, got ") + type_name(value));
+        out->resize(value.size());
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (!shape(value[i], path + "[" + std::to_string(i) + "]", std::string(noun) + " " + std::to_string(i),
+                       &(*out)[i])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    bool scene(const json& root, const SceneReadOptions& options, Scene* out) {
+        if (!check_object(root, "", {"traverse", "route", "obstacles", "margin"})) return false;
+        if (!root.contains("traverse")) return fail("", "missing \"traverse\"");
+        const json& traverse = root["traverse"];
+        if (!check_object(traverse, "traverse", {"parts"})) return false;
+        if (!traverse.contains("parts")) return fail("traverse", "missing \"parts\"");
+        if (!shapes(traverse["parts"], "traverse.parts", "part", &out->parts)) return false;
+        if (out->parts.empty()) return fail("traverse.parts", "no parts (the traverse needs at least one)");
+
+        if (root.contains("route")) {
+            const json& route = root["route"];
+            if (!route.is_array()) return fail("route", std::string("expected an array of waypoints [x, y, z], got ") + type_name(route));
+            for (std::size_t k = 0; k < route.size(); ++k) {
+                if (!vec3(route[k], "route[" + std::to_string(k) + "]", &out->route,
+                          " (a translation; rotations are not supported)")) {
+                    return false;
+                }
+            }
+            if (route.size() < 2) {
+                return fail("route", "needs at least 2 waypoints, got " + std::to_string(route.size()));
+            }
+        } else if (options.require_route) {
+            return fail("", "missing \"route\"");
+        }
+
+        if (!root.contains("obstacles")) return fail("", "missing \"obstacles\"");
+        if (!shapes(root["obstacles"], "obstacles", "obstacle", &out->obstacles)) return false;
+
+        if (root.contains("margin")) {
+            if (!finite_number(root["margin"], "margin", &out->margin)) return false;
+            if (out->margin < 0) return fail("margin", "must be >= 0");
+        }
+        return true;
+    }
+
+private:
+    std::string source_;
+    const MeshLoader& load_mesh_;
+    std::string error_;
+};
+
+std::string directory_of(const std::string& path) {
+    std::size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return "";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+}  // namespace
+
+MeshLoader file_mesh_loader(const std::string& directory) {
+    return [directory](const std::string& path, std::string* bytes, std::string* error) {
+        std::string full = path;
+        if (!path.empty() && path[0] != '/' && !directory.empty() && directory != ".") {
+            full = directory + (directory.back() == '/' ? "" : "/") + path;
+        }
+        return read_file(full, bytes, error);
+    };
+}
+
+SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
+                        const SceneReadOptions& options) {
+    SceneResult result;
+    if (json_text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        result.error = source + ": empty file, expected a JSON scene";
+        return result;
+    }
+    json root;
+    LocatingParser handler(root);
+    if (!json::sax_parse(json_text, &handler, json::input_format_t::json, true, false) || !handler.message.empty()) {
+        result.error = source + ": invalid JSON: " +
+                       (handler.message.empty() ? std::string("cannot parse") : readable_parse_error(handler.message));
+        return result;
+    }
+    SceneParser parser(source, load_mesh);
+    if (!parser.scene(root, options, &result.scene)) {
+        result.scene = Scene{};
+        result.error = parser.error();
+    }
+    return result;
+}
+
+SceneResult read_scene_file(const std::string& path, const SceneReadOptions& options) {
+    SceneResult result;
+    std::string text;
+    if (path == "-") {
+        char buffer[1 << 16];
+        std::size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, n);
+        return parse_scene(text, "<stdin>", file_mesh_loader(""), options);
+    }
+    if (!read_file(path, &text, &result.error)) return result;
+    return parse_scene(text, path, file_mesh_loader(directory_of(path)), options);
+}
+
+std::string write_report_json(const Scene& scene, const RouteReport& report, const RouteOptions& options) {
+    using ordered = nlohmann::ordered_json;
+    // JSON has no NaN or infinity: those become null.
+    auto number = [](double value) { return std::isfinite(value) ? ordered(value) : ordered(nullptr); };
+    auto name_of = [](const std::vector<TriangleMesh>& meshes, std::int64_t index) {
+        return index >= 0 && static_cast<std::size_t>(index) < meshes.size() ? ordered(meshes[index].name) : ordered(nullptr);
+    };
+    auto dump = [](const ordered& value) { return value.dump(-1, ' ', false, ordered::error_handler_t::replace); };
+
+    std::string out = "{\"clear\": " + std::string(report.clear ? "true" : "false") +
+                      ", \"min_clearance\": " + dump(number(report.min_clearance)) + ",\n \"legs\": [";
+    for (std::size_t k = 0; k < report.legs.size(); ++k) {
+        const LegReport& leg = report.legs[k];
+        ordered entry;
+        entry["status"] = leg_status_name(leg.status);
+        switch (leg.status) {
+            case LegStatus::Hit:
+                entry["obstacle"] = name_of(scene.obstacles, leg.obstacle);
+                entry["triangle"] = leg.triangle;
+                entry["part"] = name_of(scene.parts, leg.part);
+                entry["fraction"] = ordered::array({number(leg.fraction_lo), number(leg.fraction_hi)});
+                entry["position"] = ordered::array({number(leg.position[0]), number(leg.position[1]), number(leg.position[2])});
+                break;
+            case LegStatus::Clear:
+                entry["clearance"] = number(leg.clearance);
+                entry["obstacle"] = name_of(scene.obstacles, leg.obstacle);
+                entry["fraction"] = leg.obstacle >= 0 ? number(leg.fraction_lo) : ordered(nullptr);
+                break;
+            case LegStatus::StartOverlap:
+                entry["obstacle"] = name_of(scene.obstacles, leg.obstacle);
+                entry["part"] = name_of(scene.parts, leg.part);
+                entry["triangle"] = leg.triangle;
+                break;
+        }
+        if (options.samples > 0) {
+            entry["sampled"] = {{"hit", leg.sampled_hit}, {"fraction", number(leg.sampled_fraction)}};
+        }
+        out += (k == 0 ? "\n  " : ",\n  ") + dump(entry);
+    }
+    out += std::string(report.legs.empty() ? "]" : "\n ]") + ",\n \"build_seconds\": " + dump(number(report.build_seconds)) +
+           ", \"seconds\": " + dump(number(report.seconds)) + "}\n";
+    return out;
+}
+
+}  // namespace hullkit

@@ -1,0 +1,384 @@
+// Mesh readers (native/src/io): every format written here by an independent writer and read
+// back, the format detection, and every error path with its message.
+#include "hullkit/mesh_read.hpp"
+
+#include "cli_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using hullkit::MeshFormat;
+using hullkit::MeshResult;
+
+struct Mesh {
+    std::vector<double> xyz;
+    std::vector<std::uint32_t> triangles;
+};
+
+/// A closed octahedron-like mesh with coordinates exactly representable as floats (multiples of
+/// 1/8), shuffled by a seed so that round trips are not tested on one lucky mesh only.
+Mesh test_mesh(unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_int_distribution<int> eighths(-80, 80);
+    Mesh mesh;
+    const int count = 6 + static_cast<int>(seed % 5);
+    for (int i = 0; i < 3 * count; ++i) mesh.xyz.push_back(eighths(random) / 8.0);
+    std::uniform_int_distribution<int> pick(0, count - 1);
+    for (int t = 0; t < 2 * count; ++t) {
+        std::uint32_t a = pick(random), b = pick(random), c = pick(random);
+        mesh.triangles.insert(mesh.triangles.end(), {a, b, c});
+    }
+    return mesh;
+}
+
+std::string number(double value) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+
+std::string write_obj(const Mesh& mesh) {
+    std::string out = "# written by the test\no thing\n";
+    for (std::size_t i = 0; i < mesh.xyz.size(); i += 3) {
+        out += "v " + number(mesh.xyz[i]) + " " + number(mesh.xyz[i + 1]) + " " + number(mesh.xyz[i + 2]) + "\n";
+    }
+    out += "vt 0 0\nvn 0 0 1\n";
+    // Alternate the corner forms: i, i/t, i//n, i/t/n and negative indices.
+    const std::int64_t n = static_cast<std::int64_t>(mesh.xyz.size() / 3);
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        out += "f";
+        for (int c = 0; c < 3; ++c) {
+            std::int64_t i = mesh.triangles[t + c] + 1;
+            switch ((t / 3 + c) % 5) {
+                case 0: out += " " + std::to_string(i); break;
+                case 1: out += " " + std::to_string(i) + "/1"; break;
+                case 2: out += " " + std::to_string(i) + "//1"; break;
+                case 3: out += " " + std::to_string(i) + "/1/1"; break;
+                default: out += " " + std::to_string(i - n - 1); break;  // -1 is vertex n
+            }
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+std::string write_off(const Mesh& mesh) {
+    std::string out = "OFF\n" + std::to_string(mesh.xyz.size() / 3) + " " + std::to_string(mesh.triangles.size() / 3) + " 0\n";
+    for (std::size_t i = 0; i < mesh.xyz.size(); i += 3) {
+        out += number(mesh.xyz[i]) + " " + number(mesh.xyz[i + 1]) + " " + number(mesh.xyz[i + 2]) + "\n";
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        out += "3 " + std::to_string(mesh.triangles[t]) + " " + std::to_string(mesh.triangles[t + 1]) + " " +
+               std::to_string(mesh.triangles[t + 2]) + "\n";
+    }
+    return out;
+}
+
+void put(std::string& out, const void* data, std::size_t size, bool big_endian) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) out += static_cast<char>(bytes[big_endian ? size - 1 - i : i]);
+}
+
+/// PLY with an extra vertex property and an extra element, so that skipping them is tested too.
+std::string write_ply(const Mesh& mesh, const std::string& format) {
+    const std::size_t nv = mesh.xyz.size() / 3, nf = mesh.triangles.size() / 3;
+    std::string out = "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(nv) +
+                      "\nproperty double x\nproperty float confidence\nproperty double y\nproperty double z\n"
+                      "element face " + std::to_string(nf) +
+                      "\nproperty list uchar int vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
+                      "end_header\n";
+    if (format == "ascii") {
+        for (std::size_t i = 0; i < nv; ++i) {
+            out += number(mesh.xyz[3 * i]) + " 0.5 " + number(mesh.xyz[3 * i + 1]) + " " + number(mesh.xyz[3 * i + 2]) + "\n";
+        }
+        for (std::size_t t = 0; t < nf; ++t) {
+            out += "3 " + std::to_string(mesh.triangles[3 * t]) + " " + std::to_string(mesh.triangles[3 * t + 1]) + " " +
+                   std::to_string(mesh.triangles[3 * t + 2]) + "\n";
+        }
+        out += "0 1\n";
+        return out;
+    }
+    const bool big = format == "binary_big_endian";
+    for (std::size_t i = 0; i < nv; ++i) {
+        const float confidence = 0.5f;
+        put(out, &mesh.xyz[3 * i], 8, big);
+        put(out, &confidence, 4, big);
+        put(out, &mesh.xyz[3 * i + 1], 8, big);
+        put(out, &mesh.xyz[3 * i + 2], 8, big);
+    }
+    for (std::size_t t = 0; t < nf; ++t) {
+        out += static_cast<char>(3);
+        for (int c = 0; c < 3; ++c) {
+            const std::int32_t index = static_cast<std::int32_t>(mesh.triangles[3 * t + c]);
+            put(out, &index, 4, big);
+        }
+    }
+    const std::int32_t edge[2] = {0, 1};
+    put(out, &edge[0], 4, big);
+    put(out, &edge[1], 4, big);
+    return out;
+}
+
+std::string write_ascii_stl(const Mesh& mesh) {
+    std::string out = "solid test\n";
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        out += "  facet normal 0 0 0\n    outer loop\n";
+        for (int c = 0; c < 3; ++c) {
+            const double* p = &mesh.xyz[3 * mesh.triangles[t + c]];
+            out += "      vertex " + number(p[0]) + " " + number(p[1]) + " " + number(p[2]) + "\n";
+        }
+        out += "    endloop\n  endfacet\n";
+    }
+    return out + "endsolid test\n";
+}
+
+std::string write_binary_stl(const Mesh& mesh, const std::string& header_text = "binary STL from the test") {
+    std::string out = header_text;
+    out.resize(80, ' ');
+    const std::uint32_t count = static_cast<std::uint32_t>(mesh.triangles.size() / 3);
+    put(out, &count, 4, false);
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        const float normal[3] = {0, 0, 0};
+        for (float n : normal) put(out, &n, 4, false);
+        for (int c = 0; c < 3; ++c) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const float value = static_cast<float>(mesh.xyz[3 * mesh.triangles[t + c] + axis]);
+                put(out, &value, 4, false);
+            }
+        }
+        out += std::string(2, '\0');
+    }
+    return out;
+}
+
+/// Readers that keep the file's vertex list must give back exactly the mesh written.
+void require_same_mesh(const MeshResult& read, const Mesh& mesh) {
+    INFO(read.error);
+    REQUIRE(read.ok());
+    REQUIRE(read.xyz == mesh.xyz);
+    REQUIRE(read.triangles == mesh.triangles);
+}
+
+/// STL has no shared vertices: compare corner coordinates triangle by triangle, and check that
+/// no two read vertices are equal (the merge happened).
+void require_same_soup(const MeshResult& read, const Mesh& mesh) {
+    INFO(read.error);
+    REQUIRE(read.ok());
+    REQUIRE(read.triangles.size() == mesh.triangles.size());
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+        for (int axis = 0; axis < 3; ++axis) {
+            REQUIRE(read.xyz[3 * read.triangles[k] + axis] == mesh.xyz[3 * mesh.triangles[k] + axis]);
+        }
+    }
+    std::map<std::array<double, 3>, int> seen;
+    for (std::size_t i = 0; i < read.xyz.size(); i += 3) {
+        REQUIRE(seen.emplace(std::array<double, 3>{read.xyz[i], read.xyz[i + 1], read.xyz[i + 2]}, 0).second);
+    }
+}
+
+std::string error_of(const std::string& bytes, const std::string& source) {
+    MeshResult result = hullkit::read_mesh(bytes, source);
+    REQUIRE_FALSE(result.ok());
+    REQUIRE(result.xyz.empty());
+    REQUIRE(result.triangles.empty());
+    REQUIRE(result.error.find('\n') == std::string::npos);
+    return result.error;
+}
+
+}  // namespace
+
+TEST_CASE("mesh_read: every format round trips", "[mesh_read]") {
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+        const Mesh mesh = test_mesh(seed);
+        INFO("seed " << seed);
+        require_same_mesh(hullkit::read_mesh(write_obj(mesh), "m.obj"), mesh);
+        require_same_mesh(hullkit::read_mesh(write_off(mesh), "m.off"), mesh);
+        require_same_mesh(hullkit::read_mesh(write_ply(mesh, "ascii"), "m.ply"), mesh);
+        require_same_mesh(hullkit::read_mesh(write_ply(mesh, "binary_little_endian"), "m.ply"), mesh);
+        require_same_mesh(hullkit::read_mesh(write_ply(mesh, "binary_big_endian"), "m.ply"), mesh);
+        require_same_soup(hullkit::read_mesh(write_ascii_stl(mesh), "m.stl"), mesh);
+        require_same_soup(hullkit::read_mesh(write_binary_stl(mesh), "m.stl"), mesh);
+        // Detection is by content: the names say nothing here.
+        require_same_mesh(hullkit::read_mesh(write_ply(mesh, "binary_big_endian"), "bytes"), mesh);
+        require_same_soup(hullkit::read_mesh(write_binary_stl(mesh), "bytes"), mesh);
+    }
+}
+
+TEST_CASE("mesh_read: format detection", "[mesh_read]") {
+    const Mesh mesh = test_mesh(3);
+    CHECK(hullkit::detect_mesh_format(write_obj(mesh), "x") == MeshFormat::Obj);
+    CHECK(hullkit::detect_mesh_format(write_off(mesh), "x") == MeshFormat::Off);
+    CHECK(hullkit::detect_mesh_format(write_ply(mesh, "ascii"), "x") == MeshFormat::Ply);
+    CHECK(hullkit::detect_mesh_format(write_ascii_stl(mesh), "x") == MeshFormat::StlAscii);
+    CHECK(hullkit::detect_mesh_format(write_binary_stl(mesh), "x") == MeshFormat::StlBinary);
+    // Binary STL headers that start with "solid" (some exporters write them) are still binary.
+    const std::string tricky = write_binary_stl(mesh, "solid exported by a CAD tool");
+    CHECK(hullkit::detect_mesh_format(tricky, "x") == MeshFormat::StlBinary);
+    require_same_soup(hullkit::read_mesh(tricky, "x.stl"), mesh);
+    // Nothing to go on but the extension.
+    CHECK(hullkit::detect_mesh_format(std::string(30, '\x01'), "a.STL") == MeshFormat::StlBinary);
+    CHECK(hullkit::detect_mesh_format("1 2 3\n", "a.txt") == MeshFormat::Unknown);
+    CHECK(std::string(hullkit::mesh_format_name(MeshFormat::StlBinary)) == "binary STL");
+}
+
+TEST_CASE("mesh_read: OBJ polygons, negative indices and forward references", "[mesh_read]") {
+    // A unit square as one quad (fan: 2 triangles), a pentagon face by negative indices, and a
+    // face that names a vertex defined after it.
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "f 1/1/1 2/2/2 3/3/3 4/4/4\n"
+        "f 5 1 2\n"
+        "v 0.5 0.5 1 0.1 0.2 0.3\n"
+        "f -5 -4 -3 -2 -1\n";
+    MeshResult mesh = hullkit::read_obj_mesh(text, "poly.obj");
+    INFO(mesh.error);
+    REQUIRE(mesh.ok());
+    CHECK(mesh.point_count() == 5);
+    CHECK(mesh.triangles == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 4, 0, 1, 0, 1, 2, 0, 2, 3, 0, 3, 4});
+}
+
+TEST_CASE("mesh_read: STL merges identical corners, -0 and +0 alike", "[mesh_read]") {
+    const std::string text =
+        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex -0 0 -0\nvertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid s\n";
+    MeshResult mesh = hullkit::read_stl_mesh(text, "s.stl");
+    INFO(mesh.error);
+    REQUIRE(mesh.ok());
+    CHECK(mesh.point_count() == 4);
+    CHECK(mesh.triangles == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
+}
+
+TEST_CASE("mesh_read: OBJ errors name the file and line", "[mesh_read]") {
+    std::string eight = "# vessel\n";
+    for (int i = 0; i < 8; ++i) eight += "v " + std::to_string(i) + " 0 " + std::to_string(i * i) + "\n";
+    // Line 12 names vertex 9 of 8.
+    CHECK(error_of(eight + "f 1 2 3\nf 2 3 4\nf 1 2 9\n", "vessel.obj") == "vessel.obj:12: face index 9 out of range (8 vertices)");
+    CHECK(error_of(eight + "f 1 2 -9\n", "vessel.obj") == "vessel.obj:10: face index -9 out of range (8 vertices so far)");
+    CHECK(error_of(eight + "f 1 0 2\n", "a.obj") == "a.obj:10: face corner \"0\" is not a vertex index (1-based, or negative)");
+    CHECK(error_of(eight + "f 1 x/1 2\n", "a.obj") == "a.obj:10: face corner \"x/1\" is not a vertex index (1-based, or negative)");
+    CHECK(error_of(eight + "f 1 2\n", "a.obj") == "a.obj:10: a face needs at least 3 vertices, got 2");
+    CHECK(error_of("v 1 2\n", "a.obj") == "a.obj:1: a vertex needs 3 coordinates (\"v x y z\"), got 2 values");
+    CHECK(error_of("v 1 2 nan\n", "a.obj") == "a.obj:1: coordinate \"nan\" is not a finite number");
+    CHECK(error_of("v 1 2 1e999\n", "a.obj") == "a.obj:1: coordinate \"1e999\" is not a finite number");
+    CHECK(error_of("v 1 2 3\nbogus 1\n", "a.obj") == "a.obj:2: unknown OBJ record \"bogus\"");
+    CHECK(error_of("o empty\n", "a.obj") == "a.obj: no vertices (\"v x y z\" lines), expected an OBJ mesh");
+    CHECK(error_of("v 1 2 3\nv 2 3 4\n", "points.obj") == "points.obj: the mesh has no triangles");
+}
+
+TEST_CASE("mesh_read: PLY errors", "[mesh_read]") {
+    const Mesh mesh = test_mesh(2);
+    const std::string ascii = write_ply(mesh, "ascii");
+    const std::size_t body = ascii.find("end_header\n") + 11;
+    const int header_lines = 14;  // "ply" ... "end_header": the body starts on line 15
+
+    CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1\n", "a.ply") == "a.ply: the PLY header has no \"end_header\"");
+    CHECK(error_of("ply\nformat text 1.0\nend_header\n", "a.ply") == "a.ply:2: unknown PLY format \"text\"");
+    CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "a.ply") ==
+          "a.ply:4: unknown property type \"quad\"");
+    CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n", "a.ply") ==
+          "a.ply: the PLY vertex element has no scalar property \"z\"");
+    CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
+                   "a.ply") == "a.ply: the PLY header declares no \"face\" element");
+    CHECK(error_of("ply\nend_header\n", "a.ply") == "a.ply:2: no \"format\" line before end_header");
+
+    // Ascii body: a vertex line short of a value, one with a value too many, a bad number, a bad index.
+    std::string text = ascii;
+    const std::size_t line_end = text.find('\n', body);
+    std::string first = text.substr(body, line_end - body);
+    CHECK(error_of(text.substr(0, body) + first.substr(0, first.rfind(' ')) + text.substr(line_end), "a.ply") ==
+          "a.ply:" + std::to_string(header_lines + 1) + ": vertex 0 has too few values");
+    CHECK(error_of(text.substr(0, body) + first + " 7" + text.substr(line_end), "a.ply") ==
+          "a.ply:" + std::to_string(header_lines + 1) + ": vertex 0 has 1 values too many");
+    CHECK(error_of(text.substr(0, body) + "1 0.5 zz 3" + text.substr(line_end), "a.ply") ==
+          "a.ply:" + std::to_string(header_lines + 1) + ": vertex 0: value \"zz\" is not a finite number");
+    const std::size_t nv = mesh.xyz.size() / 3;
+    const std::size_t face_line = header_lines + 1 + nv;
+    std::size_t face_start = body;
+    for (std::size_t i = 0; i < nv; ++i) face_start = text.find('\n', face_start) + 1;
+    const std::size_t face_end = text.find('\n', face_start);
+    CHECK(error_of(text.substr(0, face_start) + "3 0 1 " + std::to_string(nv) + text.substr(face_end), "a.ply") ==
+          "a.ply:" + std::to_string(face_line) + ": face 0: index " + std::to_string(nv) + " out of range (" +
+              std::to_string(nv) + " vertices)");
+    CHECK(error_of(text.substr(0, face_start) + "2 0 1" + text.substr(face_end), "a.ply") ==
+          "a.ply:" + std::to_string(face_line) + ": face 0: a face needs at least 3 vertices, got 2");
+    CHECK(error_of(ascii + "1 2\n", "a.ply").find(": content after the last element") != std::string::npos);
+
+    // Binary: cut short, or with bytes left over.
+    const std::string binary = write_ply(mesh, "binary_little_endian");
+    const std::size_t binary_body = binary.find("end_header\n") + 11;
+    CHECK(error_of(binary.substr(0, binary.size() - 3), "b.ply") ==
+          "b.ply: binary PLY is truncated in edge 0 (byte " + std::to_string(binary.size() - 4) + " of " +
+              std::to_string(binary.size() - 3) + ")");
+    CHECK(error_of(binary.substr(0, binary_body + 10), "b.ply") ==
+          "b.ply: binary PLY is truncated in vertex 0 (byte " + std::to_string(binary_body + 8) + " of " +
+              std::to_string(binary_body + 10) + ")");
+    CHECK(error_of(binary + "xy", "b.ply") == "b.ply: binary PLY has 2 bytes after the last element (byte " +
+                                                 std::to_string(binary.size()) + ")");
+    // A NaN coordinate in a binary body.
+    std::string with_nan = binary;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::memcpy(&with_nan[binary_body], &nan, 8);
+    CHECK(error_of(with_nan, "b.ply") == "b.ply: vertex 0 (byte " + std::to_string(binary_body) + "): a value is not a finite number");
+}
+
+TEST_CASE("mesh_read: STL errors", "[mesh_read]") {
+    const Mesh mesh = test_mesh(4);
+    const std::string binary = write_binary_stl(mesh);
+    const std::size_t n = mesh.triangles.size() / 3;
+    CHECK(error_of(binary.substr(0, binary.size() - 7), "t.stl") ==
+          "t.stl: binary STL is truncated: 84 + 50*N bytes expected (N = " + std::to_string(n) + " triangles: " +
+              std::to_string(84 + 50 * n) + " bytes), got " + std::to_string(binary.size() - 7));
+    CHECK(error_of(binary.substr(0, 50), "t.stl") ==
+          "t.stl: binary STL is truncated: at least 84 bytes expected (header and triangle count), got 50");
+    CHECK(hullkit::read_stl_mesh(binary + "abc", "t.stl").error ==
+          "t.stl: binary STL is too long: 84 + 50*N bytes expected (N = " + std::to_string(n) + " triangles: " +
+              std::to_string(84 + 50 * n) + " bytes), got " + std::to_string(binary.size() + 3));
+    std::string with_inf = binary;
+    const float inf = std::numeric_limits<float>::infinity();
+    std::memcpy(&with_inf[84 + 50 * 2 + 12 + 4], &inf, 4);
+    CHECK(error_of(with_inf, "t.stl") == "t.stl: triangle 2 (byte " + std::to_string(84 + 100 + 16) +
+                                             "): coordinate is not a finite number");
+
+    const std::string ascii = write_ascii_stl(mesh);
+    CHECK(error_of(ascii.substr(0, ascii.rfind("endsolid")), "a.stl") ==
+          "a.stl: ASCII STL ends early (line " + std::to_string(1 + 7 * n) + "): no \"endsolid\"");
+    CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid\n", "a.stl") ==
+          "a.stl:6: a facet needs 3 vertices, got 2");
+    CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n", "a.stl") == "a.stl:4: expected \"vertex x y z\"");
+    CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 q\n", "a.stl") ==
+          "a.stl:4: coordinate \"q\" is not a finite number");
+    CHECK(error_of("solid x\nfacet normal 0 0 1\nloop\n", "a.stl") == "a.stl:3: expected \"outer loop\", got \"loop\"");
+    CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendsolid\n",
+                   "a.stl") == "a.stl:8: expected \"endfacet\", got \"endsolid\"");
+}
+
+TEST_CASE("mesh_read: unknown, empty and OFF input through read_mesh", "[mesh_read]") {
+    CHECK(error_of("", "e.obj") == "e.obj: no vertices (\"v x y z\" lines), expected an OBJ mesh");
+    CHECK(error_of("", "bytes") == "bytes: empty file, expected a mesh (OBJ, OFF, PLY or STL)");
+    CHECK(error_of("hello world\n", "x.txt") == "x.txt: not a mesh file this reader knows (OBJ, OFF, PLY or STL)");
+    // OFF goes to the existing reader, with its own messages; non-finite coordinates are refused here.
+    CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "t.off").rfind("t.off:6:", 0) == 0);
+    CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n", "t.off") == "t.off: vertex 1 has a non-finite coordinate");
+}
+
+TEST_CASE("mesh_read: the committed fixtures read", "[mesh_read]") {
+    for (const char* name : {"route/vessel.obj", "route/load.stl", "route/plate.ply", "route/post.off"}) {
+        INFO(name);
+        std::string bytes, error;
+        REQUIRE(hullkit::read_file(hullkit_test::data_path(name), &bytes, &error));
+        MeshResult mesh = hullkit::read_mesh(bytes, name);
+        INFO(mesh.error);
+        CHECK(mesh.ok());
+        CHECK(mesh.triangle_count() > 0);
+    }
+}
