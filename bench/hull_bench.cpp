@@ -15,6 +15,12 @@
 //                 output (outfile NULL). Override with --qhull-options (must start with "qhull").
 //   cgal          CGAL::convex_hull_3 (CGAL 5.x) over std::vector<Point_3> with the
 //                 Exact_predicates_inexact_constructions_kernel, into a CGAL::Surface_mesh.
+//   command-hullkit  the whole command a user runs, one fresh process per run:
+//                 `hullkit hull FILE -o OUT.off` (text in, OFF out; hullkit next to this binary
+//                 unless --hullkit PATH), FILE being a text point file (rbox format).
+//   command-qconvex  the same for Qhull's command: `qconvex o < FILE > OUT.off`.
+//                 For the two command rows the time is the child's wall time (fork to exit), and
+//                 peak_rss_mb its own peak (wait4's ru_maxrss), minor_faults its minor page faults.
 //
 // Input file: raw little-endian IEEE-754 doubles, x0 y0 z0 x1 y1 z1 ..., no header; the point count
 // is the file size / 24. bench/make_inputs.mjs writes them.
@@ -24,6 +30,11 @@
 // of Point_3 built once before the first run). Everything is freed between runs, outside the timed
 // part (Qhull: qh_freeqhull + qh_memfreeshort; hullkit and CGAL: the result's destructor). Once the
 // runs so far add up to more than --budget seconds no further run is started (at least one runs).
+//
+// The first run of the in-process implementations is the first call in a fresh process (nothing
+// warmed: allocator, page tables, caches), what a user of `hullkit hull` gets; it is reported as
+// "first" (with its minor page faults, "first_minor_faults") beside "warm_median", the median of
+// the later runs.
 //
 // Output: one JSON line on stdout:
 //   {"impl", "input", "file", "n", "runs": [seconds...], "median", "vertices", "faces",
@@ -51,7 +62,10 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "hullkit/hull.hpp"
 
@@ -68,6 +82,7 @@ struct Args {
     int runs = 5;
     double budget = 60.0;
     std::string qhull_options = "qhull";
+    std::string hullkit_cli;  // command-hullkit: the CLI (default: "hullkit" next to this binary)
 };
 
 /// One timed run: returns seconds and fills in the counts of the result it produced.
@@ -75,6 +90,8 @@ struct RunResult {
     double seconds = 0.0;
     std::size_t vertices = 0;
     std::size_t faces = 0;
+    double peak_rss_mb = 0.0;  // command rows: the child's peak
+    long minor_faults = 0;     // command rows: the child's minor page faults
     std::string error;  // empty on success
 };
 
@@ -158,6 +175,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+long minor_faults_so_far() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_minflt;
+}
+
 // ---- the implementations: each returns a function performing one timed run ----
 
 using Runner = std::function<RunResult()>;
@@ -234,6 +257,64 @@ Runner cgal_runner(const std::vector<Point3>& points) {
     };
 }
 
+/// "V F" from the counts line of an OFF file (hullkit: "OFF" then "V F 0"; qconvex o: "3" then
+/// "V F R"): the first line with three numbers.
+void read_off_counts(const std::string& path, RunResult& r) {
+    std::ifstream in(path);
+    std::string line;
+    for (int k = 0; k < 3 && std::getline(in, line); ++k) {
+        std::istringstream fields(line);
+        std::size_t v = 0, f = 0, e = 0;
+        if (fields >> v >> f >> e) {
+            r.vertices = v;
+            r.faces = f;
+            return;
+        }
+    }
+    r.error = path + ": no OFF counts line in the output";
+}
+
+/// One run of a command in a fresh process: stdin from `in` (unless empty), stdout to `out`.
+Runner command_runner(std::vector<std::string> argv, std::string in, std::string out, std::string off) {
+    return [argv, in, out, off]() {
+        RunResult r;
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        const auto start = std::chrono::steady_clock::now();
+        const pid_t pid = fork();
+        if (pid == 0) {
+            if (!in.empty()) {
+                const int fd = open(in.c_str(), O_RDONLY);
+                if (fd < 0 || dup2(fd, 0) < 0) _exit(126);
+                close(fd);
+            }
+            const int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            if (fd < 0 || dup2(fd, 1) < 0) _exit(126);
+            close(fd);
+            execvp(args[0], args.data());
+            _exit(127);
+        }
+        if (pid < 0) {
+            r.error = std::string("fork failed: ") + std::strerror(errno);
+            return r;
+        }
+        int status = 0;
+        rusage usage{};
+        wait4(pid, &status, 0, &usage);
+        r.seconds = seconds_since(start);
+        r.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
+        r.minor_faults = usage.ru_minflt;
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            r.error = argv[0] + " failed (status " + std::to_string(status) + ")";
+            return r;
+        }
+        read_off_counts(off, r);
+        unlink(off.c_str());
+        return r;
+    };
+}
+
 void usage_and_exit(const char* message) {
     if (message) std::fprintf(stderr, "hullkit_bench: %s\n", message);
     std::fprintf(stderr,
@@ -256,6 +337,7 @@ Args parse_args(int argc, char** argv) {
         else if (key == "--runs") args.runs = std::atoi(value().c_str());
         else if (key == "--budget") args.budget = std::atof(value().c_str());
         else if (key == "--qhull-options") args.qhull_options = value();
+        else if (key == "--hullkit") args.hullkit_cli = value();
         else if (key == "--help" || key == "-h") usage_and_exit(nullptr);
         else usage_and_exit(("unknown argument " + key).c_str());
     }
@@ -263,6 +345,11 @@ Args parse_args(int argc, char** argv) {
     if (args.runs < 1) usage_and_exit("--runs must be at least 1");
     if (args.qhull_options.rfind("qhull", 0) != 0) usage_and_exit("--qhull-options must start with \"qhull\"");
     if (args.name.empty()) args.name = basename_without_bin(args.input);
+    if (args.hullkit_cli.empty()) {
+        const std::string self = argv[0];
+        const std::size_t slash = self.find_last_of('/');
+        args.hullkit_cli = (slash == std::string::npos ? std::string(".") : self.substr(0, slash)) + "/hullkit";
+    }
     return args;
 }
 
@@ -278,9 +365,19 @@ int main(int argc, char** argv) {
         std::cout << head.str() << ",\"n\":" << n << ",\"error\":" << json_string(error) << "}" << std::endl;
     };
 
+    const bool command = args.impl.rfind("command-", 0) == 0;
     std::vector<double> xyz;
     std::string error;
-    if (!read_points(args.input, xyz, error)) {
+    if (command) {
+        // The input is a text file; the point count is its second line (rbox format).
+        std::ifstream in(args.input);
+        std::string header, count;
+        if (!in || !std::getline(in, header) || !std::getline(in, count)) {
+            fail("cannot read the rbox header of " + args.input, 0);
+            return 1;
+        }
+        xyz.resize(3 * std::strtoull(count.c_str(), nullptr, 10));
+    } else if (!read_points(args.input, xyz, error)) {
         fail(error, 0);
         return 1;
     }
@@ -305,6 +402,18 @@ int main(int argc, char** argv) {
         }
         detail = "qh_new_qhull \"" + args.qhull_options + "\" (Qhull " + qh_version + ")";
         run = qhull_runner(xyz, args.qhull_options);
+    } else if (command) {
+        const std::string off = "/tmp/hullkit_bench_" + std::to_string(getpid()) + ".off";
+        if (args.impl == "command-hullkit") {
+            detail = "hullkit hull FILE -o OUT.off (" + args.hullkit_cli + ")";
+            run = command_runner({args.hullkit_cli, "hull", args.input, "-o", off}, "", "/dev/null", off);
+        } else if (args.impl == "command-qconvex") {
+            detail = "qconvex o < FILE > OUT.off";
+            run = command_runner({"qconvex", "o"}, args.input, off, off);
+        } else {
+            fail("unknown command implementation \"" + args.impl + "\" (known: command-hullkit, command-qconvex)", n);
+            return 2;
+        }
     } else if (args.impl == "cgal") {
         cgal_points.reserve(n);
         for (std::size_t i = 0; i < n; ++i) cgal_points.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
@@ -319,9 +428,14 @@ int main(int argc, char** argv) {
     std::vector<double> times;
     RunResult last;
     double total = 0.0;
+    double command_peak = 0.0;
+    long first_faults = 0;
     for (int k = 0; k < args.runs; ++k) {
         if (k > 0 && total > args.budget) break;
+        const long faults_before = minor_faults_so_far();
         last = run();
+        if (k == 0) first_faults = command ? last.minor_faults : minor_faults_so_far() - faults_before;
+        command_peak = std::max(command_peak, last.peak_rss_mb);
         if (!last.error.empty()) {
             fail(last.error, n);
             return 1;
@@ -330,16 +444,24 @@ int main(int argc, char** argv) {
         total += last.seconds;
     }
 
+    auto median_of = [](std::vector<double> v) {
+        if (v.empty()) return std::nan("");
+        std::sort(v.begin(), v.end());
+        const std::size_t m = v.size();
+        return m % 2 ? v[m / 2] : 0.5 * (v[m / 2 - 1] + v[m / 2]);
+    };
     std::vector<double> sorted = times;
     std::sort(sorted.begin(), sorted.end());
-    const std::size_t m = sorted.size();
-    const double median = m % 2 ? sorted[m / 2] : 0.5 * (sorted[m / 2 - 1] + sorted[m / 2]);
+    const double median = median_of(times);
+    const double warm_median = median_of(std::vector<double>(times.begin() + 1, times.end()));
 
     std::cout << head.str() << ",\"n\":" << n << ",\"detail\":" << json_string(detail) << ",\"runs\":[";
     for (std::size_t k = 0; k < times.size(); ++k) std::cout << (k ? "," : "") << json_number(times[k]);
     std::cout << "],\"runs_requested\":" << args.runs << ",\"median\":" << json_number(median)
-              << ",\"min\":" << json_number(sorted.front()) << ",\"vertices\":" << last.vertices
-              << ",\"faces\":" << last.faces << ",\"peak_rss_mb\":" << json_number(peak_rss_mb())
-              << ",\"input_rss_mb\":" << json_number(input_rss) << "}" << std::endl;
+              << ",\"min\":" << json_number(sorted.front()) << ",\"first\":" << json_number(times.front())
+              << ",\"warm_median\":" << json_number(warm_median) << ",\"first_minor_faults\":" << first_faults
+              << ",\"vertices\":" << last.vertices << ",\"faces\":" << last.faces
+              << ",\"peak_rss_mb\":" << json_number(command ? command_peak : peak_rss_mb())
+              << ",\"input_rss_mb\":" << json_number(command ? 0.0 : input_rss) << "}" << std::endl;
     return 0;
 }

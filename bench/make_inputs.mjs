@@ -13,7 +13,10 @@
 //   bunny                   the vertices of the Stanford bunny from the npm package `bunny`
 //   ball-1e3 ... ball-3e4   the gift wrapping scaling series (n = 1e3, 3e3, 1e4, 3e4; ball-1e5 above
 //                           is its last member)
-import { existsSync, mkdirSync, statSync, writeFileSync, renameSync } from 'node:fs';
+// The cube and sphere inputs are also written as text, NAME.txt, in qhull's rbox format ("3 rbox
+// ...", the count, then "x y z" lines, each number JavaScript's shortest text that reads back to
+// the same double), for the command-line rows (hullkit hull FILE vs qconvex o < FILE).
+import { closeSync, existsSync, mkdirSync, openSync, readFileSync, statSync, writeFileSync, writeSync, renameSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -142,5 +145,34 @@ for (const input of inputs) {
   writeFileSync(temporary, toLittleEndianBytes(xyz));
   renameSync(temporary, file);
   console.error(`make_inputs: wrote ${file} (${input.n} points, ${((performance.now() - started) / 1000).toFixed(1)} s)`);
+}
+// Text copies for the command-line rows, from the binary files (so the points are the same).
+// A text file is rewritten only when missing or older than its binary.
+function writeRboxText(binFile, textFile, name) {
+  const bytes = readFileSync(binFile);
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const n = bytes.byteLength / 24;
+  const temporary = `${textFile}.tmp`;
+  const fd = openSync(temporary, 'w');
+  let chunk = `3 rbox-style ${name} (hullkit bench/make_inputs.mjs)\n${n}\n`;
+  for (let i = 0; i < n; i++) {
+    chunk += `${view.getFloat64(24 * i, true)} ${view.getFloat64(24 * i + 8, true)} ${view.getFloat64(24 * i + 16, true)}\n`;
+    if (chunk.length > 1 << 20) {
+      writeSync(fd, chunk);
+      chunk = '';
+    }
+  }
+  writeSync(fd, chunk);
+  closeSync(fd);
+  renameSync(temporary, textFile);
+}
+for (const entry of manifest) {
+  if (entry.kind !== 'cube' && entry.kind !== 'sphere') continue;
+  const binFile = join(outDir, entry.file);
+  const textFile = join(outDir, `${entry.name}.txt`);
+  entry.text = `${entry.name}.txt`;
+  if (existsSync(textFile) && statSync(textFile).mtimeMs >= statSync(binFile).mtimeMs) continue;
+  writeRboxText(binFile, textFile, entry.name);
+  console.error(`make_inputs: wrote ${textFile}`);
 }
 writeFileSync(join(outDir, 'inputs.json'), JSON.stringify(manifest, null, 2) + '\n');

@@ -4,7 +4,10 @@
 #      the wasm module (scripts/build.sh wasm);
 #   2. writes the inputs to bench/out/ (bench/make_inputs.mjs; kept when already there);
 #   3. runs every implementation x input, one process each, one after the other (never two at
-#      once: the machine has 2 cores), collecting the JSON lines in bench/out/results.jsonl;
+#      once: the machine has 2 cores), collecting the JSON lines in bench/out/results.jsonl; the
+#      first run of each process is its first call (reported beside the warm median), and the
+#      whole command (hullkit hull FILE -o OUT.off vs qconvex o < FILE > OUT.off) runs in a fresh
+#      process per run on the text copies of the 1e6 cube and sphere;
 #   4. bench/report.mjs turns them into bench/out/results.json, bench/results.md and
 #      bench/results.svg and prints the targets summary.
 # Environment:
@@ -25,7 +28,7 @@ say() { printf '%s\n' "$*" >&2; }
 if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ]; then
   say "bench: building build/bench"
   cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DHULLKIT_TESTS=OFF -DHULLKIT_BENCH=ON >/dev/null
-  cmake --build build/bench -j 2 --target hullkit_bench >/dev/null
+  cmake --build build/bench -j 2 --target hullkit_bench hullkit >/dev/null
   wasm=build/wasm/hullkit_core.wasm
   if [ ! -f "$wasm" ] || [ -n "$(find native/src native/include wasm CMakeLists.txt -newer "$wasm" -type f 2>/dev/null | head -n 1)" ]; then
     say "bench: the core changed since the wasm build: bash scripts/build.sh wasm"
@@ -78,7 +81,11 @@ bench_one() {
   runs=$(runs_for "$input")
   step=$((step + 1))
   local cmd
-  if [ "$kind" = native ]; then
+  if [ "$kind" = command ]; then
+    # The whole command, one fresh process per run, 3 runs: text file in, OFF file out.
+    runs=$([ "$quick" = 1 ] && echo 1 || echo 3)
+    cmd=("$native_bench" --impl "$impl" --input "$out/$input.txt" --name "$input" --runs "$runs" --budget 60)
+  elif [ "$kind" = native ]; then
     cmd=("$native_bench" --impl "$impl" --input "$out/$input.bin" --runs "$runs" --budget 60)
   else
     cmd=(node bench/wasm_bench.mjs --impl "$impl" --input "$out/$input.bin" --runs "$runs" --budget 60 --cap 60)
@@ -96,7 +103,8 @@ bench_one() {
   node -e '
     const r = JSON.parse(process.argv[1]);
     const t = r.error ? `error: ${r.error}` : r.capped && r.median === null ? `> ${r.cap_seconds} s`
-      : `median ${r.median.toPrecision(3)} s over ${r.runs.length} run(s), ${r.vertices} hull vertices`;
+      : `first ${r.first == null ? "> cap" : r.first.toPrecision(3) + " s"}, median ${r.median.toPrecision(3)} s over ${r.runs.length} run(s), ${r.vertices} hull vertices` +
+        (r.kind === "command" ? `, peak ${r.peak_rss_mb.toFixed(1)} MB` : "");
     console.error(`bench: [${process.argv[2]}] ${r.kind} ${r.impl} ${r.input}: ${t}`);
   ' "$line" "$step"
 }
@@ -111,6 +119,14 @@ done
 # sphere inputs where h = n. Its scaling series is n = 1e3 ... 1e5 in a ball.
 for input in bunny cube-1e5 ball-1e3 ball-3e3 ball-1e4 ball-3e4 ball-1e5; do
   bench_one native hullkit-giftwrap "$input"
+done
+
+say "bench: the whole command: hullkit hull FILE -o OUT.off vs qconvex o < FILE > OUT.off"
+if [ "$quick" = 1 ]; then command_inputs=(cube-1e5 sphere-1e5); else command_inputs=(cube-1e6 sphere-1e6); fi
+for input in "${command_inputs[@]}"; do
+  for impl in command-hullkit command-qconvex; do
+    bench_one command "$impl" "$input"
+  done
 done
 
 say "bench: JavaScript runs (Node $(node --version): hullkit wasm, quickhull3d, three.js)"

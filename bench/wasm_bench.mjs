@@ -16,6 +16,9 @@
 // The two peers do not take a flat Float64Array, so their times include building their input
 // format from it (reported separately as convert_median as well); hullkit's does not need that.
 // Module loading (createHullkit, imports) and reading the file are not timed.
+// The first run is the first call in a fresh Node process, right after createHullkit() (or the
+// peer's import): what a page or script calling hull() once gets, before V8 has optimised
+// anything for this input. It is reported as "first", beside "warm_median" (the later runs).
 //
 // Input file: raw little-endian float64 x0 y0 z0 x1 y1 z1 ... (see bench/make_inputs.mjs).
 //
@@ -252,6 +255,10 @@ function supervise(args) {
         const done = runs.filter((t) => t !== null);
         out.min = done.length ? Math.min(...done) : null;
         if (converts.length) out.convert_median = median(converts);
+        out.first = runs[0] ?? null; // null: the first run itself was stopped at the cap
+        out.first_capped = runs[0] === null;
+        const warm = runs.slice(1).filter((t) => t !== null);
+        out.warm_median = warm.length ? median(warm) : null;
       }
       resolve(out);
     });

@@ -575,3 +575,24 @@ void check_against_qconvex(const std::string& rbox_args) {
 TEST_CASE("cli: hull matches qconvex for rbox 2000 D3") { check_against_qconvex("2000 D3"); }
 
 TEST_CASE("cli: hull matches qconvex for rbox 500 s D3") { check_against_qconvex("500 s D3"); }
+
+TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
+    TempDir dir("hullkit-cli");
+    const std::string stl = data_path("binary-two-triangles.stl");
+    RunResult result = run_cli(dir, {"hull", stl});
+    CHECK(single_error_line(result) == "hullkit: " + stl +
+                                           ": not a point file: binary STL is not supported by the point reader "
+                                           "(read: xyz, rbox, OBJ, OFF)");
+    CHECK(result.out.empty());
+    // Through standard input too, and for arbitrary binary data: printable ASCII only.
+    const std::string junk = dir.file("junk.bin");
+    std::string bytes;
+    for (int i = 0; i < 256; ++i) bytes += static_cast<char>(255 - i);
+    write_text(junk, bytes);
+    const std::string message = "hullkit: <stdin>: not a point file: binary data (byte 0x7f at offset 128)";  // bytes >= 0x80 may be UTF-8 text
+    RunResult redirected = run_cli(dir, {"hull"}, junk);
+    CHECK(single_error_line(redirected) == message);
+    RunResult piped = run_shell(dir, "cat " + sh_quote(junk) + " | " + sh_quote(HULLKIT_CLI_PATH) + " hull");
+    CHECK(single_error_line(piped) == message);
+    for (unsigned char c : piped.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
+}

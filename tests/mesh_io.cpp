@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
@@ -471,4 +473,134 @@ TEST_CASE("mesh_io: read_file reports a missing file") {
 TEST_CASE("mesh_io: malformed fixture names line 3") {
     CHECK(error_of(load("malformed-line3.txt"), "malformed-line3.txt") ==
           "malformed-line3.txt:3: expected 3 coordinates, got 2");
+}
+
+namespace {
+
+/// parse_points through the chunked file reader: the text in a temporary file (a regular file,
+/// whose size the reader uses) or, with `as_stream`, behind fmemopen (no size known).
+PointsResult read_via_file(const std::string& text, bool as_stream) {
+    std::FILE* file = as_stream ? fmemopen(const_cast<char*>(text.data()), text.size(), "rb") : std::tmpfile();
+    REQUIRE(file != nullptr);
+    if (!as_stream) {
+        REQUIRE(std::fwrite(text.data(), 1, text.size(), file) == text.size());
+        std::rewind(file);
+    }
+    PointsResult result = hullkit::read_points_file(file, "t.txt");
+    std::fclose(file);
+    return result;
+}
+
+/// The same points or the same message as parse_points, both from a file and from a stream.
+void check_file_reader_agrees(const std::string& text) {
+    const PointsResult expected = parse_points(text, "t.txt");
+    for (bool as_stream : {false, true}) {
+        INFO("as_stream " << as_stream);
+        const PointsResult got = read_via_file(text, as_stream);
+        CHECK(got.error == expected.error);
+        CHECK(got.xyz == expected.xyz);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("mesh_io: the chunked file reader gives parse_points' result across chunk boundaries") {
+    // Several MiB, so lines straddle the 1 MiB chunks; numbers of every length; a comment line
+    // longer than a chunk (the buffer must grow); CRLF and blank lines.
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> uniform(-1e3, 1e3);
+    std::string rbox;
+    std::size_t count = 0;
+    std::string body;
+    while (body.size() < (std::size_t{5} << 20)) {
+        if (count == 40000) body += "# " + std::string(std::size_t{3} << 19, 'c') + "\n\n";
+        for (int k = 0; k < 3; ++k) {
+            body += hullkit::format_double(uniform(random) * std::pow(10.0, static_cast<int>(random() % 30) - 15));
+            body += k < 2 ? " " : (count % 7 ? "\n" : "\r\n");
+        }
+        ++count;
+    }
+    check_file_reader_agrees("3 rbox test\n" + std::to_string(count) + "\n" + body);
+    check_file_reader_agrees(body);                                                  // plain xyz
+    check_file_reader_agrees("OFF\n" + std::to_string(count) + " 0 0\n" + body);   // OFF
+    // Errors name the same line, also far into the file.
+    check_file_reader_agrees(body + "1 2\n");
+    check_file_reader_agrees("3\n" + std::to_string(count + 1) + "\n" + body);
+    check_file_reader_agrees(body.substr(0, body.size() - 1));  // no final newline
+    check_file_reader_agrees("");
+}
+
+TEST_CASE("mesh_io: read_points_file reports a missing file and an unreadable one") {
+    PointsResult missing = hullkit::read_points_file(data_path("no-such-file.txt"));
+    CHECK(missing.error == data_path("no-such-file.txt") + ": cannot open: No such file or directory");
+    PointsResult directory = hullkit::read_points_file(data_path("degenerate"));
+    CHECK(directory.error == data_path("degenerate") + ": cannot read: Is a directory");
+    CHECK(directory.xyz.empty());
+    PointsResult fixture = hullkit::read_points_file(data_path("malformed-line3.txt"));
+    CHECK(fixture.error == data_path("malformed-line3.txt") + ":3: expected 3 coordinates, got 2");
+}
+
+TEST_CASE("mesh_io: binary input and formats not read here are named as such") {
+    // Binary STL: an 80-byte header, the triangle count, 50 bytes per triangle.
+    std::string stl(84 + 2 * 50, '\0');
+    stl.replace(0, 15, "binary STL head");
+    stl[80] = 2;
+    const std::string not_points = "t.txt: not a point file: ";
+    CHECK(error_of(stl) == not_points + "binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    // A header starting with "solid" (which some binary STL writers put there) is still binary.
+    stl.replace(0, 5, "solid");
+    CHECK(error_of(stl) == not_points + "binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    CHECK(error_of(std::string("\x7f" "ELF\x02\x01\x01", 7) + std::string(100, '\0')) ==
+          not_points + "binary data (byte 0x7f at offset 0)");
+    CHECK(error_of(std::string("1 2 3\n4 5\0", 10)) == not_points + "binary data (byte 0x00 at offset 9)");
+    CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1\nend_header\n0 0 0\n") ==
+          not_points + "PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    CHECK(error_of("solid cube\n  facet normal 0 0 1\n    outer loop\n") ==
+          not_points + "ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    // The same through the file reader, and for read_off_mesh.
+    CHECK(read_via_file(stl, false).error == error_of(stl));
+    CHECK(mesh_error_of(stl) ==
+          "m.off: not an OFF file: binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    // Text that merely starts with those words is still read as points.
+    CHECK(points_of("# ply\n1 2 3\n") == std::vector<double>{1, 2, 3});
+}
+
+TEST_CASE("mesh_io: write_hull_file writes what write_hull returns") {
+    // A hull with many vertices, so the file writer flushes its buffer several times.
+    std::vector<double> xyz;
+    Hull hull;
+    hull.dimension = 3;
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const std::uint32_t n = 120000;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) xyz.push_back(uniform(random));
+        if (i % 3 == 1) hull.vertices.push_back(i);  // written in this order, whatever the geometry
+    }
+    for (std::size_t k = 0; k + 2 < hull.vertices.size(); ++k) {
+        hull.triangles.insert(hull.triangles.end(), {hull.vertices[k], hull.vertices[k + 1], hull.vertices[k + 2]});
+    }
+    const PointSpan span(xyz.data(), n);
+    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json}) {
+        INFO(hullkit::output_format_name(format));
+        std::FILE* file = std::tmpfile();
+        REQUIRE(file != nullptr);
+        int error_number = 0;
+        REQUIRE(hullkit::write_hull_file(format, span, hull, file, &error_number));
+        std::string written(static_cast<std::size_t>(std::ftell(file)), '\0');
+        std::rewind(file);
+        REQUIRE(std::fread(&written[0], 1, written.size(), file) == written.size());
+        std::fclose(file);
+        const std::string expected = hullkit::write_hull(format, span, hull);
+        CHECK(written.size() > (std::size_t{2} << 20));
+        CHECK(written == expected);
+    }
+    // A full device: the failure and its errno come back.
+    std::FILE* full = std::fopen("/dev/full", "wb");
+    if (full) {
+        int error_number = 0;
+        CHECK_FALSE(hullkit::write_hull_file(OutputFormat::Off, span, hull, full, &error_number));
+        CHECK(error_number == ENOSPC);
+        std::fclose(full);
+    }
 }

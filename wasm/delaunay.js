@@ -97,12 +97,11 @@ function checkTriangulation(triangulation, count, where) {
 }
 
 /**
- * Runs `call(pointsAddress, count, dimension, trianglesAddress, corners, halfedgesAddress,
+ * With `points` a Float64Array from toFloat64, runs `call(pointsAddress, count, dimension, trianglesAddress, corners, halfedgesAddress,
  * hullAddress, hullCount, representativeAddress)` with everything copied into the heap, freeing
  * it all afterwards.
  */
-function withTriangulationInHeap(core, xy, triangulation, where, call) {
-  const points = toFloat64(xy, where, 2);
+function withTriangulationInHeap(core, points, triangulation, where, call) {
   const count = points.length / 2;
   const t = checkTriangulation(triangulation, count, where);
   const addresses = [];
@@ -125,11 +124,12 @@ function checkFinite(value, name, where) {
 export function delaunayFind(core, xy, triangulation, x, y, start = 0) {
   checkFinite(x, 'x', 'find');
   checkFinite(y, 'y', 'find');
-  const count = toFloat64(xy, 'find', 2).length / 2;
+  const points = toFloat64(xy, 'find', 2);
+  const count = points.length / 2;
   if (!Number.isInteger(start) || start < 0 || (count > 0 && start >= count)) {
     throw new HullkitError(`find: start must be a point index from 0 to ${count - 1}, got ${String(start)}`);
   }
-  return withTriangulationInHeap(core, xy, triangulation, 'find', (...heap) => core.delaunayFindFromHeap(...heap, x, y, start));
+  return withTriangulationInHeap(core, points, triangulation, 'find', (...heap) => core.delaunayFindFromHeap(...heap, x, y, start));
 }
 
 /** Voronoi cells clipped to bounds [xmin, ymin, xmax, ymax] (see hullkit.d.ts). */
@@ -142,7 +142,7 @@ export function delaunayVoronoi(core, xy, triangulation, bounds) {
   if (!(xmin < xmax && ymin < ymax)) {
     throw new HullkitError(`voronoi: bounds [${xmin}, ${ymin}, ${xmax}, ${ymax}] are empty (need xmin < xmax and ymin < ymax)`);
   }
-  const cells = withTriangulationInHeap(core, xy, triangulation, 'voronoi', (...heap) =>
+  const cells = withTriangulationInHeap(core, toFloat64(xy, 'voronoi', 2), triangulation, 'voronoi', (...heap) =>
     core.delaunayVoronoiFromHeap(...heap, xmin, ymin, xmax, ymax));
   try {
     return { cellOffsets: cells.cellOffsetsView().slice(), cellXY: cells.cellXYView().slice() };

@@ -117,6 +117,25 @@ export interface Hullkit {
   voronoi(xy: Float64Array | ArrayLike<number>, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
   /** The algorithm names `delaunay` accepts, the default first. */
   readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
+  /**
+   * Checks a traverse moved along the scene's route (straight translations) against its obstacles,
+   * one exact check per leg: the convex hull of each part at both ends of a leg contains all it
+   * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
+   * hits (no contact invented for non-convex parts). Returns the same report as `hullkit route`.
+   * Meshes may be inline, bytes (`mesh: Uint8Array`), or file names looked up in `options.files`.
+   *
+   * @throws {HullkitError} for a malformed scene or mesh (the message names the field, e.g.
+   *   "checkRoute: scene: obstacles[2].box.min: expected 3 numbers [x, y, z], got 2 values", or
+   *   the mesh and its line), fewer than two waypoints, a non-finite number, a rotation, or an
+   *   unknown option.
+   */
+  checkRoute(scene: RouteScene, options?: RouteCheckOptions & RouteSceneOptions): RouteReport;
+  /**
+   * A scene prepared once (the parts' hulls and the obstacles' bounding-volume hierarchy) for
+   * many {@link RouteChecker.check} calls, e.g. while waypoints are dragged. The scene's `route`
+   * may be left out. Free it with `delete()` (or `using checker = new hullkit.RouteChecker(...)`).
+   */
+  RouteChecker: new (scene: RouteScene, options?: RouteSceneOptions) => RouteChecker;
 }
 
 /** Algorithms available to {@link Hullkit.delaunay}; every one returns identical triangles. */
@@ -211,6 +230,127 @@ export interface VerifyReport {
   vertexCount: number;
   /** Planar faces (edge-connected coplanar triangles merged). */
   faceCount: number;
+}
+
+/** [x, y, z]. */
+export type Vec3 = [number, number, number];
+
+/**
+ * A traverse part or an obstacle: exactly one of `box`, `vertices` + `triangles`, or `mesh`.
+ * Triangle soups and open surfaces (a single plate) are allowed; a closed mesh also counts its
+ * inside. Without `name`, a part is called "part K" and an obstacle "obstacle K" in reports.
+ */
+export interface RouteShape {
+  name?: string;
+  /** An axis-aligned box (12 triangles). */
+  box?: { min: Vec3; max: Vec3 };
+  /** Vertices as [[x, y, z], ...] or a flat Float64Array x0 y0 z0 x1 ... */
+  vertices?: Vec3[] | Float64Array;
+  /** Triangles as [[i, j, k], ...] (0-based vertex indices) or a flat Uint32Array. */
+  triangles?: [number, number, number][] | Uint32Array;
+  /**
+   * A mesh file, OBJ, OFF, PLY (ascii or binary) or STL (ASCII or binary), detected from its
+   * content: its bytes, or a name looked up in `options.files`.
+   */
+  mesh?: Uint8Array | ArrayBuffer | string;
+}
+
+/** The scene: the same object as the JSON `hullkit route` reads. No rotations: translations only. */
+export interface RouteScene {
+  traverse: { parts: RouteShape[] };
+  /**
+   * Waypoints: translation offsets applied to every traverse vertex; waypoint k to k + 1 is leg k.
+   * At least two (optional for a RouteChecker, whose check() takes the route).
+   */
+  route?: Vec3[] | Float64Array;
+  obstacles: RouteShape[];
+  /** Required clearance (default 0): a leg is clear only when the traverse stays more than this away. */
+  margin?: number;
+}
+
+export interface RouteSceneOptions {
+  /** Mesh files by the names the scene's `mesh` fields use. */
+  files?: Record<string, Uint8Array | ArrayBuffer> | Map<string, Uint8Array | ArrayBuffer>;
+}
+
+export interface RouteCheckOptions {
+  /**
+   * Also report per leg what checking N + 1 evenly spaced poses (fractions 0, 1/N, ..., 1) would
+   * have found (`sampled`), for comparison. Default 0 (off).
+   */
+  samples?: number;
+  /** Compute the clearance of clear legs (default true); false gives the verdicts alone, faster. */
+  clearance?: boolean;
+}
+
+/** One leg's answer; `fraction` values are fractions of the leg, 0 at its start, 1 at its end. */
+export type RouteLeg =
+  | {
+      /** The traverse comes within `margin` of an obstacle during the leg. */
+      status: 'hit';
+      obstacle: string;
+      /** Index of the obstacle's triangle in contact. */
+      triangle: number;
+      part: string;
+      /** Brackets the first contact: hi - lo <= 1e-9, lo never after the true first contact. */
+      fraction: [number, number];
+      /** The traverse offset at fraction[0]. */
+      position: Vec3;
+      sampled?: RouteSampled;
+    }
+  | {
+      /** More than `margin` from every obstacle over the whole leg. */
+      status: 'clear';
+      /** Minimum distance over the leg, to 1e-9 relative; null when not computed or without obstacles. */
+      clearance: number | null;
+      /** The nearest obstacle and the fraction where the minimum occurs (null when not computed). */
+      obstacle: string | null;
+      fraction: number | null;
+      sampled?: RouteSampled;
+    }
+  | {
+      /** Already within `margin` of an obstacle at the leg's start. */
+      status: 'start-overlap';
+      obstacle: string;
+      part: string;
+      triangle: number;
+      sampled?: RouteSampled;
+    };
+
+/** With `samples`: whether N-step sampling finds a contact, and the first sampled fraction that does. */
+export interface RouteSampled {
+  hit: boolean;
+  fraction: number | null;
+}
+
+/** The report of `hullkit route`, and of checkRoute / RouteChecker.check. */
+export interface RouteReport {
+  /** Every leg clear. */
+  clear: boolean;
+  /** Smallest clearance over the legs (null when none was computed). */
+  min_clearance: number | null;
+  legs: RouteLeg[];
+  /** Preparing the scene (hulls, BVH) after reading it. */
+  build_seconds: number;
+  /** Checking all legs. */
+  seconds: number;
+}
+
+/** See {@link Hullkit.RouteChecker}. */
+export interface RouteChecker {
+  /**
+   * Checks `route` ([[x, y, z], ...] or a flat Float64Array; the scene's own route when omitted)
+   * against the prepared scene.
+   * @throws {HullkitError} for fewer than two waypoints, a non-finite one, or after delete().
+   */
+  check(route?: Vec3[] | Float64Array, options?: RouteCheckOptions): RouteReport;
+  /** Seconds spent preparing the scene. */
+  readonly buildSeconds: number;
+  /** True once delete() was called. */
+  readonly deleted: boolean;
+  /** Frees the WebAssembly memory; later calls throw. Harmless twice. */
+  delete(): void;
+  [Symbol.dispose](): void;
 }
 
 /** What hullkit throws for bad input: the message says what is wrong and where. */

@@ -1,7 +1,12 @@
 // Web Worker: generates (or parses) the points and computes their convex hull
 // with the hullkit WebAssembly module, so that the page stays responsive.
 //
-// worker -> main  {type: 'ready', algorithms}                  once the module is loaded
+// Shared by every view: each request carries an id, answered by one 'result' or 'error' with it.
+//
+// worker -> main  {type: 'ready', algorithms, delaunay, route}   once the module is loaded
+//                 (delaunay: {algorithms, native} — native false while the wasm build has no
+//                 hullkit.delaunay and lifting with hullkit.hull stands in; route: true when
+//                 hullkit.checkRoute is built)
 //                 {type: 'load-error', message}                if it cannot be loaded
 // main -> worker  {type: 'compute', id, distribution, n, seed, algorithm?, epsilon?,
 //                  mergeCoplanar?, text?}
@@ -10,6 +15,13 @@
 //                  hullMs, genMs, workerMs}                     (buffers transferred)
 //                 {type: 'error', id, kind, message, n, xyz?, comparison?}
 //                                                               (xyz transferred when available)
+// main -> worker  {type: 'delaunay', id, xy, algorithm?, voronoi?: [xmin, ymin, xmax, ymax]}
+// worker -> main  {type: 'result', id, dimension, triangles, halfedges, hull, representative,
+//                  duplicateCount, cells?: {cellOffsets, cellXY}, engine, ms, voronoiMs}
+// main -> worker  {type: 'route', id, scene, route, samples}
+// worker -> main  {type: 'result', id, report, sweeps: [{leg, part, triangles}], ms}
+//                 (sweeps: each part's swept hull per leg, from hullkit.hull of the part's
+//                 vertices at both ends of the leg: indices into [vertices + a, vertices + b])
 //   kind: 'input'    the input was rejected (by the library or the text parser)
 //         'load'     the hullkit module could not be loaded / instantiated
 //         'internal' anything else (wasm trap, malformed result, bug)
@@ -21,6 +33,8 @@
 //               faces, volume, area}, dropped (Uint32Array: exact hull vertices the seed's hull
 //               lacks), added (count of seed hull vertices that are not extreme)}
 import { generatePoints, parsePoints } from './distributions.js';
+import { liftDelaunay, voronoiCells } from './lift-delaunay.js';
+import { partVertices } from './route-scenes.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
 
@@ -43,12 +57,34 @@ function loadHullkit() {
 loadHullkit().then(
   (hullkit) => {
     const algorithms = Array.isArray(hullkit.algorithms) ? [...hullkit.algorithms].map(String) : null;
-    self.postMessage({ type: 'ready', algorithms });
+    nativeDelaunay = probe(() => hullkit.delaunay(Float64Array.of(0, 0, 1, 0, 0, 1)));
+    const delaunay = {
+      native: nativeDelaunay,
+      algorithms: nativeDelaunay && Array.isArray(hullkit.delaunayAlgorithms) ? [...hullkit.delaunayAlgorithms] : ['lifting'],
+    };
+    const route = probe(() => hullkit.checkRoute({
+      traverse: { parts: [{ name: 'p', box: { min: [0, 0, 0], max: [1, 1, 1] } }] },
+      route: [[0, 0, 0], [1, 0, 0]],
+      obstacles: [{ name: 'o', box: { min: [5, 5, 5], max: [6, 6, 6] } }],
+    }));
+    self.postMessage({ type: 'ready', algorithms, delaunay, route });
   },
   (err) => {
     self.postMessage({ type: 'load-error', message: loadErrorMessage(err) });
   },
 );
+
+let nativeDelaunay = false;
+
+/** Does `call` work in this wasm build? (Functions still to be built throw.) */
+function probe(call) {
+  try {
+    call();
+    return true;
+  } catch {
+    return false;
+  }
+}
 
 function loadErrorMessage(err) {
   return `could not load the hullkit WebAssembly module (${HULLKIT_URL}): ${describe(err)}`;
@@ -63,8 +99,9 @@ function isInputError(err) {
 
 self.onmessage = (event) => {
   const msg = event.data;
-  if (msg && msg.type === 'compute') {
-    compute(msg).catch((err) => {
+  const run = msg && { compute, delaunay: delaunayJob, route: routeJob }[msg.type];
+  if (run) {
+    run(msg).catch((err) => {
       // Should not happen (compute catches everything), but never drop it.
       self.postMessage({ type: 'error', id: msg.id, kind: 'internal', message: describe(err), n: msg.n });
     });
@@ -296,4 +333,94 @@ function uniqueEdges(keys, n) {
     out.push(lo, keys[i] - lo * n);
   }
   return Uint32Array.from(out);
+}
+
+// ---------------------------------------------------------------- Delaunay and Route views
+
+/**
+ * Runs `job(hullkit)` for request `id` once the module is loaded; a load failure or a throw is
+ * answered as an error message ('load', 'input' or 'internal').
+ */
+async function withHullkit(id, job) {
+  let hullkit;
+  try {
+    hullkit = await loadHullkit();
+  } catch (err) {
+    self.postMessage({ type: 'error', id, kind: 'load', message: loadErrorMessage(err) });
+    return;
+  }
+  try {
+    job(hullkit);
+  } catch (err) {
+    self.postMessage({ type: 'error', id, kind: isInputError(err) ? 'input' : 'internal', message: describe(err) });
+  }
+}
+
+function delaunayJob({ id, xy, algorithm, voronoi }) {
+  return withHullkit(id, (hullkit) => {
+    const t0 = performance.now();
+    const options = algorithm && algorithm !== 'lifting' ? { algorithm } : {};
+    const result = nativeDelaunay ? hullkit.delaunay(xy, options) : liftDelaunay(hullkit, xy);
+    const ms = performance.now() - t0;
+    let cells;
+    let voronoiMs = 0;
+    if (voronoi) {
+      const v0 = performance.now();
+      cells = nativeDelaunay ? hullkit.voronoi(xy, result, voronoi) : voronoiCells(xy, result, voronoi);
+      voronoiMs = performance.now() - v0;
+    }
+    const out = {
+      type: 'result', id, dimension: result.dimension,
+      triangles: ownedCopy(result.triangles, Uint32Array, 'triangles'),
+      halfedges: ownedCopy(result.halfedges, Int32Array, 'halfedges'),
+      hull: ownedCopy(result.hull, Uint32Array, 'hull'),
+      representative: ownedCopy(result.representative, Uint32Array, 'representative'),
+      duplicateCount: result.duplicateCount,
+      cells, engine: nativeDelaunay ? 'hullkit.delaunay' : 'lifting', ms, voronoiMs,
+    };
+    const transfer = [out.triangles.buffer, out.halfedges.buffer, out.hull.buffer, out.representative.buffer];
+    if (cells) transfer.push(cells.cellOffsets.buffer, cells.cellXY.buffer);
+    self.postMessage(out, transfer);
+  });
+}
+
+// ---------------------------------------------------------------- Route view
+
+let checker = null; // {key, instance}: the last scene's RouteChecker, reused while dragging
+
+function routeJob({ id, scene, route, samples }) {
+  return withHullkit(id, (hullkit) => {
+    const t0 = performance.now();
+    const key = JSON.stringify({ ...scene, route: undefined });
+    if (!checker || checker.key !== key) {
+      checker?.instance.delete();
+      checker = null;
+      checker = { key, instance: new hullkit.RouteChecker(scene) };
+    }
+    const report = checker.instance.check(route, { samples, clearance: true });
+    const ms = performance.now() - t0;
+    self.postMessage({ type: 'result', id, report, sweeps: sweptHulls(hullkit, scene, route), ms });
+  });
+}
+
+/** Each traverse part's swept hull per leg: hullkit.hull of its vertices at both ends. */
+function sweptHulls(hullkit, scene, route) {
+  const sweeps = [];
+  scene.traverse.parts.forEach((part, p) => {
+    const vertices = partVertices(part);
+    const m = vertices.length / 3;
+    const both = new Float64Array(6 * m);
+    for (let leg = 0; leg + 1 < route.length; leg++) {
+      const [a, b] = [route[leg], route[leg + 1]];
+      for (let i = 0; i < m; i++) {
+        for (let k = 0; k < 3; k++) {
+          both[3 * i + k] = vertices[3 * i + k] + a[k];
+          both[3 * (m + i) + k] = vertices[3 * i + k] + b[k];
+        }
+      }
+      const hull = hullkit.hull(both);
+      sweeps.push({ leg, part: p, triangles: hull.triangles });
+    }
+  });
+  return sweeps;
 }

@@ -466,6 +466,224 @@ inline int det3_impl(const double* p, const double* q, const double* r, const do
     return det3_adapt(p, q, r, s, permanent, stage);
 }
 
+// ---------------------------------------------------------------------------------------------
+// incircle
+//
+// det = alift * M(b,c) + blift * M(c,a) + clift * M(a,b), with rows relative to d:
+//   adx = ax - dx, ..., alift = adx^2 + ady^2, M(u,v) = udx * vdy - vdx * udy.
+//
+// Valid range (kIncircleMinMagnitude = 2^-170 .. kIncircleMaxMagnitude = 2^+240), by the argument
+// used for orient3d in predicates.hpp, for a polynomial of degree 4:
+//  * Overflow: differences are below 2^241, products of four of them below 2^964, the permanent and
+//    every partial sum of the exact expansions below 2^969; Veltkamp splitting multiplies by
+//    2^27 + 1 < 2^28 only components of degree at most 2 (differences, lifts, minors: below
+//    2^484): nothing reaches 2^1024. (Components of degree-4 products are never split.)
+//  * Underflow: a nonzero |x| >= 2^-170 is a multiple of q = 2^-222, so every value any stage
+//    computes is a multiple of q^4 = 2^-888; the smallest error bound, about 2^-100 times a nonzero
+//    permanent (>= 2^-888), stays normal (>= 2^-1022), so all error-free transformations are exact
+//    and the relative bounds hold.
+
+// Error bounds of the three filtering stages (Shewchuk 1997, section 6, for the in-circle
+// determinant): stage A accumulates up to 10 roundings per term.
+constexpr double kIncircleBoundA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
+constexpr double kIncircleBoundB = (4.0 + 48.0 * kEpsilon) * kEpsilon;
+constexpr double kIncircleBoundC = (44.0 + 576.0 * kEpsilon) * kEpsilon * kEpsilon;
+
+/// h = e * f for expansions of any length: the sum over f's components of e scaled by each.
+/// `h` has room for 2 * elen * flen components; `scratch` for 2 * elen * flen as well, `part` for
+/// 2 * elen. Returns the length of h.
+int multiply_expansions(int elen, const double* e, int flen, const double* f, double* h,
+                        double* scratch, double* part) {
+    int hlen = 0;
+    for (int j = 0; j < flen; ++j) {
+        const int plen = scale_expansion(elen, e, f[j], part);
+        const int slen = expansion_sum(hlen, h, plen, part, scratch);
+        for (int i = 0; i < slen; ++i) h[i] = scratch[i];
+        hlen = slen;
+    }
+    return hlen;
+}
+
+/// Exact p^2 + q^2 for expansions of at most two components each (at most 16 components).
+int exact_square_sum(int plen, const double* p, int qlen, const double* q, double* h) {
+    double pp[8], qq[8];
+    const int pp_len = multiply_short(plen, p, plen, p, pp);
+    const int qq_len = multiply_short(qlen, q, qlen, q, qq);
+    return expansion_sum(pp_len, pp, qq_len, qq, h);
+}
+
+/// Stage D: exact sign of the in-circle determinant from the exact differences.
+int incircle_exact_sign(double ax, double ay, double bx, double by, double cx, double cy,
+                        double dx, double dy) {
+    double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
+    const int adx_len = exact_diff(ax, dx, adx), ady_len = exact_diff(ay, dy, ady);
+    const int bdx_len = exact_diff(bx, dx, bdx), bdy_len = exact_diff(by, dy, bdy);
+    const int cdx_len = exact_diff(cx, dx, cdx), cdy_len = exact_diff(cy, dy, cdy);
+
+    double alift[16], blift[16], clift[16];
+    const int al = exact_square_sum(adx_len, adx, ady_len, ady, alift);
+    const int bl = exact_square_sum(bdx_len, bdx, bdy_len, bdy, blift);
+    const int cl = exact_square_sum(cdx_len, cdx, cdy_len, cdy, clift);
+    double m_bc[16], m_ca[16], m_ab[16];
+    const int bc = exact_minor(bdx_len, bdx, cdy_len, cdy, cdx_len, cdx, bdy_len, bdy, m_bc);
+    const int ca = exact_minor(cdx_len, cdx, ady_len, ady, adx_len, adx, cdy_len, cdy, m_ca);
+    const int ab = exact_minor(adx_len, adx, bdy_len, bdy, bdx_len, bdx, ady_len, ady, m_ab);
+
+    double scratch[512], part[32];
+    double ta[512], tb[512], tc[512];
+    const int ta_len = multiply_expansions(al, alift, bc, m_bc, ta, scratch, part);
+    const int tb_len = multiply_expansions(bl, blift, ca, m_ca, tb, scratch, part);
+    const int tc_len = multiply_expansions(cl, clift, ab, m_ab, tc, scratch, part);
+    double ab_sum[1024];
+    const int ab_sum_len = expansion_sum(ta_len, ta, tb_len, tb, ab_sum);
+    double det[1536];
+    const int det_len = expansion_sum(ab_sum_len, ab_sum, tc_len, tc, det);
+    return expansion_sign(det_len, det);
+}
+
+/// Exact u * v - w * z of four doubles, as an expansion of at most 4 components.
+inline int product_diff(double u, double v, double w, double z, double* h) {
+    double hi1, lo1, hi2, lo2;
+    two_product(u, v, hi1, lo1);
+    two_product(w, z, hi2, lo2);
+    return two_two_diff(hi1, lo1, hi2, lo2, h);
+}
+
+/// Stages B-D of incircle, entered when the filter could not decide.
+int incircle_adapt(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                   double dy, double permanent, int* stage) {
+    if (permanent == 0.0) {
+        // Every term has a zero factor (in range no nonzero product rounds to zero): a lift of 0
+        // means a point equals d, a zero minor product a zero difference. The determinant is 0.
+        return 0;
+    }
+    const double adx = ax - dx, ady = ay - dy;
+    const double bdx = bx - dx, bdy = by - dy;
+    const double cdx = cx - dx, cdy = cy - dy;
+
+    // Stage B: the exact determinant of the rounded differences.
+    double alift[4], blift[4], clift[4], m_bc[4], m_ca[4], m_ab[4];
+    const int al = product_diff(adx, adx, -ady, ady, alift);
+    const int bl = product_diff(bdx, bdx, -bdy, bdy, blift);
+    const int cl = product_diff(cdx, cdx, -cdy, cdy, clift);
+    const int bc = product_diff(bdx, cdy, cdx, bdy, m_bc);
+    const int ca = product_diff(cdx, ady, adx, cdy, m_ca);
+    const int ab = product_diff(adx, bdy, bdx, ady, m_ab);
+    double scratch[32], part[8];
+    double ta[32], tb[32], tc[32];
+    const int ta_len = multiply_expansions(al, alift, bc, m_bc, ta, scratch, part);
+    const int tb_len = multiply_expansions(bl, blift, ca, m_ca, tb, scratch, part);
+    const int tc_len = multiply_expansions(cl, clift, ab, m_ab, tc, scratch, part);
+    double ab_sum[64];
+    const int ab_sum_len = expansion_sum(ta_len, ta, tb_len, tb, ab_sum);
+    double b_exp[96];
+    const int b_len = expansion_sum(ab_sum_len, ab_sum, tc_len, tc, b_exp);
+
+    double det = estimate(b_len, b_exp);
+    double errbound = kIncircleBoundB * permanent;
+    if (std::fabs(det) > errbound) {
+        if (stage) *stage = 1;
+        return sign_of(det);
+    }
+
+    const double adx_t = diff_roundoff(ax, dx, adx), ady_t = diff_roundoff(ay, dy, ady);
+    const double bdx_t = diff_roundoff(bx, dx, bdx), bdy_t = diff_roundoff(by, dy, bdy);
+    const double cdx_t = diff_roundoff(cx, dx, cdx), cdy_t = diff_roundoff(cy, dy, cdy);
+    if (adx_t == 0.0 && ady_t == 0.0 && bdx_t == 0.0 && bdy_t == 0.0 && cdx_t == 0.0 &&
+        cdy_t == 0.0) {
+        // The differences were exact, so the stage B expansion is the determinant itself.
+        if (stage) *stage = 1;
+        return expansion_sign(b_len, b_exp);
+    }
+
+    // Stage C: the terms linear in the tails (d/dt of lift * minor), in floating point.
+    errbound = kIncircleBoundC * permanent + kResultErrBound * std::fabs(det);
+    det += ((adx * adx + ady * ady) * ((bdx * cdy_t + cdy * bdx_t) - (bdy * cdx_t + cdx * bdy_t)) +
+            2.0 * (adx * adx_t + ady * ady_t) * (bdx * cdy - bdy * cdx)) +
+           ((bdx * bdx + bdy * bdy) * ((cdx * ady_t + ady * cdx_t) - (cdy * adx_t + adx * cdy_t)) +
+            2.0 * (bdx * bdx_t + bdy * bdy_t) * (cdx * ady - cdy * adx)) +
+           ((cdx * cdx + cdy * cdy) * ((adx * bdy_t + bdy * adx_t) - (ady * bdx_t + bdx * ady_t)) +
+            2.0 * (cdx * cdx_t + cdy * cdy_t) * (adx * bdy - ady * bdx));
+    if (std::fabs(det) > errbound) {
+        if (stage) *stage = 2;
+        return sign_of(det);
+    }
+
+    // Stage D: exact.
+    if (stage) *stage = 3;
+    return incircle_exact_sign(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+/// Stage A; falls through to incircle_adapt.
+inline int incircle_impl(double ax, double ay, double bx, double by, double cx, double cy,
+                         double dx, double dy, int* stage) {
+    const double adx = ax - dx, ady = ay - dy;
+    const double bdx = bx - dx, bdy = by - dy;
+    const double cdx = cx - dx, cdy = cy - dy;
+
+    const double bdx_cdy = bdx * cdy, cdx_bdy = cdx * bdy;
+    const double cdx_ady = cdx * ady, adx_cdy = adx * cdy;
+    const double adx_bdy = adx * bdy, bdx_ady = bdx * ady;
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+
+    const double det = alift * (bdx_cdy - cdx_bdy) + blift * (cdx_ady - adx_cdy) +
+                       clift * (adx_bdy - bdx_ady);
+    const double permanent = (std::fabs(bdx_cdy) + std::fabs(cdx_bdy)) * alift +
+                             (std::fabs(cdx_ady) + std::fabs(adx_cdy)) * blift +
+                             (std::fabs(adx_bdy) + std::fabs(bdx_ady)) * clift;
+    const double errbound = kIncircleBoundA * permanent;
+    if (stage) *stage = 0;
+    if (std::fabs(det) > errbound) return sign_of(det);
+    return incircle_adapt(ax, ay, bx, by, cx, cy, dx, dy, permanent, stage);
+}
+
+/// The power of two 2^k bringing [min_abs_nonzero, max_abs] into [2^low_exp, 2^high_exp] (see
+/// predicates_scale_exponent; low_exp, high_exp are the exponents of the range's powers of two).
+bool scale_exponent_for_range(double max_abs_coordinate, double min_abs_nonzero_coordinate,
+                              int low_exp, int high_exp, int* exponent) {
+    if (!(max_abs_coordinate >= 0.0) || !(max_abs_coordinate <= DBL_MAX)) return false;
+    if (max_abs_coordinate == 0.0) {
+        *exponent = 0;
+        return true;
+    }
+    if (!(min_abs_nonzero_coordinate > 0.0) || !(min_abs_nonzero_coordinate <= max_abs_coordinate))
+        return false;
+    // With max = fmax * 2^emax and min = fmin * 2^emin (frexp: fmax, fmin in [0.5, 1)):
+    //   max * 2^k <= 2^high  <=>  emax + k <= high, or <= high + 1 when max is a power of two;
+    //   min * 2^k >= 2^low   <=>  emin + k - 1 >= low.
+    int emax = 0, emin = 0;
+    const double fmax = std::frexp(max_abs_coordinate, &emax);
+    std::frexp(min_abs_nonzero_coordinate, &emin);
+    const int k_high = high_exp - emax + (fmax == 0.5 ? 1 : 0);
+    const int k_low = low_exp + 1 - emin;
+    if (k_low > k_high) return false;
+    int k = 0;
+    if (k < k_low) k = k_low;
+    if (k > k_high) k = k_high;
+    *exponent = k;
+    return true;
+}
+
+/// Stage D of compare_distance: |a-q|^2 - |b-q|^2 from the exact differences.
+int compare_distance_exact(double ax, double ay, double bx, double by, double qx, double qy) {
+    double aqx[2], aqy[2], bqx[2], bqy[2];
+    const int aqx_len = exact_diff(ax, qx, aqx), aqy_len = exact_diff(ay, qy, aqy);
+    const int bqx_len = exact_diff(bx, qx, bqx), bqy_len = exact_diff(by, qy, bqy);
+    double a2[16], b2[16];
+    const int a2_len = exact_square_sum(aqx_len, aqx, aqy_len, aqy, a2);
+    const int b2_len = exact_square_sum(bqx_len, bqx, bqy_len, bqy, b2);
+    for (int i = 0; i < b2_len; ++i) b2[i] = -b2[i];
+    double diff[32];
+    return expansion_sign(expansion_sum(a2_len, a2, b2_len, b2, diff), diff);
+}
+
+// Forward error of (aqx^2 + aqy^2) - (bqx^2 + bqy^2) in floating point: each square carries the
+// rounding of its difference twice and its own (3 eps), each sum one more, the difference one
+// more: at most 5 eps (plus higher order) times the sum of the four squares.
+constexpr double kDistanceBound = (6.0 + 64.0 * kEpsilon) * kEpsilon;
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -477,6 +695,28 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
 
 int orient3d(const double* a, const double* b, const double* c, const double* d) {
     return det3_impl(b, a, c, d, nullptr);
+}
+
+int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+             double dy) {
+    return incircle_impl(ax, ay, bx, by, cx, cy, dx, dy, nullptr);
+}
+
+bool incircle_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate,
+                             int* exponent) {
+    static_assert(kIncircleMaxMagnitude == 0x1p+240 && kIncircleMinMagnitude == 0x1p-170,
+                  "update the exponents below");
+    return scale_exponent_for_range(max_abs_coordinate, min_abs_nonzero_coordinate, -170, 240,
+                                    exponent);
+}
+
+int compare_distance(double ax, double ay, double bx, double by, double qx, double qy) {
+    const double aqx = ax - qx, aqy = ay - qy, bqx = bx - qx, bqy = by - qy;
+    const double a2 = aqx * aqx + aqy * aqy;
+    const double b2 = bqx * bqx + bqy * bqy;
+    const double det = a2 - b2;
+    if (std::fabs(det) > kDistanceBound * (a2 + b2)) return sign_of(det);
+    return compare_distance_exact(ax, ay, bx, by, qx, qy);
 }
 
 int collinear3d(const double* a, const double* b, const double* c) {
@@ -534,6 +774,17 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
 
 int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
     return det3_exact_sign(b, a, c, d);
+}
+
+int incircle_traced(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy, int* stage) {
+    int ignored = 0;
+    return incircle_impl(ax, ay, bx, by, cx, cy, dx, dy, stage ? stage : &ignored);
+}
+
+int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                   double dy) {
+    return incircle_exact_sign(ax, ay, bx, by, cx, cy, dx, dy);
 }
 
 }  // namespace detail

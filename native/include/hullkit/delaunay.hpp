@@ -95,14 +95,33 @@ bool parse_delaunay_algorithm(const std::string& name, DelaunayAlgorithm* out);
 
 /// The input point nearest to (x, y) (exact ties: the lowest index), found by walking the
 /// triangulation from `start` (any point index; a good guess makes it fast). Returns -1 when the
-/// triangulation has no points.
+/// triangulation has no points. Distances are compared exactly (compare_distance). Each call first
+/// indexes the triangulation, O(n); for many queries use DelaunayLocator.
 std::int64_t delaunay_find(PointSpan2 points, const Delaunay& triangulation, double x, double y,
                            std::uint32_t start = 0);
 
+/// delaunay_find for many queries: indexes the triangulation once (one half-edge per point), then
+/// each find walks from `start` (or from the previous answer when start is omitted) over Delaunay
+/// neighbours to the nearest point. Keeps references to `points` and `triangulation`.
+class DelaunayLocator {
+public:
+    DelaunayLocator(PointSpan2 points, const Delaunay& triangulation);
+    std::int64_t find(double x, double y, std::int64_t start = -1);
+
+private:
+    PointSpan2 points_;
+    const Delaunay& triangulation_;
+    std::vector<std::int32_t> outgoing_;  ///< per point: a half-edge leaving it, -1 if none
+    std::int64_t last_ = -1;
+};
+
 /// Voronoi cells clipped to the rectangle [xmin, xmax] x [ymin, ymax]: cell i is the polygon
 /// cell_xy[2*cell_offsets[i]] ... (x y pairs) up to cell_offsets[i + 1], counter-clockwise with y
-/// up; empty for duplicates and for points whose cell misses the rectangle. Built from the
-/// triangles' circumcentres.
+/// up; empty for duplicates and for points whose cell misses the rectangle. Each cell is the
+/// rectangle clipped by the perpendicular bisectors to the point's Delaunay neighbours, so its
+/// corners are the triangles' circumcentres where they lie inside the rectangle, and hull cells
+/// (unbounded rays) end on the rectangle's sides. Coordinates are rounded (floating point);
+/// collinear input gives slabs, one distinct point the whole rectangle.
 struct VoronoiCells {
     std::vector<std::uint32_t> cell_offsets;  ///< point count + 1 entries
     std::vector<double> cell_xy;

@@ -104,6 +104,43 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
 /// three points coincide. 0 otherwise.
 int collinear3d(const double* a, const double* b, const double* c);
 
+/// Largest |coordinate| for which incircle is guaranteed exact: 2^+240 (about 1.8e+72). incircle
+/// is a degree-4 polynomial, so its range is tighter than orient3d's: see predicates.cpp.
+inline constexpr double kIncircleMaxMagnitude = 0x1p+240;
+/// Smallest nonzero |coordinate| for which incircle is guaranteed exact: 2^-170 (about 6.7e-52).
+inline constexpr double kIncircleMinMagnitude = 0x1p-170;
+
+/// As predicates_range_ok, for the (tighter) range of incircle. Inside this range orient2d and
+/// orient3d are exact as well.
+inline constexpr bool incircle_range_ok(double max_abs_coordinate,
+                                        double min_abs_nonzero_coordinate) {
+    return max_abs_coordinate <= kIncircleMaxMagnitude &&
+           (max_abs_coordinate == 0.0 || min_abs_nonzero_coordinate >= kIncircleMinMagnitude);
+}
+
+/// As predicates_scale_exponent, for the range of incircle (data spanning less than 2^410 between
+/// its largest and smallest nonzero |coordinate| can be brought into range).
+bool incircle_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate,
+                             int* exponent);
+
+/// In-circle test: where d lies relative to the circle through a, b, c (2D points, y up):
+///   +1  d is strictly inside the circle when a, b, c are counter-clockwise (orient2d > 0),
+///       strictly outside when they are clockwise,
+///   -1  the opposite,
+///    0  a, b, c, d are exactly cocircular (or a, b, c collinear and d on their line, or points
+///       coincide so that the determinant vanishes).
+/// Exact sign of det[a-d, |a-d|^2; b-d, |b-d|^2; c-d, |c-d|^2] (rows x, y, squared length), which is
+/// also the orientation of the lifted points (x, y, x^2 + y^2): for counter-clockwise a, b, c, +1
+/// means the lifted d lies strictly BELOW the plane of the lifted a, b, c. Same sign convention as
+/// Shewchuk's incircle. Exact for coordinates inside [kIncircleMinMagnitude, kIncircleMaxMagnitude]
+/// (or 0).
+int incircle(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+             double dy);
+
+/// Which of a and b is nearer to q: the exact sign of |a - q|^2 - |b - q|^2 (-1: a is nearer,
+/// +1: b is nearer, 0: exactly as far). Exact in the same range as incircle.
+int compare_distance(double ax, double ay, double bx, double by, double qx, double qy);
+
 namespace detail {
 
 // Testing and diagnostics hooks. Same results as the public functions.
@@ -117,6 +154,11 @@ int orient3d_traced(const double* a, const double* b, const double* c, const dou
 /// The fully exact expansion alone (stage D), skipping every filter.
 int orient2d_exact(double ax, double ay, double bx, double by, double cx, double cy);
 int orient3d_exact(const double* a, const double* b, const double* c, const double* d);
+/// incircle that reports the deciding stage (as orient2d_traced), and its stage D alone.
+int incircle_traced(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                    double dy, int* stage);
+int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
+                   double dy);
 
 }  // namespace detail
 

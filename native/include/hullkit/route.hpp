@@ -92,6 +92,21 @@ struct RouteReport {
     bool ok() const { return error.empty(); }
 };
 
+/// What the traverse touches at one fixed offset (the static check behind RouteOptions::samples,
+/// also an oracle for tests). Same geometry and exactness as RouteChecker::check.
+struct StaticContact {
+    /// Within the margin of an obstacle: touching at margin 0, or one inside a closed other.
+    bool contact = false;
+    /// With want_distance: the minimum distance between the traverse's and the obstacles'
+    /// surfaces (0 when they meet or one is inside the other; infinity without obstacles).
+    /// NaN otherwise.
+    double distance = std::numeric_limits<double>::quiet_NaN();
+    /// The obstacle, its triangle and the part in contact (contact) or nearest (distance), else -1.
+    std::int64_t obstacle = -1;
+    std::int64_t triangle = -1;
+    std::int64_t part = -1;
+};
+
 /// Keeps what a scene needs between checks: the parts' geometry and hulls, and the obstacles'
 /// bounding-volume hierarchy, built once. check() may be called many times (interactive dragging).
 class RouteChecker {
@@ -115,10 +130,19 @@ public:
     /// Checks the scene's own route.
     RouteReport check(const RouteOptions& options = {}) const;
 
+    /// The traverse translated by `offset` (x y z), checked statically against the obstacles with
+    /// the scene's margin; `want_distance` also computes the minimum distance (costlier). On a bad
+    /// scene or a non-finite offset: contact true, distance NaN.
+    StaticContact static_contact(const double offset[3], bool want_distance = false) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+/// Same as checker.static_contact(offset, want_distance).
+StaticContact static_contact(const RouteChecker& checker, const double offset[3],
+                             bool want_distance = false);
 
 /// One-shot: builds a RouteChecker for `scene` and checks its route.
 RouteReport check_route(Scene scene, const RouteOptions& options = {});

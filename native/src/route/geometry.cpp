@@ -251,21 +251,27 @@ void closest_between_segments(const Vec& p0, const Vec& p1, const Vec& q0, const
     *t_out = t;
 }
 
-double length(const Vec& v) { return std::sqrt(glm::dot(v, v)); }
+double length2(const Vec& v) { return glm::dot(v, v); }
 
 }  // namespace
 
 double point_triangle_distance(const Vec& x, const Vec* q) {
     double w[3];
     closest_on_triangle(x, q, w);
-    return length(x - (w[0] * q[0] + w[1] * q[1] + w[2] * q[2]));
+    return std::sqrt(length2(x - (w[0] * q[0] + w[1] * q[1] + w[2] * q[2])));
 }
 
 double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]) {
+    return std::sqrt(triangle_distance2(p, q, weights_p));
+}
+
+double triangle_distance2(const Vec* p, const Vec* q, double weights_p[3]) {
     // Between disjoint triangles the closest pair is vertex-face or edge-edge.
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {  // vertices of p against q
-        const double d = point_triangle_distance(p[i], q);
+        double w[3];
+        closest_on_triangle(p[i], q, w);
+        const double d = length2(p[i] - (w[0] * q[0] + w[1] * q[1] + w[2] * q[2]));
         if (d < best) {
             best = d;
             weights_p[0] = weights_p[1] = weights_p[2] = 0.0;
@@ -275,7 +281,7 @@ double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]) {
     for (int i = 0; i < 3; ++i) {  // vertices of q against p
         double w[3];
         closest_on_triangle(q[i], p, w);
-        const double d = length(q[i] - (w[0] * p[0] + w[1] * p[1] + w[2] * p[2]));
+        const double d = length2(q[i] - (w[0] * p[0] + w[1] * p[1] + w[2] * p[2]));
         if (d < best) {
             best = d;
             std::copy(w, w + 3, weights_p);
@@ -289,7 +295,7 @@ double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]) {
             const Vec& e = q[(j + 1) % 3];
             double s, t;
             closest_between_segments(a, b, c, e, &s, &t);
-            const double d = length((a + s * (b - a)) - (c + t * (e - c)));
+            const double d = length2((a + s * (b - a)) - (c + t * (e - c)));
             if (d < best) {
                 best = d;
                 weights_p[i] = 1.0 - s;

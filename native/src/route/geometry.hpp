@@ -10,7 +10,7 @@
 // decision at clearance zero.
 #pragma once
 
-#include <glm/vec3.hpp>
+#include <glm/glm.hpp>
 
 namespace hullkit::route_detail {
 
@@ -36,6 +36,9 @@ int ray_crossing(const Vec& x, const Vec& far, const Vec* q);
 /// in weights_p, barycentric weights of the closest point on p (used to tell where along a sweep
 /// the minimum lies). The caller decides intersection exactly first (distance 0).
 double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]);
+/// The square of triangle_distance (compared with margin^2 it keeps the bits a square root
+/// would round away at tangential approaches).
+double triangle_distance2(const Vec* p, const Vec* q, double weights_p[3]);
 
 /// Distance from point x to triangle q (floating point, degenerate triangles handled).
 double point_triangle_distance(const Vec& x, const Vec* q);

@@ -1,0 +1,90 @@
+// Delaunay by the seed's gift wrapping on the lifted points (z = x^2 + y^2): from a known edge of
+// the lower hull, the face beyond it is found in one pass over the points, replacing the candidate
+// whenever a point lies strictly below the candidate's lifted plane, i.e. strictly inside its
+// circumcircle (exact incircle), among the points on the correct side of the edge (exact orient2d).
+// The points exactly on the final circle complete the face (a Delaunay polygon); its edges go on a
+// stack until every face is found. O(n) per face, O(n^2) in all: for teaching and cross-checking.
+#include <algorithm>
+#include <unordered_set>
+
+#include "delaunay_internal.hpp"
+#include "hullkit/predicates.hpp"
+
+namespace hullkit {
+namespace delaunay_detail {
+namespace {
+
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+}  // namespace
+
+Faces giftwrap_faces(const Input& input) {
+    const PointSpan2 p = input.points;
+    const std::vector<std::uint32_t>& pts = input.distinct;
+    auto orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        return orient2d(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1]);
+    };
+    auto lex_less = [&](std::uint32_t a, std::uint32_t b) {
+        return p[a][0] < p[b][0] || (p[a][0] == p[b][0] && p[a][1] < p[b][1]);
+    };
+
+    // First edge: from the lowest point in (x, y) order, which is a hull vertex, to the hull vertex
+    // that follows it counter-clockwise: no point strictly to the right, and of the points on the
+    // line the nearest (the line's points all come after the first one in (x, y) order).
+    const std::uint32_t first = pts[0];
+    std::uint32_t second = pts[1];
+    for (std::size_t k = 2; k < pts.size(); ++k) {
+        const std::uint32_t q = pts[k];
+        const int o = orient(first, second, q);
+        if (o < 0 || (o == 0 && lex_less(q, second))) second = q;
+    }
+
+    Faces faces;
+    std::unordered_set<std::uint64_t> done;  // directed edges whose left face is known
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{first, second}};
+    std::vector<std::uint32_t> on_circle;
+    while (!stack.empty()) {
+        const auto [a, b] = stack.back();
+        stack.pop_back();
+        if (done.count(edge_key(a, b))) continue;
+        // The candidate: a point strictly left of a->b; replaced by any point strictly inside the
+        // circle through a, b and the candidate (a, b, candidate counter-clockwise).
+        std::uint32_t c = UINT32_MAX;
+        for (std::uint32_t q : pts) {
+            if (orient(a, b, q) <= 0) continue;
+            if (c == UINT32_MAX ||
+                incircle(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1], p[q][0], p[q][1]) > 0)
+                c = q;
+        }
+        if (c == UINT32_MAX) continue;  // a->b is a hull edge seen from outside
+        // The face: every point on the left exactly on the (empty) circle, in counter-clockwise
+        // order, which seen from a is increasing angle.
+        on_circle.clear();
+        for (std::uint32_t q : pts) {
+            if (orient(a, b, q) <= 0) continue;
+            if (q == c ||
+                incircle(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1], p[q][0], p[q][1]) == 0)
+                on_circle.push_back(q);
+        }
+        std::sort(on_circle.begin(), on_circle.end(),
+                  [&](std::uint32_t u, std::uint32_t v) { return orient(a, u, v) > 0; });
+        const std::size_t begin = faces.vertices.size();
+        faces.vertices.push_back(a);
+        faces.vertices.push_back(b);
+        faces.vertices.insert(faces.vertices.end(), on_circle.begin(), on_circle.end());
+        const std::size_t m = faces.vertices.size() - begin;
+        faces.offsets.push_back(static_cast<std::uint32_t>(faces.vertices.size()));
+        for (std::size_t k = 0; k < m; ++k) {
+            const std::uint32_t u = faces.vertices[begin + k];
+            const std::uint32_t v = faces.vertices[begin + (k + 1) % m];
+            done.insert(edge_key(u, v));
+            if (!done.count(edge_key(v, u))) stack.emplace_back(v, u);
+        }
+    }
+    return faces;
+}
+
+}  // namespace delaunay_detail
+}  // namespace hullkit

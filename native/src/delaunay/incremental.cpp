@@ -1,0 +1,263 @@
+// Delaunay by incremental insertion (Bowyer-Watson) in Hilbert-curve order with a walking locate.
+//
+// The triangulation is kept closed like a sphere: every hull edge has a "ghost" triangle on its
+// outer side whose third vertex is the point at infinity (kGhost). A new point p removes the
+// triangles in conflict with it (the cavity) and is joined to the cavity's boundary:
+//  * a finite triangle a, b, c (counter-clockwise) conflicts when p is strictly inside its
+//    circumcircle: incircle(a, b, c, p) > 0, i.e. the lifted p is strictly below its lifted plane;
+//  * a ghost triangle on hull edge x->y (interior on the right of x->y here, ghost on the left)
+//    conflicts when p is strictly outside that edge, or exactly on the line strictly between x
+//    and y (the limit of a circle through x, y and a point far away).
+// The cavity is star-shaped from p, so the new triangles are never degenerate, and every
+// decision is an exact orient2d / incircle on the original coordinates. Points collinear with a
+// hull edge become hull vertices. The result is a Delaunay triangulation; cocircular faces are
+// merged afterwards (merge_cocircular_triangles) so that the shared canonical rule applies.
+#include <algorithm>
+
+#include "delaunay_internal.hpp"
+#include "hullkit/predicates.hpp"
+
+namespace hullkit {
+namespace delaunay_detail {
+namespace {
+
+inline std::uint32_t next_edge(std::uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
+
+/// Index along a Hilbert curve on a 2^16 x 2^16 grid.
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    std::uint32_t d = 0;
+    for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+        const std::uint32_t rx = (x & s) ? 1 : 0;
+        const std::uint32_t ry = (y & s) ? 1 : 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) {  // rotate the quadrant so the curve continues
+            if (rx == 1) {
+                x = ~x;
+                y = ~y;
+            }
+            std::swap(x, y);
+        }
+    }
+    return d;
+}
+
+/// The distinct points sorted along a Hilbert curve over their bounding box (ties by index).
+std::vector<std::uint32_t> hilbert_order(PointSpan2 p, const std::vector<std::uint32_t>& ids) {
+    double xmin = p[ids[0]][0], xmax = xmin, ymin = p[ids[0]][1], ymax = ymin;
+    for (std::uint32_t i : ids) {
+        xmin = std::min(xmin, p[i][0]), xmax = std::max(xmax, p[i][0]);
+        ymin = std::min(ymin, p[i][1]), ymax = std::max(ymax, p[i][1]);
+    }
+    // The order only affects speed, never the result, so rounding here is harmless.
+    const double width = xmax - xmin, height = ymax - ymin;
+    const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
+    std::vector<std::uint64_t> keys(ids.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        const std::uint32_t i = ids[k];
+        double fx = (p[i][0] - xmin) * sx, fy = (p[i][1] - ymin) * sy;
+        fx = std::min(std::max(fx, 0.0), 65535.0);  // also catches overflow of the width to inf
+        fy = std::min(std::max(fy, 0.0), 65535.0);
+        const std::uint32_t h = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
+        keys[k] = (static_cast<std::uint64_t>(h) << 32) | i;
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::uint32_t> order(ids.size());
+    for (std::size_t k = 0; k < keys.size(); ++k) order[k] = static_cast<std::uint32_t>(keys[k]);
+    return order;
+}
+
+class Triangulation {
+public:
+    explicit Triangulation(PointSpan2 points) : p_(points), ghost_(static_cast<std::uint32_t>(points.count)) {
+        const std::size_t capacity = 2 * points.count + 4;  // finite + ghost triangles
+        vertex_.reserve(3 * capacity);
+        twin_.reserve(3 * capacity);
+        mark_.reserve(capacity);
+        start_of_.assign(points.count + 1, 0);
+    }
+
+    /// The first triangle a, b, c (counter-clockwise) and its three ghosts.
+    void start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        add(a, b, c);             // t0: edges a->b, b->c, c->a
+        add(b, a, ghost_);        // t1: b->a, a->G, G->b
+        add(c, b, ghost_);        // t2: c->b, b->G, G->c
+        add(a, c, ghost_);        // t3: a->c, c->G, G->a
+        link(0, 3);
+        link(1, 6);
+        link(2, 9);
+        link(4, 11);   // a->G with G->a
+        link(5, 7);    // G->b with b->G
+        link(8, 10);   // G->c with c->G
+        last_ = 0;
+    }
+
+    void insert(std::uint32_t i) {
+        const double px = p_[i][0], py = p_[i][1];
+        const std::uint32_t t0 = locate(px, py);
+        // Collect the cavity by a search from t0 over conflicting neighbours.
+        ++stamp_;
+        cavity_.clear();
+        boundary_.clear();
+        mark_[t0] = stamp_;
+        cavity_.push_back(t0);
+        for (std::size_t k = 0; k < cavity_.size(); ++k) {
+            const std::uint32_t t = cavity_[k];
+            for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+                const std::uint32_t f = twin_[e];
+                const std::uint32_t u = f / 3;
+                if (mark_[u] == stamp_) continue;
+                if (conflicts(u, px, py)) {
+                    mark_[u] = stamp_;
+                    cavity_.push_back(u);
+                } else {
+                    boundary_.push_back(e);
+                }
+            }
+        }
+        // Read each boundary edge (from, to, outside twin) before any cavity slot is reused.
+        edges_.clear();
+        for (std::uint32_t e : boundary_) edges_.push_back({vertex_[e], vertex_[next_edge(e)], twin_[e]});
+        // One new triangle (from, to, i) per boundary edge, in the cavity's slots first.
+        new_.clear();
+        for (std::size_t k = 0; k < edges_.size(); ++k) {
+            const BoundaryEdge& edge = edges_[k];
+            std::uint32_t t;
+            if (k < cavity_.size()) {
+                t = cavity_[k];
+                vertex_[3 * t] = edge.from, vertex_[3 * t + 1] = edge.to, vertex_[3 * t + 2] = i;
+            } else {
+                t = add(edge.from, edge.to, i);
+            }
+            new_.push_back(t);
+            start_of_[edge.from] = t;
+            twin_[3 * t] = edge.outside;
+            twin_[edge.outside] = 3 * t;
+        }
+        for (std::uint32_t t : new_) {
+            const std::uint32_t to = vertex_[3 * t + 1];
+            const std::uint32_t u = start_of_[to];
+            twin_[3 * t + 1] = 3 * u + 2;
+            twin_[3 * u + 2] = 3 * t + 1;
+        }
+        last_ = new_[0];
+    }
+
+    /// Finite triangles (counter-clockwise) with their twins (-1 across hull edges).
+    void finite(std::vector<std::uint32_t>& triangles, std::vector<std::int32_t>& twin) const {
+        const std::size_t count = vertex_.size() / 3;
+        std::vector<std::int32_t> index(count, -1);
+        std::int32_t finite_count = 0;
+        for (std::size_t t = 0; t < count; ++t)
+            if (!is_ghost(static_cast<std::uint32_t>(t))) index[t] = finite_count++;
+        triangles.resize(3 * static_cast<std::size_t>(finite_count));
+        twin.resize(triangles.size());
+        for (std::size_t t = 0; t < count; ++t) {
+            if (index[t] < 0) continue;
+            for (int k = 0; k < 3; ++k) {
+                const std::size_t e = 3 * static_cast<std::size_t>(index[t]) + k;
+                triangles[e] = vertex_[3 * t + k];
+                const std::uint32_t f = twin_[3 * t + k];
+                twin[e] = index[f / 3] < 0 ? -1 : 3 * index[f / 3] + static_cast<std::int32_t>(f % 3);
+            }
+        }
+    }
+
+private:
+    std::uint32_t add(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        vertex_.push_back(a), vertex_.push_back(b), vertex_.push_back(c);
+        twin_.resize(twin_.size() + 3);
+        mark_.push_back(0);
+        return static_cast<std::uint32_t>(vertex_.size() / 3 - 1);
+    }
+    void link(std::uint32_t e, std::uint32_t f) { twin_[e] = f, twin_[f] = e; }
+    bool is_ghost(std::uint32_t t) const {
+        return vertex_[3 * t] == ghost_ || vertex_[3 * t + 1] == ghost_ || vertex_[3 * t + 2] == ghost_;
+    }
+
+    bool conflicts(std::uint32_t t, double px, double py) const {
+        const std::uint32_t a = vertex_[3 * t], b = vertex_[3 * t + 1], c = vertex_[3 * t + 2];
+        if (a != ghost_ && b != ghost_ && c != ghost_) {
+            return incircle(p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0], p_[c][1], px, py) > 0;
+        }
+        // Ghost (x, y, G) in cyclic order: the outside of hull edge x->y is on its left.
+        const std::uint32_t x = a == ghost_ ? b : (b == ghost_ ? c : a);
+        const std::uint32_t y = a == ghost_ ? c : (b == ghost_ ? a : b);
+        const double* u = p_[x];
+        const double* v = p_[y];
+        const int o = orient2d(u[0], u[1], v[0], v[1], px, py);
+        if (o != 0) return o > 0;
+        // On the line: strictly between x and y (compare along the dominant axis of x->y... any
+        // nonconstant axis works exactly since the three points are collinear and distinct).
+        if (u[0] != v[0]) return (u[0] < px && px < v[0]) || (v[0] < px && px < u[0]);
+        return (u[1] < py && py < v[1]) || (v[1] < py && py < u[1]);
+    }
+
+    /// A triangle in conflict with p: the finite triangle containing it (closed), or the ghost of a
+    /// hull edge that p is strictly outside of. Visibility walk with a varying first edge.
+    std::uint32_t locate(double px, double py) {
+        std::uint32_t t = last_;
+        if (is_ghost(t)) {
+            std::uint32_t e = 3 * t;
+            while (vertex_[e] == ghost_ || vertex_[next_edge(e)] == ghost_) ++e;
+            t = twin_[e] / 3;  // the finite triangle across the ghost's hull edge
+        }
+        for (;;) {
+            seed_ = seed_ * 1103515245u + 12345u;
+            const std::uint32_t r = (seed_ >> 16) % 3;
+            bool moved = false;
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                const std::uint32_t e = 3 * t + (r + k) % 3;
+                const double* a = p_[vertex_[e]];
+                const double* b = p_[vertex_[next_edge(e)]];
+                if (orient2d(a[0], a[1], b[0], b[1], px, py) < 0) {
+                    t = twin_[e] / 3;
+                    moved = true;
+                    break;
+                }
+            }
+            if (!moved) return t;
+            if (is_ghost(t)) return t;
+        }
+    }
+
+    PointSpan2 p_;
+    std::uint32_t ghost_;
+    std::vector<std::uint32_t> vertex_;
+    std::vector<std::uint32_t> twin_;
+    std::vector<std::uint32_t> mark_;
+    std::vector<std::uint32_t> start_of_;  // per vertex: the new triangle whose first edge leaves it
+    std::vector<std::uint32_t> cavity_, boundary_, new_;
+    struct BoundaryEdge {
+        std::uint32_t from, to, outside;
+    };
+    std::vector<BoundaryEdge> edges_;
+    std::uint32_t stamp_ = 0;
+    std::uint32_t last_ = 0;
+    std::uint32_t seed_ = 1;
+};
+
+}  // namespace
+
+Faces incremental_faces(const Input& input) {
+    const PointSpan2 p = input.points;
+    const std::vector<std::uint32_t> order = hilbert_order(p, input.distinct);
+    // The first triangle: the first two points and the first point off their line.
+    const std::uint32_t a = order[0], b = order[1];
+    std::size_t k = 2;
+    int o = 0;
+    while ((o = orient2d(p[a][0], p[a][1], p[b][0], p[b][1], p[order[k]][0], p[order[k]][1])) == 0) ++k;
+    Triangulation tri(p);
+    if (o > 0)
+        tri.start(a, b, order[k]);
+    else
+        tri.start(b, a, order[k]);
+    for (std::size_t j = 2; j < order.size(); ++j)
+        if (j != k) tri.insert(order[j]);
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::int32_t> twin;
+    tri.finite(triangles, twin);
+    return merge_cocircular_triangles(p, triangles, twin);
+}
+
+}  // namespace delaunay_detail
+}  // namespace hullkit

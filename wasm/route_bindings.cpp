@@ -1,0 +1,95 @@
+// embind registrations for route checking: the friendly API lives in route.js.
+//
+// The scene crosses the boundary as JSON text (the same format as `hullkit route`), mesh files as
+// bytes registered by name beforehand, routes as a malloc'ed block of doubles, and the report
+// comes back as the same JSON text the CLI writes.
+#include <emscripten/bind.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "hullkit/route.hpp"
+#include "hullkit/scene_io.hpp"
+
+namespace {
+
+/// A RouteChecker plus what loading its scene needs; one per JS RouteChecker.
+class RouteCheckerHandle {
+public:
+    /// Registers mesh bytes under `name` (a scene's "mesh" value); a JS Uint8Array arrives as bytes.
+    void add_file(const std::string& name, const std::string& bytes) { files_[name] = bytes; }
+
+    /// Parses the scene and builds the checker (hulls, BVH); returns "" or the error.
+    std::string load(const std::string& json, const std::string& source, bool require_route) {
+        const std::map<std::string, std::string>& files = files_;
+        hullkit::MeshLoader loader = [&files](const std::string& path, std::string* bytes, std::string* error) {
+            auto it = files.find(path);
+            if (it == files.end()) {
+                *error = "\"" + path + "\" is not in options.files";
+                return false;
+            }
+            *bytes = it->second;
+            return true;
+        };
+        hullkit::SceneReadOptions options;
+        options.require_route = require_route;
+        hullkit::SceneResult scene = hullkit::parse_scene(json, source, loader, options);
+        files_.clear();  // the bytes are not needed any more
+        if (!scene.ok()) return scene.error;
+        checker_ = std::make_unique<hullkit::RouteChecker>(std::move(scene.scene));
+        if (!checker_->error().empty()) {
+            std::string error = source + ": " + checker_->error();
+            checker_.reset();
+            return error;
+        }
+        return "";
+    }
+
+    /// Checks `count` waypoints at `xyz` (a malloc'ed block of 3 * count doubles), or the scene's
+    /// own route when count is 0. Returns the report JSON, or "" with error() set.
+    std::string check(std::uintptr_t xyz, std::uint32_t count, bool clearance, std::uint32_t samples) {
+        error_.clear();
+        if (!checker_) {
+            error_ = "no scene loaded";
+            return "";
+        }
+        hullkit::RouteOptions options;
+        options.clearance = clearance;
+        options.samples = samples;
+        hullkit::RouteReport report = count == 0 ? checker_->check(options)
+                                                 : checker_->check(reinterpret_cast<const double*>(xyz), count, options);
+        if (!report.ok()) {
+            error_ = report.error;
+            return "";
+        }
+        return hullkit::write_report_json(checker_->scene(), report, options);
+    }
+
+    std::string error() const { return error_; }
+    double build_seconds() const { return checker_ ? checker_->build_seconds() : 0.0; }
+    /// Waypoints of the scene's own route (0 when it has none).
+    std::uint32_t route_waypoints() const {
+        return checker_ ? static_cast<std::uint32_t>(checker_->scene().route.size() / 3) : 0;
+    }
+
+private:
+    std::map<std::string, std::string> files_;
+    std::unique_ptr<hullkit::RouteChecker> checker_;
+    std::string error_;
+};
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(hullkit_route) {
+    emscripten::class_<RouteCheckerHandle>("RouteCheckerHandle")
+        .constructor<>()
+        .function("addFile", &RouteCheckerHandle::add_file)
+        .function("load", &RouteCheckerHandle::load)
+        .function("check", &RouteCheckerHandle::check)
+        .function("error", &RouteCheckerHandle::error)
+        .function("buildSeconds", &RouteCheckerHandle::build_seconds)
+        .function("routeWaypoints", &RouteCheckerHandle::route_waypoints);
+}
