@@ -34,7 +34,7 @@ if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ]; then
     bash scripts/build.sh wasm >/dev/null
   fi
 fi
-native_bench=$PWD/$build/hullkit_delaunay_bench
+case $build in /*) native_bench=$build/hullkit_delaunay_bench ;; *) native_bench=$PWD/$build/hullkit_delaunay_bench ;; esac
 [ -x "$native_bench" ] || { say "delaunay bench: $native_bench is missing (unset HULLKIT_BENCH_NO_BUILD)"; exit 1; }
 
 # ---- 2. inputs

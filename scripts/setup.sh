@@ -12,6 +12,8 @@ debian_packages=(
   libglm-dev              # vector math
   nlohmann-json3-dev      # scene JSON (route checking)
   libcli11-dev            # command-line parsing
+  libfast-float-dev       # number parsing in the readers
+  clang                   # libFuzzer (scripts/fuzz.sh, run briefly by npm test)
   qhull-bin               # rbox/qconvex: test inputs and cross-checks
   chromium                # browser tests (driven by playwright-core)
 )

@@ -559,6 +559,9 @@ TEST_CASE("mesh_io: binary input and formats not read here are named as such") {
           not_points + "ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
     // The same through the file reader, and for read_off_mesh.
     CHECK(read_via_file(stl, false).error == error_of(stl));
+    // From a stream (a pipe) the size that identifies binary STL is unknown: plain binary data.
+    // (Found by fuzz_points, which first expected the same message.)
+    CHECK(read_via_file(stl, true).error == not_points + "binary data (byte 0x00 at offset 15)");
     CHECK(mesh_error_of(stl) ==
           "m.off: not an OFF file: binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
     // Text that merely starts with those words is still read as points.

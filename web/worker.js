@@ -3,10 +3,8 @@
 //
 // Shared by every view: each request carries an id, answered by one 'result' or 'error' with it.
 //
-// worker -> main  {type: 'ready', algorithms, delaunay, route}   once the module is loaded
-//                 (delaunay: {algorithms, native} — native false while the wasm build has no
-//                 hullkit.delaunay and lifting with hullkit.hull stands in; route: true when
-//                 hullkit.checkRoute is built)
+// worker -> main  {type: 'ready', algorithms, delaunay}   once the module is loaded
+//                 (delaunay: {algorithms}, the names hullkit.delaunay accepts)
 //                 {type: 'load-error', message}                if it cannot be loaded
 // main -> worker  {type: 'compute', id, distribution, n, seed, algorithm?, epsilon?,
 //                  mergeCoplanar?, text?}
@@ -17,7 +15,7 @@
 //                                                               (xyz transferred when available)
 // main -> worker  {type: 'delaunay', id, xy, algorithm?, voronoi?: [xmin, ymin, xmax, ymax]}
 // worker -> main  {type: 'result', id, dimension, triangles, halfedges, hull, representative,
-//                  duplicateCount, cells?: {cellOffsets, cellXY}, engine, ms, voronoiMs}
+//                  duplicateCount, cells?: {cellOffsets, cellXY}, ms, voronoiMs}
 // main -> worker  {type: 'route', id, scene, route, samples}
 // worker -> main  {type: 'result', id, report, sweeps: [{leg, part, triangles}], ms}
 //                 (sweeps: each part's swept hull per leg, from hullkit.hull of the part's
@@ -33,7 +31,6 @@
 //               faces, volume, area}, dropped (Uint32Array: exact hull vertices the seed's hull
 //               lacks), added (count of seed hull vertices that are not extreme)}
 import { generatePoints, parsePoints } from './distributions.js';
-import { liftDelaunay, voronoiCells } from './lift-delaunay.js';
 import { partVertices } from './route-scenes.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
@@ -57,34 +54,13 @@ function loadHullkit() {
 loadHullkit().then(
   (hullkit) => {
     const algorithms = Array.isArray(hullkit.algorithms) ? [...hullkit.algorithms].map(String) : null;
-    nativeDelaunay = probe(() => hullkit.delaunay(Float64Array.of(0, 0, 1, 0, 0, 1)));
-    const delaunay = {
-      native: nativeDelaunay,
-      algorithms: nativeDelaunay && Array.isArray(hullkit.delaunayAlgorithms) ? [...hullkit.delaunayAlgorithms] : ['lifting'],
-    };
-    const route = probe(() => hullkit.checkRoute({
-      traverse: { parts: [{ name: 'p', box: { min: [0, 0, 0], max: [1, 1, 1] } }] },
-      route: [[0, 0, 0], [1, 0, 0]],
-      obstacles: [{ name: 'o', box: { min: [5, 5, 5], max: [6, 6, 6] } }],
-    }));
-    self.postMessage({ type: 'ready', algorithms, delaunay, route });
+    const delaunay = { algorithms: [...hullkit.delaunayAlgorithms].map(String) };
+    self.postMessage({ type: 'ready', algorithms, delaunay });
   },
   (err) => {
     self.postMessage({ type: 'load-error', message: loadErrorMessage(err) });
   },
 );
-
-let nativeDelaunay = false;
-
-/** Does `call` work in this wasm build? (Functions still to be built throw.) */
-function probe(call) {
-  try {
-    call();
-    return true;
-  } catch {
-    return false;
-  }
-}
 
 function loadErrorMessage(err) {
   return `could not load the hullkit WebAssembly module (${HULLKIT_URL}): ${describe(err)}`;
@@ -359,14 +335,14 @@ async function withHullkit(id, job) {
 function delaunayJob({ id, xy, algorithm, voronoi }) {
   return withHullkit(id, (hullkit) => {
     const t0 = performance.now();
-    const options = algorithm && algorithm !== 'lifting' ? { algorithm } : {};
-    const result = nativeDelaunay ? hullkit.delaunay(xy, options) : liftDelaunay(hullkit, xy);
+    const options = algorithm ? { algorithm } : {};
+    const result = hullkit.delaunay(xy, options);
     const ms = performance.now() - t0;
     let cells;
     let voronoiMs = 0;
     if (voronoi) {
       const v0 = performance.now();
-      cells = nativeDelaunay ? hullkit.voronoi(xy, result, voronoi) : voronoiCells(xy, result, voronoi);
+      cells = hullkit.voronoi(xy, result, voronoi);
       voronoiMs = performance.now() - v0;
     }
     const out = {
@@ -376,7 +352,7 @@ function delaunayJob({ id, xy, algorithm, voronoi }) {
       hull: ownedCopy(result.hull, Uint32Array, 'hull'),
       representative: ownedCopy(result.representative, Uint32Array, 'representative'),
       duplicateCount: result.duplicateCount,
-      cells, engine: nativeDelaunay ? 'hullkit.delaunay' : 'lifting', ms, voronoiMs,
+      cells, ms, voronoiMs,
     };
     const transfer = [out.triangles.buffer, out.halfedges.buffer, out.hull.buffer, out.representative.buffer];
     if (cells) transfer.push(cells.cellOffsets.buffer, cells.cellXY.buffer);

@@ -1,15 +1,533 @@
-// `hullkit delaunay` and `hullkit verify-delaunay`: placeholder until the Delaunay core links
-// (helper dfaces keeps the real command ready and puts it back as soon as hullkit::delaunay exists).
+// `hullkit delaunay` and `hullkit verify-delaunay`: argument parsing (CLI11) and I/O around
+// hullkit::delaunay and hullkit::verify_delaunay. No geometry here.
 #include "delaunay_command.hpp"
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
 #include "cli_io.hpp"
+#include "hullkit/delaunay.hpp"
+#include "hullkit/mesh_io.hpp"
 
 namespace hullkit_cli {
+namespace {
 
-int run_delaunay(const std::vector<std::string>&) { return print_usage_error("delaunay: not built yet"); }
+constexpr int kExitOk = 0;
+constexpr int kExitNotDelaunay = 1;
 
-int run_verify_delaunay(const std::vector<std::string>&) {
-    return print_usage_error("verify-delaunay: not built yet");
+const char* const kDelaunayUsage =
+    R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format off|json|svg] [--algorithm NAME]
+                        [--merge-cocircular] [--voronoi] [--stats]
+
+Computes the Delaunay triangulation of the 2D points in INPUT (standard input if
+INPUT is missing or '-'): the lower convex hull of the points lifted to the
+paraboloid z = x^2 + y^2, projected back to the plane. Every decision is exact.
+
+Input ('#' starts a comment):
+  x y             one point per line (x y z lines also work: z is ignored)
+  qhull / rbox    the dimension (2, or 3 with z ignored), the point count, then
+                  one point per line ('rbox 100 D2 | hullkit delaunay')
+
+Options:
+  -o, --output FILE   write to FILE instead of standard output
+  --format FORMAT     off (default): every input point with z = 0, in input
+                        order, and the triangles (indices = input indices);
+                      json: {"dimension", "triangles": [[i,j,k],...],
+                        "halfedges", "hull", "duplicates": [[i, first],...]}
+                        with --merge-cocircular also "polygons";
+                      svg: a picture of the triangulation, its hull and the
+                        points (with --voronoi, the Voronoi cells too);
+                      without --format, an output FILE ending in .off, .json
+                      or .svg selects that format
+  --algorithm NAME    {algorithms}
+  --merge-cocircular  JSON: also the Delaunay polygons (the lifted hull's lower
+                      faces before triangulation; a square grid gives squares)
+  --voronoi           SVG: also draw the Voronoi cells, clipped to the picture
+  --stats             print one JSON line to standard error: points,
+                      triangles, hull, algorithm, seconds (the triangulation
+                      alone)
+  -h, --help          show this help
+
+Triangles are clockwise with the y axis pointing up (as delaunator's, which
+calls them counter-clockwise on a y-down screen). Exact duplicates are merged
+into their lowest index. Collinear points or fewer than 3 distinct points give no
+triangles ("dimension" 1, 0). Exit status: 0 on success, 2 on a usage or input
+problem (one line on stderr).
+)";
+
+const char* const kVerifyDelaunayUsage =
+    R"(Usage: hullkit verify-delaunay POINTS TRIANGLES.off
+
+Checks, with exact arithmetic, that TRIANGLES.off is a Delaunay triangulation of
+the 2D points in POINTS ('-' reads them from standard input; the input formats of
+'hullkit delaunay'): every triangle clockwise with y up and not degenerate, each
+edge shared by at most two triangles, the boundary the convex hull, every
+distinct point used, 2n - h - 2 triangles, and no point inside the circumcircle
+across any interior edge.
+
+The OFF vertices are matched to the input points with exactly the same x and y
+(and z = 0), as 'hullkit delaunay' writes them; duplicates stand for the lowest
+index.
+
+Prints 'ok: ...' or each problem on its own line.
+Exit status: 0 the triangulation is Delaunay, 1 it is not, 2 a usage or input
+problem.
+)";
+
+enum class Format { Off, Json, Svg };
+
+struct DelaunayArgs {
+    std::string input = "-";
+    std::string output;  ///< empty: standard output
+    Format format = Format::Off;
+    hullkit::DelaunayOptions options;
+    bool voronoi = false;
+    bool stats = false;
+};
+
+bool parse_format(std::string name, Format* out) {
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "off") *out = Format::Off;
+    else if (name == "json") *out = Format::Json;
+    else if (name == "svg") *out = Format::Svg;
+    else return false;
+    return true;
+}
+
+/// The format a file name's extension asks for; false for any other name.
+bool format_from_path(const std::string& path, Format* out) {
+    const std::size_t dot = path.find_last_of("./");
+    return dot != std::string::npos && path[dot] == '.' && parse_format(path.substr(dot + 1), out);
+}
+
+constexpr hullkit::DelaunayAlgorithm kAlgorithms[] = {hullkit::DelaunayAlgorithm::Incremental,
+                                                      hullkit::DelaunayAlgorithm::Giftwrap};
+
+/// "incremental (default), giftwrap": the names parse_delaunay_algorithm knows.
+std::string known_algorithms(bool mark_default) {
+    std::string names;
+    for (hullkit::DelaunayAlgorithm algorithm : kAlgorithms) {
+        if (!names.empty()) names += ", ";
+        names += hullkit::delaunay_algorithm_name(algorithm);
+        if (mark_default && algorithm == hullkit::DelaunayOptions{}.algorithm) names += " (default)";
+    }
+    return names;
+}
+
+/// Parses `args` with `app`; on a CLI11 error throws UsageError with a one-line message in the
+/// words of the other commands (unknown option, unexpected argument, missing value).
+void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const std::string& command) {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 consumes from the back
+    const std::string hint = " (try 'hullkit " + command + " --help')";
+    try {
+        app.parse(reversed);
+    } catch (const CLI::ExtrasError&) {
+        const std::vector<std::string> extra = app.remaining();
+        const std::string first = extra.empty() ? "?" : extra.front();
+        if (first.size() > 1 && first[0] == '-') throw UsageError("unknown option \"" + first + "\"" + hint);
+        throw UsageError("unexpected argument \"" + first + "\"" + hint);
+    } catch (const CLI::ParseError& error) {
+        // CLI11 says e.g. "--format: 1 required TEXT missing" for an option without its value.
+        std::string what = error.what();
+        const std::size_t colon = what.find(':');
+        if (what.find("required") != std::string::npos && what.find("missing") != std::string::npos &&
+            colon != std::string::npos) {
+            throw UsageError("option " + what.substr(0, colon) + " needs a value" + hint);
+        }
+        throw UsageError(what + hint);
+    }
+}
+
+/// Returns false after printing the help for -h/--help.
+bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* args) {
+    CLI::App app{"hullkit delaunay", "hullkit delaunay"};
+    app.set_help_flag();  // our own help text, in the style of the other commands
+    bool help = false, merge = false;
+    std::string format_name, algorithm_name;
+    app.add_flag("-h,--help", help);
+    // As with `hullkit hull`, an option given twice takes its last value.
+    const auto last = CLI::MultiOptionPolicy::TakeLast;
+    app.add_option("input", args->input);
+    app.add_option("-o,--output", args->output)->multi_option_policy(last);
+    app.add_option("--format", format_name)->multi_option_policy(last);
+    app.add_option("--algorithm", algorithm_name)->multi_option_policy(last);
+    app.add_flag("--merge-cocircular", merge);
+    app.add_flag("--voronoi", args->voronoi);
+    app.add_flag("--stats", args->stats);
+    parse_or_throw(app, argv, "delaunay");
+    if (help) {
+        std::string usage = kDelaunayUsage;
+        const std::string slot = "{algorithms}";
+        usage.replace(usage.find(slot), slot.size(), "triangulation algorithm: " + known_algorithms(true));
+        std::fputs(usage.c_str(), stdout);
+        return false;
+    }
+    args->options.merge_cocircular = merge;
+    if (app.count("--output") && args->output.empty()) throw UsageError("option --output needs a file name");
+    if (app.count("--format")) {
+        if (!parse_format(format_name, &args->format)) {
+            throw UsageError("unknown format \"" + format_name + "\" (known: off, json, svg)");
+        }
+    } else if (!args->output.empty() && args->output != "-") {
+        format_from_path(args->output, &args->format);  // the default stays OFF
+    }
+    if (app.count("--algorithm") && !hullkit::parse_delaunay_algorithm(algorithm_name, &args->options.algorithm)) {
+        throw UsageError("unknown algorithm \"" + algorithm_name + "\" (known: " + known_algorithms(false) + ")");
+    }
+    if (args->voronoi && args->format != Format::Svg) {
+        throw UsageError("--voronoi draws the Voronoi cells in SVG output only (add --format svg)");
+    }
+    if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    return true;
+}
+
+// ---- writers ----
+
+void append_uint(std::string& out, std::uint64_t value) {
+    char buffer[24];
+    out.append(buffer, static_cast<std::size_t>(std::snprintf(buffer, sizeof buffer, "%llu",
+                                                              static_cast<unsigned long long>(value))));
+}
+
+/// Appends `values` as a JSON array of numbers.
+template <typename Int>
+void append_json_array(std::string& out, const std::vector<Int>& values) {
+    out += '[';
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i) out += ',';
+        out += std::to_string(values[i]);
+    }
+    out += ']';
+}
+
+/// OFF: every input point (z = 0) in input order, so OFF indices are input indices, then the
+/// triangles. Duplicates are written too (no triangle uses them).
+std::string write_delaunay_off(hullkit::PointSpan2 points, const hullkit::Delaunay& result) {
+    std::string out = "OFF\n";
+    append_uint(out, points.count);
+    out += ' ';
+    append_uint(out, result.triangle_count());
+    out += " 0\n";
+    for (std::size_t i = 0; i < points.count; ++i) {
+        out += hullkit::format_double(points[i][0]);
+        out += ' ';
+        out += hullkit::format_double(points[i][1]);
+        out += " 0\n";
+    }
+    for (std::size_t t = 0; t < result.triangle_count(); ++t) {
+        out += "3";
+        for (int k = 0; k < 3; ++k) {
+            out += ' ';
+            append_uint(out, result.triangles[3 * t + k]);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+std::string write_delaunay_json(const hullkit::Delaunay& result) {
+    std::string out = "{\"dimension\":" + std::to_string(result.dimension) + ",\"triangles\":[";
+    for (std::size_t t = 0; t < result.triangle_count(); ++t) {
+        if (t) out += ',';
+        out += '[';
+        for (int k = 0; k < 3; ++k) {
+            if (k) out += ',';
+            append_uint(out, result.triangles[3 * t + k]);
+        }
+        out += ']';
+    }
+    out += "],\"halfedges\":";
+    append_json_array(out, result.halfedges);
+    out += ",\"hull\":";
+    append_json_array(out, result.hull);
+    out += ",\"duplicates\":[";
+    bool first = true;
+    for (std::size_t i = 0; i < result.representative.size(); ++i) {
+        if (result.representative[i] == i) continue;
+        if (!first) out += ',';
+        first = false;
+        out += '[';
+        append_uint(out, i);
+        out += ',';
+        append_uint(out, result.representative[i]);
+        out += ']';
+    }
+    out += ']';
+    if (!result.polygon_offsets.empty()) {
+        out += ",\"polygons\":[";
+        for (std::size_t p = 0; p + 1 < result.polygon_offsets.size(); ++p) {
+            if (p) out += ',';
+            out += '[';
+            for (std::uint32_t k = result.polygon_offsets[p]; k < result.polygon_offsets[p + 1]; ++k) {
+                if (k != result.polygon_offsets[p]) out += ',';
+                append_uint(out, result.polygon_vertices[k]);
+            }
+            out += ']';
+        }
+        out += ']';
+    }
+    out += "}\n";
+    return out;
+}
+
+/// Maps plane coordinates to SVG pixels: y up in the plane, y down on screen.
+struct SvgFrame {
+    double xmin = 0, ymin = 0, xmax = 1, ymax = 1;  ///< the plane rectangle shown (and Voronoi's clip)
+    double scale = 1;
+    static constexpr double kMargin = 12;  ///< pixels around the rectangle
+    static constexpr double kSize = 800;   ///< pixels along the rectangle's longer side
+
+    double x(double px) const { return kMargin + (px - xmin) * scale; }
+    double y(double py) const { return kMargin + (ymax - py) * scale; }
+    double width() const { return 2 * kMargin + (xmax - xmin) * scale; }
+    double height() const { return 2 * kMargin + (ymax - ymin) * scale; }
+};
+
+/// The points' bounding box with a 5% border (a unit square around a single point).
+SvgFrame frame_of(hullkit::PointSpan2 points) {
+    SvgFrame frame;
+    if (points.count == 0) return frame;
+    frame.xmin = frame.xmax = points[0][0];
+    frame.ymin = frame.ymax = points[0][1];
+    for (std::size_t i = 1; i < points.count; ++i) {
+        frame.xmin = std::min(frame.xmin, points[i][0]);
+        frame.xmax = std::max(frame.xmax, points[i][0]);
+        frame.ymin = std::min(frame.ymin, points[i][1]);
+        frame.ymax = std::max(frame.ymax, points[i][1]);
+    }
+    double span = std::max(frame.xmax - frame.xmin, frame.ymax - frame.ymin);
+    if (!(span > 0) || !std::isfinite(span)) span = 1;
+    frame.xmin -= 0.05 * span;
+    frame.xmax += 0.05 * span;
+    frame.ymin -= 0.05 * span;
+    frame.ymax += 0.05 * span;
+    frame.scale = SvgFrame::kSize / (1.1 * span);
+    return frame;
+}
+
+void append_pixel(std::string& out, double value) {
+    char buffer[32];
+    out.append(buffer, static_cast<std::size_t>(std::snprintf(buffer, sizeof buffer, "%.2f", value)));
+}
+
+void append_svg_point(std::string& out, const SvgFrame& frame, double x, double y) {
+    append_pixel(out, frame.x(x));
+    out += ',';
+    append_pixel(out, frame.y(y));
+}
+
+/// The triangulation's edges (each once), the hull, the points and optionally the Voronoi cells.
+std::string write_delaunay_svg(hullkit::PointSpan2 points, const hullkit::Delaunay& result, bool voronoi) {
+    const SvgFrame frame = frame_of(points);
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+    append_pixel(out, frame.width());
+    out += "\" height=\"";
+    append_pixel(out, frame.height());
+    out += "\" viewBox=\"0 0 ";
+    append_pixel(out, frame.width());
+    out += ' ';
+    append_pixel(out, frame.height());
+    out += "\">\n<title>Delaunay triangulation: ";
+    append_uint(out, points.count);
+    out += " points, ";
+    append_uint(out, result.triangle_count());
+    out += " triangles</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+
+    if (voronoi) {
+        const hullkit::VoronoiCells cells =
+            hullkit::delaunay_voronoi(points, result, frame.xmin, frame.ymin, frame.xmax, frame.ymax);
+        out += "<g id=\"voronoi\" fill=\"#fde68a\" fill-opacity=\"0.45\" stroke=\"#d97706\" stroke-width=\"0.8\">\n";
+        for (std::size_t i = 0; i + 1 < cells.cell_offsets.size(); ++i) {
+            if (cells.cell_offsets[i + 1] - cells.cell_offsets[i] < 3) continue;
+            out += "<polygon points=\"";
+            for (std::uint32_t k = cells.cell_offsets[i]; k < cells.cell_offsets[i + 1]; ++k) {
+                if (k != cells.cell_offsets[i]) out += ' ';
+                append_svg_point(out, frame, cells.cell_xy[2 * k], cells.cell_xy[2 * k + 1]);
+            }
+            out += "\"/>\n";
+        }
+        out += "</g>\n";
+    }
+
+    // Every undirected edge once: a hull half-edge, or the half of an interior pair with the
+    // larger index.
+    out += "<path id=\"triangles\" fill=\"none\" stroke=\"#2563eb\" stroke-width=\"0.8\" stroke-linecap=\"round\" d=\"";
+    for (std::size_t e = 0; e < result.triangles.size(); ++e) {
+        if (result.halfedges[e] >= 0 && static_cast<std::size_t>(result.halfedges[e]) > e) continue;
+        const std::size_t next = e % 3 == 2 ? e - 2 : e + 1;
+        const double* a = points[result.triangles[e]];
+        const double* b = points[result.triangles[next]];
+        out += 'M';
+        append_svg_point(out, frame, a[0], a[1]);
+        out += 'L';
+        append_svg_point(out, frame, b[0], b[1]);
+    }
+    out += "\"/>\n";
+
+    if (!result.hull.empty()) {
+        // Collinear points (dimension 1) give the line through them, not a closed polygon.
+        out += result.dimension == 2 ? "<polygon" : "<polyline";
+        out += " id=\"hull\" fill=\"none\" stroke=\"#111827\" stroke-width=\"2\" stroke-linejoin=\"round\" points=\"";
+        for (std::size_t k = 0; k < result.hull.size(); ++k) {
+            if (k) out += ' ';
+            const double* p = points[result.hull[k]];
+            append_svg_point(out, frame, p[0], p[1]);
+        }
+        out += "\"/>\n";
+    }
+
+    // Dots only while they stay visible as dots; a million would just fill the picture.
+    if (points.count <= 20000) {
+        out += "<g id=\"points\" fill=\"#dc2626\">\n";
+        for (std::size_t i = 0; i < points.count; ++i) {
+            if (!result.representative.empty() && result.representative[i] != i) continue;
+            out += "<circle cx=\"";
+            append_pixel(out, frame.x(points[i][0]));
+            out += "\" cy=\"";
+            append_pixel(out, frame.y(points[i][1]));
+            out += "\" r=\"2\"/>\n";
+        }
+        out += "</g>\n";
+    }
+    out += "</svg>\n";
+    return out;
+}
+
+std::string source_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+hullkit::Points2Result load_points_2d(const std::string& path, std::string* text) {
+    *text = read_input(path);
+    hullkit::Points2Result points = hullkit::parse_points_2d(*text, source_name(path));
+    if (!points.ok()) throw UsageError(points.error);
+    return points;
+}
+
+int delaunay_main(const std::vector<std::string>& argv) {
+    DelaunayArgs args;
+    if (!parse_delaunay_args(argv, &args)) return kExitOk;
+    std::string text;
+    const hullkit::Points2Result points = load_points_2d(args.input, &text);
+    const hullkit::PointSpan2 span(points.xy);
+
+    const auto start = std::chrono::steady_clock::now();
+    const hullkit::Delaunay result = hullkit::delaunay(span, args.options);
+    const auto stop = std::chrono::steady_clock::now();
+    if (!result.ok()) {
+        std::string where = source_name(args.input);
+        if (result.error_point >= 0) {
+            // Name the line too: read the text again, this time keeping each point's line.
+            std::vector<std::size_t> lines;
+            hullkit::parse_points_2d(text, where, &lines);
+            if (static_cast<std::size_t>(result.error_point) < lines.size()) {
+                where += ":" + std::to_string(lines[static_cast<std::size_t>(result.error_point)]);
+            }
+        }
+        throw UsageError(where + ": " + result.error);
+    }
+
+    std::string out;
+    switch (args.format) {
+        case Format::Off: out = write_delaunay_off(span, result); break;
+        case Format::Json: out = write_delaunay_json(result); break;
+        case Format::Svg: out = write_delaunay_svg(span, result, args.voronoi); break;
+    }
+    write_output(args.output, out);
+    if (args.stats) {
+        std::fprintf(stderr, "{\"points\":%zu,\"triangles\":%zu,\"hull\":%zu,\"algorithm\":\"%s\",\"seconds\":%.9g}\n",
+                     points.count(), result.triangle_count(), result.hull.size(),
+                     hullkit::delaunay_algorithm_name(args.options.algorithm),
+                     std::chrono::duration<double>(stop - start).count());
+    }
+    return kExitOk;
+}
+
+int verify_delaunay_main(const std::vector<std::string>& argv) {
+    CLI::App app{"hullkit verify-delaunay", "hullkit verify-delaunay"};
+    app.set_help_flag();
+    bool help = false;
+    std::vector<std::string> files;
+    app.add_flag("-h,--help", help);
+    app.add_option("files", files);
+    parse_or_throw(app, argv, "verify-delaunay");
+    if (help) {
+        std::fputs(kVerifyDelaunayUsage, stdout);
+        return kExitOk;
+    }
+    if (files.size() != 2) {
+        throw UsageError("verify-delaunay needs two files, POINTS and TRIANGLES.off, got " +
+                         std::to_string(files.size()) + " (try 'hullkit verify-delaunay --help')");
+    }
+    if (files[1] == "-") throw UsageError("TRIANGLES.off must be a file ('-' is allowed for POINTS only)");
+    std::string text;
+    const hullkit::Points2Result points = load_points_2d(files[0], &text);
+    const hullkit::MeshResult mesh = hullkit::read_off_mesh(read_input(files[1]), files[1]);
+    if (!mesh.ok()) throw UsageError(mesh.error);
+
+    // Tie each OFF vertex to the input point with the same coordinates (in the plane z = 0).
+    std::vector<double> xyz(3 * points.count());
+    for (std::size_t i = 0; i < points.count(); ++i) {
+        xyz[3 * i] = points.xy[2 * i];
+        xyz[3 * i + 1] = points.xy[2 * i + 1];
+    }
+    const std::vector<std::int64_t> found = hullkit::match_points(
+        hullkit::PointSpan(xyz), hullkit::PointSpan(mesh.xyz.data(), mesh.point_count()));
+    std::vector<std::string> unmatched;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+        if (found[k] >= 0) continue;
+        const double* v = &mesh.xyz[3 * k];
+        unmatched.push_back(files[1] + ": OFF vertex " + std::to_string(k) + " (" + hullkit::format_double(v[0]) + " " +
+                            hullkit::format_double(v[1]) + " " + hullkit::format_double(v[2]) +
+                            ") is not one of the input points (with z = 0)");
+    }
+    hullkit::DelaunayVerifyReport report;
+    if (unmatched.empty()) {
+        std::vector<std::uint32_t> triangles(mesh.triangles.size());
+        for (std::size_t k = 0; k < triangles.size(); ++k) {
+            triangles[k] = static_cast<std::uint32_t>(found[mesh.triangles[k]]);
+        }
+        report = hullkit::verify_delaunay(hullkit::PointSpan2(points.xy), triangles.data(), mesh.triangle_count());
+    }
+    if (unmatched.empty() && report.ok) {
+        std::printf("ok: %zu points (%zu distinct, %zu on the hull), %zu triangles\n", points.count(),
+                    report.distinct_points, report.hull_points, mesh.triangle_count());
+        return kExitOk;
+    }
+    const std::size_t shown = std::min<std::size_t>(unmatched.size(), 20);
+    for (std::size_t k = 0; k < shown; ++k) std::printf("%s\n", unmatched[k].c_str());
+    if (shown < unmatched.size()) std::printf("... and %zu more unmatched vertices\n", unmatched.size() - shown);
+    for (const std::string& line : report.problems) std::printf("%s\n", line.c_str());
+    const std::size_t count = unmatched.empty() ? report.problem_count : unmatched.size();
+    std::printf("not a Delaunay triangulation: %zu problem%s\n", count, count == 1 ? "" : "s");
+    return kExitNotDelaunay;
+}
+
+}  // namespace
+
+int run_delaunay(const std::vector<std::string>& args) {
+    try {
+        return delaunay_main(args);
+    } catch (const UsageError& error) {
+        return print_usage_error(error.what());
+    }
+}
+
+int run_verify_delaunay(const std::vector<std::string>& args) {
+    try {
+        const int status = verify_delaunay_main(args);
+        if (std::fflush(stdout) != 0) throw UsageError(std::string("<stdout>: cannot write: ") + std::strerror(errno));
+        return status;
+    } catch (const UsageError& error) {
+        return print_usage_error(error.what());
+    }
 }
 
 }  // namespace hullkit_cli

@@ -1,4 +1,3 @@
-// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // End-to-end test of the demo page (web/) in headless Debian Chromium.
 //
 //   node --test tests/browser/

@@ -104,7 +104,7 @@ test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
         await page.click('#dl-compute');
         const info = await nextRun(page, 'hullkitDelaunay', before);
         const c = await delaunayCounts(page);
-        t.diagnostic(`${set}: ${JSON.stringify(c)} (${info.engine})`);
+        t.diagnostic(`${set}: ${JSON.stringify(c)} (${info.ms.toFixed(1)} ms)`);
         assert.equal(c.n, n, `${set}: n`);
         assert.equal(c.duplicates, 0);
         assert.ok(c.hull >= 3 && c.hull <= n, `${set}: hull size ${c.hull}`);
@@ -122,6 +122,16 @@ test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
       assert.equal(c.n, 1025);
       assert.equal(c.triangles, 2 * c.n - c.hull - 2);
       assert.match(page.url(), /add=/, 'the clicked point is kept in the URL');
+      // Back: the state before the click (the same counts as then); forward: the click again.
+      let run = info.run;
+      await page.goBack();
+      const back = await nextRun(page, 'hullkitDelaunay', run);
+      assert.deepEqual([back.n, back.added, back.set], [1024, 0, 'figure1'], 'back undoes the click');
+      assert.equal(await page.inputValue('#dl-set'), 'figure1');
+      run = back.run;
+      await page.goForward();
+      const forward = await nextRun(page, 'hullkitDelaunay', run);
+      assert.deepEqual([forward.n, forward.triangles, forward.hull], [1025, c.triangles, c.hull], 'forward redoes it');
     });
 
     await t.test('Delaunay: the Voronoi toggle and the blended layout draw', async () => {

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -381,5 +382,32 @@ TEST_CASE("mesh_read: the committed fixtures read", "[mesh_read]") {
         INFO(mesh.error);
         CHECK(mesh.ok());
         CHECK(mesh.triangle_count() > 0);
+    }
+}
+
+TEST_CASE("mesh_read: truncated and corrupted files give a mesh or a one-line error, never a crash", "[mesh_read]") {
+    const Mesh mesh = test_mesh(5);
+    const std::string files[] = {write_obj(mesh), write_off(mesh), write_ply(mesh, "ascii"), write_ply(mesh, "binary_little_endian"),
+                                 write_ply(mesh, "binary_big_endian"), write_ascii_stl(mesh), write_binary_stl(mesh)};
+    std::mt19937 random(7);
+    for (const std::string& file : files) {
+        for (int trial = 0; trial < 200; ++trial) {
+            std::string bytes = file;
+            if (trial % 2 == 0) {
+                bytes.resize(random() % bytes.size());  // cut anywhere
+            } else {
+                for (int k = 0; k < 3; ++k) bytes[random() % bytes.size()] = static_cast<char>(random() % 256);
+            }
+            MeshResult result = hullkit::read_mesh(bytes, "f.mesh");
+            if (result.ok()) {
+                // Whatever was read must be a valid mesh: indices in range, finite coordinates.
+                for (std::uint32_t index : result.triangles) REQUIRE(index < result.point_count());
+                for (double x : result.xyz) REQUIRE(std::isfinite(x));
+                REQUIRE(result.triangle_count() > 0);
+            } else {
+                REQUIRE(result.error.rfind("f.mesh", 0) == 0);
+                REQUIRE(result.error.find('\n') == std::string::npos);
+            }
+        }
     }
 }

@@ -5,17 +5,19 @@
 // which lies in the plane of the lifted face), Voronoi cells on request.
 //
 // Test hook: window.hullkitDelaunay = {n, distinct, duplicates, triangles, hull, dimension,
-// ms, engine, set, seed, added, run} after each triangulation drawn.
+// ms, set, seed, added, run} after each triangulation drawn.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { discTexture, clearGroup, zUpCamera } from '../app/stage.js';
 import { fmtInt, fmtMs } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
+import { showError } from '../app/panel.js';
 import { POINT_SETS, generatePoints2, gridSide2 } from '../points2d.js';
 
 const N_MAX = 50_000;
 const DEFAULTS = { set: 'uniform', n: 300, seed: 1, layout: 'side', voronoi: false, algorithm: '' };
 const FIGURE1_N = 1024;
+const GIFTWRAP_MAX = 5000;
 const LIFT = 0.75; // drawn height of the paraboloid per unit of x² + y²
 const PLANE_Z = -0.55; // where the blended layout draws the plane under the paraboloid
 const COLORS = {
@@ -517,9 +519,9 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   }
 
   function setAlgorithms(info) {
-    const list = info?.delaunay?.algorithms ?? ['lifting'];
+    const list = info?.delaunay?.algorithms ?? ['incremental'];
     const wanted = ui.algorithm.value;
-    const labels = { incremental: 'incremental insertion', giftwrap: 'gift wrapping the lifted points', lifting: 'lifting + hullkit.hull (quickhull)' };
+    const labels = { incremental: 'incremental insertion', giftwrap: 'gift wrapping the lifted points' };
     ui.algorithm.replaceChildren(...list.map((name) => Object.assign(document.createElement('option'), { value: name, textContent: labels[name] ?? name })));
     ui.algorithm.value = list.includes(wanted) ? wanted : list[0];
     const q = new URLSearchParams(location.search);
@@ -549,6 +551,12 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     const bounds = [extent.cx - 1.3 * extent.r, extent.cy - 1.3 * extent.r, extent.cx + 1.3 * extent.r, extent.cy + 1.3 * extent.r];
 
     if (active) writeUrl('delaunay', urlParams(), { push });
+    if (p.algorithm === 'giftwrap' && xy.length / 2 > GIFTWRAP_MAX) {
+      // Every lifted point is a hull vertex, so gift wrapping them costs O(n²).
+      fail(`Gift wrapping the lifted points takes O(n²) time (every lifted point is a hull vertex): ` +
+        `at most ${fmtInt(GIFTWRAP_MAX)} points here; pick incremental insertion for more.`, false);
+      return;
+    }
     pendingKey = key;
     const id = ++requestSeq;
     const t0 = performance.now();
@@ -605,9 +613,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
       n: fmtInt(n), triangles: fmtInt(triangles), hull: fmtInt(tri.hull.length),
       ms: fmtMs(msg.ms), rtt: fmtMs(roundTripMs), dup: fmtInt(tri.duplicateCount),
     });
-    ui.stat.ms.title = msg.engine === 'lifting'
-      ? 'this wasm build has no hullkit.delaunay yet: lifted points hulled with hullkit.hull, lower faces kept'
-      : 'hullkit.delaunay() inside the worker';
+    ui.stat.ms.title = 'hullkit.delaunay() inside the worker';
     const setLabel = ui.set.selectedOptions[0]?.textContent ?? p.set;
     let status = `${fmtInt(distinct)} points (${setLabel}${added.length ? `, ${added.length} clicked` : ''}): ` +
       `${fmtInt(triangles)} triangles = 2n − h − 2 with h = ${fmtInt(tri.hull.length)} hull points.`;
@@ -617,7 +623,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     ui.status.textContent = status;
     window.hullkitDelaunay = {
       n, distinct, duplicates: tri.duplicateCount, triangles, hull: tri.hull.length, dimension: tri.dimension,
-      ms: msg.ms, engine: msg.engine, set: p.set, seed: p.seed, added: added.length, voronoi: Boolean(cells), run: runCount,
+      ms: msg.ms, set: p.set, seed: p.seed, added: added.length, voronoi: Boolean(cells), run: runCount,
     };
     // The coordinates too (non-enumerable: JSON of the hook stays short).
     Object.defineProperty(window.hullkitDelaunay, 'points', { value: Array.from(xy) });
@@ -626,9 +632,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   }
 
   function fail(message, logged = true) {
-    if (logged) console.error(`[hullkit] ${message}`);
-    ui.error.textContent = message;
-    ui.error.hidden = false;
+    showError(ui.error, message, logged);
     ui.status.textContent = '';
     setState('error');
   }

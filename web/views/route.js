@@ -12,6 +12,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { clearGroup, zUpCamera } from '../app/stage.js';
 import { fmtMs } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
+import { showError } from '../app/panel.js';
 import { PRESETS, presetScene, partVertices, partTriangles } from '../route-scenes.js';
 
 const COLORS = {
@@ -368,9 +369,7 @@ export function createRouteView({ stage, worker, setState, viewport }) {
   }
 
   function fail(message, logged = true) {
-    if (logged) console.error(`[hullkit] ${message}`);
-    ui.error.textContent = message;
-    ui.error.hidden = false;
+    showError(ui.error, message, logged);
     setState('error');
   }
 

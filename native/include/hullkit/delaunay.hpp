@@ -1,4 +1,3 @@
-// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit: Delaunay triangulation of 2D points by lifting to the paraboloid z = x^2 + y^2.
 //
 // The Delaunay triangulation is the projection of the lower convex hull of the lifted points
@@ -53,8 +52,15 @@ struct DelaunayOptions {
 /// halfedges[e] is the opposite half-edge in the neighbouring triangle, or -1 on the hull.
 ///
 /// Cocircular points (square grids, regular polygons): the Delaunay polygons are unique; each is
-/// triangulated by one documented rule that every algorithm shares (see delaunay.cpp / README), so
-/// every algorithm returns identical triangles, and no triangle has zero area.
+/// triangulated by one rule that every algorithm shares, so every algorithm returns identical
+/// arrays, and no triangle has zero area. The canonical rule:
+///  * each Delaunay polygon (a triangle in general position) is fanned from its LOWEST index c0:
+///    with its corners c0, c1, ..., c(m-1) in order, the triangles are c0, c(k+1), c(k) (clockwise);
+///  * each triangle starts at its lowest index;
+///  * triangles are sorted by the position of their first corner, then of their second, along a
+///    Hilbert curve over the bounding box of the input (points with equal curve keys by index).
+///    This depends only on the input; it keeps neighbouring triangles near each other in memory;
+///  * `hull` starts at its lowest index and follows the boundary half-edges (clockwise, y up).
 ///
 /// `dimension`: 2 when the distinct points span the plane; 1 when they are all collinear (no
 /// triangles; `hull` holds the distinct points in order along the line); 0 one distinct point;
@@ -84,8 +90,9 @@ struct Delaunay {
 };
 
 /// Triangulates `points` exactly. Fails only on a non-finite coordinate (naming the point), more
-/// than 2^31 - 1 points, or coordinates whose nonzero magnitudes span more than the exact
-/// predicates allow after a power-of-two rescaling.
+/// than 357913941 points (6n half-edge slots must fit int32), or coordinates whose nonzero
+/// magnitudes span more than a factor of 2^410 (incircle's exact range after a power-of-two
+/// rescaling, see predicates.hpp; the error names the smallest and largest point).
 Delaunay delaunay(PointSpan2 points, const DelaunayOptions& options = {});
 
 /// "incremental", "giftwrap"

@@ -1,4 +1,3 @@
-// >>> HELPERS: before building, testing or touching git, read /work/HELPERS_RULES.md (lead removes this line).
 // hullkit: route checking with swept traverses (the seed document's first paragraph).
 //
 // A traverse (one or more triangle meshes, its "parts") moves along a route of straight
@@ -13,6 +12,26 @@
 //   first contact the smallest fraction of the leg at which the traverse comes within the margin,
 //                 bracketed in [lo, hi] with lo never after the true contact.
 // Intersection decisions use exact predicates; a method that cannot certify "clear" reports a hit.
+//
+// What is exact, precisely. The geometry tested is the traverse's triangles with vertices v + w
+// rounded to doubles (w the offset: a waypoint, or a + t (b - a) rounded for a fraction t inside a
+// leg) and the obstacles' triangles as given. The sweep of a triangle from offset w0 to w1 is the
+// union of 8 triangles (its two copies and, per edge, the parallelogram the edge sweeps), so
+// "does the sweep meet this obstacle triangle" is 8 triangle-triangle tests, each decided by exact
+// orient3d / orient2d on those doubles, every degenerate case included (touching, coplanar,
+// collinear, zero-area triangles, zero-length legs). Margin 0 verdicts and brackets are therefore
+// exact for the rounded translated coordinates; near 1e6 a rounding step is about 1e-10 there.
+// Containment (a closed part inside a closed obstacle or the reverse) is ray parity with exact
+// orientation signs; rays found degenerate (exactly) are retried in other directions, and a point
+// never certified outside counts as inside (a hit). Surfaces must meet before one closed solid can
+// enter another, so containment is tested at the start of each leg only.
+// With margin > 0 "within the margin" compares a floating-point squared distance (closest points
+// by region clamping, relative error ~1e-15) with margin^2: the bracket is exact for that computed
+// distance; at a tangential approach hi may precede the true moment by ~1e-10 of the leg.
+// Floating-point filters (box windows, separating axes) only ever discard what they prove apart by
+// a tolerance far above their rounding, so they never turn a contact into "clear".
+// A closed part that is convex (every triangle in a supporting plane of its hull) is represented
+// by its hull's triangles (same solid, usually far fewer triangles).
 #pragma once
 
 #include <cstddef>
@@ -65,7 +84,10 @@ struct LegReport {
     double fraction_hi = 0.0;
     double position[3] = {0.0, 0.0, 0.0};  ///< the traverse offset at fraction_lo
     /// Clear: the minimum distance over the leg, correct to 1e-9 relative (infinity without
-    /// obstacles; NaN when RouteOptions::clearance is off). Hit / StartOverlap: at most the margin.
+    /// obstacles; NaN when RouteOptions::clearance is off). Hit: the distance of the contact pair
+    /// at fraction_hi (at most the margin; 0 at margin 0). StartOverlap: the distance of the pair
+    /// at the start, 0 when one solid contains the other (then `triangle` is one triangle of the
+    /// contained obstacle piece, or 0 when the obstacle contains the part).
     double clearance = std::numeric_limits<double>::quiet_NaN();
     /// With RouteOptions::samples = N > 0: what checking the traverse statically at N + 1 evenly
     /// spaced poses (fractions 0, 1/N, ..., 1) finds: whether any pose is within the margin, and the

@@ -3,11 +3,15 @@
 //
 // The canonical rule (documented in delaunay.hpp and the README):
 //  * every Delaunay face (a maximal set of cocircular points with an empty circle; a triangle for
-//    points in general position) is fanned from its LOWEST index: corners v0 < others, in order
-//    around the face, give triangles (v0, v_k, v_k+1). Corners of a face lie on one circle, so they
-//    are in strictly convex position and no fan triangle has zero area;
+//    points in general position) is fanned from its LOWEST index: with corners c_0 (the lowest)
+//    ... c_m-1 in order around the face, the triangles are (c_0, c_k, c_k+1). Corners of a face lie
+//    on one circle, so they are in strictly convex position and no fan triangle has zero area;
 //  * each triangle is written clockwise with y up (delaunator's orientation), starting at its
-//    lowest index; triangles are sorted by (first, second) index;
+//    lowest index;
+//  * triangles are ordered by the position of their first corner, then of their second, along a
+//    Hilbert curve over the input's bounding box (ties between points with one curve key by
+//    index); this order depends only on the input and keeps neighbouring triangles near each other
+//    in memory, which is what makes the output stage fast;
 //  * `hull` starts at its lowest index and follows the boundary half-edges' direction.
 // The faces are unique, so every algorithm returns identical arrays.
 #include <algorithm>
@@ -30,131 +34,232 @@ Delaunay failure(std::string message, std::int64_t point = -1) {
     return d;
 }
 
-/// Rejects non-finite coordinates and too many points; sets *exponent to the power of two that
-/// brings the coordinates into incircle's exact range.
-Delaunay check_input(PointSpan2 points, int* exponent) {
-    if (points.count > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+/// The input's extent, found while checking it.
+struct Extent {
+    double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+    int exponent = 0;  ///< power of two bringing the coordinates into incircle's exact range
+};
+
+/// Rejects non-finite coordinates and too many points; finds the bounding box and the scale.
+Delaunay check_input(PointSpan2 points, Extent* extent) {
+    if (points.count > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 6)) {
         return failure("too many points: " + std::to_string(points.count) +
-                       " (at most 2147483647 fit the 32-bit half-edge indices)");
+                       " (at most 357913941, so that half-edge indices fit in 32 bits)");
     }
     double largest = 0.0;
     double smallest = std::numeric_limits<double>::infinity();
     std::size_t largest_at = 0, smallest_at = 0;
+    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
     for (std::size_t i = 0; i < points.count; ++i) {
         for (int axis = 0; axis < 2; ++axis) {
             const double value = points[i][axis];
             const double magnitude = std::fabs(value);
             if (!(magnitude <= std::numeric_limits<double>::max())) {  // inf or nan
                 const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
-                return failure("point " + std::to_string(i) + " has a non-finite " +
-                                   (axis == 0 ? "x" : "y") + " coordinate (" + what + ")",
+                return failure("point " + std::to_string(i) + " has a non-finite " + (axis == 0 ? "x" : "y") +
+                                   " coordinate (" + what + ")",
                                static_cast<std::int64_t>(i));
             }
             if (magnitude > largest) largest = magnitude, largest_at = i;
             if (magnitude != 0.0 && magnitude < smallest) smallest = magnitude, smallest_at = i;
         }
+        xmin = std::min(xmin, points[i][0]), xmax = std::max(xmax, points[i][0]);
+        ymin = std::min(ymin, points[i][1]), ymax = std::max(ymax, points[i][1]);
     }
-    *exponent = 0;
-    if (!incircle_range_ok(largest, smallest) &&
-        !incircle_scale_exponent(largest, smallest, exponent)) {
+    *extent = Extent{xmin, xmax, ymin, ymax, 0};
+    if (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &extent->exponent)) {
         return failure("coordinates span too many orders of magnitude for exact in-circle tests: point " +
                            std::to_string(smallest_at) + " (smallest nonzero |coordinate|) and point " +
-                           std::to_string(largest_at) +
-                           " (largest) must be within a factor of 2^410 (about 1e123)",
+                           std::to_string(largest_at) + " (largest) must be within a factor of 2^410 (about 1e123)",
                        static_cast<std::int64_t>(smallest_at));
     }
     return Delaunay{};
 }
 
-inline bool lex_less(PointSpan2 p, std::uint32_t a, std::uint32_t b) {
-    const double* u = p[a];
-    const double* v = p[b];
-    return u[0] < v[0] || (u[0] == v[0] && (u[1] < v[1] || (u[1] == v[1] && a < b)));
-}
-
-/// Sorts the indices by (x, y, index), fills `representative` / `duplicate_count` and returns the
-/// distinct points (the lowest index of each group), still sorted by (x, y).
-std::vector<std::uint32_t> merge_duplicates(PointSpan2 p, Delaunay& out) {
-    std::vector<std::uint32_t> order(p.count);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return lex_less(p, a, b); });
-    out.representative.resize(p.count);
-    std::vector<std::uint32_t> distinct;
-    distinct.reserve(p.count);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        const std::uint32_t i = order[k];
-        if (k > 0 && p[i][0] == p[distinct.back()][0] && p[i][1] == p[distinct.back()][1]) {
-            out.representative[i] = distinct.back();  // lowest index comes first in the sort
-            ++out.duplicate_count;
-        } else {
-            out.representative[i] = i;
-            distinct.push_back(i);
+/// Index along a Hilbert curve on a 2^16 x 2^16 grid.
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    std::uint32_t d = 0;
+    for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+        const std::uint32_t rx = (x & s) ? 1 : 0;
+        const std::uint32_t ry = (y & s) ? 1 : 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) {  // rotate the quadrant so that the curve continues (only lower bits matter)
+            if (rx == 1) {
+                x = ~x;
+                y = ~y;
+            }
+            std::swap(x, y);
         }
     }
-    return distinct;
+    return d;
 }
 
-/// Triangles (clockwise, rotated, sorted as in the rule above) from counter-clockwise faces.
-std::vector<std::uint32_t> canonical_triangles(std::size_t point_count, const Faces& faces) {
-    std::size_t triangle_count = 0;
-    for (std::size_t f = 0; f < faces.size(); ++f) triangle_count += faces.offsets[f + 1] - faces.offsets[f] - 2;
-    // Counting sort by the first (lowest) index, then each small bucket by the second index.
-    std::vector<std::uint32_t> start(point_count + 1, 0);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t* c = &faces.vertices[faces.offsets[f]];
-        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-        const std::uint32_t low = *std::min_element(c, c + m);
-        start[low + 1] += static_cast<std::uint32_t>(m - 2);
+/// The input as (Hilbert key << 32 | index), sorted: Hilbert-curve order over the bounding box,
+/// equal keys by index (stable LSD radix sort on the key). The order only
+/// affects speed and memory locality, never the result, so the rounding in the keys is harmless;
+/// exact duplicates get equal keys.
+std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const Extent& box) {
+    const std::size_t n = p.count;
+    const double width = box.xmax - box.xmin, height = box.ymax - box.ymin;
+    const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
+    std::vector<std::uint64_t> keyed(n), swap(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double fx = (p[i][0] - box.xmin) * sx, fy = (p[i][1] - box.ymin) * sy;
+        fx = std::min(std::max(fx, 0.0), 65535.0);  // also tames an infinite width (NaN is excluded)
+        fy = std::min(std::max(fy, 0.0), 65535.0);
+        const std::uint32_t key = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
+        keyed[i] = (std::uint64_t{key} << 32) | i;
     }
-    for (std::size_t i = 0; i < point_count; ++i) start[i + 1] += start[i];
+    // Three passes of 11-bit digits: 2048 buckets keep the scatter's write streams in cache.
+    std::vector<std::uint32_t> count(2049);
+    for (int shift = 32; shift < 64; shift += 11) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::size_t i = 0; i < n; ++i) ++count[((keyed[i] >> shift) & 0x7ffu) + 1];
+        for (std::size_t d = 0; d < 2048; ++d) count[d + 1] += count[d];
+        for (std::size_t k = 0; k < n; ++k) swap[count[(keyed[k] >> shift) & 0x7ffu]++] = keyed[k];
+        keyed.swap(swap);
+    }
+    return keyed;
+}
+
+/// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
+/// and stores the distinct points contiguously in that order, scaled by 2^exponent.
+void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector<double>& local_xy,
+                     std::vector<std::uint32_t>& original) {
+    std::vector<std::uint64_t> keyed = hilbert_order(p, box);
+    const std::size_t n = p.count;
+    // Every point's coordinates in curve order (one pass of scattered reads), then all work is
+    // sequential. Distinct points are compacted into the front of the same arrays.
+    std::vector<std::uint32_t> order(n);
+    local_xy.resize(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t i = static_cast<std::uint32_t>(keyed[k]);
+        order[k] = i;
+        local_xy[2 * k] = p[i][0];
+        local_xy[2 * k + 1] = p[i][1];
+    }
+    out.representative.resize(n);
+    original.clear();
+    original.reserve(n);
+    std::size_t distinct = 0;  // distinct points so far, at the front of local_xy
+    auto same_as = [&](std::size_t k, std::size_t j) {  // point at curve position k vs distinct j
+        return local_xy[2 * k] == local_xy[2 * j] && local_xy[2 * k + 1] == local_xy[2 * j + 1];
+    };
+    for (std::size_t begin = 0; begin < n;) {
+        std::size_t end = begin + 1;
+        while (end < n && (keyed[end] >> 32) == (keyed[begin] >> 32)) ++end;
+        const std::size_t first_distinct = distinct;
+        if (end - begin > 16) {
+            // A long run of one key (many duplicates or a very dense spot): sort it by
+            // (x, y, index) so that duplicates are adjacent.
+            std::vector<std::size_t> run(end - begin);
+            std::iota(run.begin(), run.end(), begin);
+            std::sort(run.begin(), run.end(), [&](std::size_t a, std::size_t b) {
+                const double ax = local_xy[2 * a], ay = local_xy[2 * a + 1], bx = local_xy[2 * b], by = local_xy[2 * b + 1];
+                return ax < bx || (ax == bx && (ay < by || (ay == by && order[a] < order[b])));
+            });
+            std::vector<double> xy(2 * run.size());
+            std::vector<std::uint32_t> ids(run.size());
+            for (std::size_t r = 0; r < run.size(); ++r) {
+                xy[2 * r] = local_xy[2 * run[r]], xy[2 * r + 1] = local_xy[2 * run[r] + 1];
+                ids[r] = order[run[r]];
+            }
+            for (std::size_t r = 0; r < run.size(); ++r) {
+                local_xy[2 * (begin + r)] = xy[2 * r], local_xy[2 * (begin + r) + 1] = xy[2 * r + 1];
+                order[begin + r] = ids[r];
+            }
+        }
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t i = order[k];
+            std::size_t match = distinct;
+            for (std::size_t j = end - begin > 16 ? (distinct > first_distinct ? distinct - 1 : distinct) : first_distinct;
+                 j < distinct; ++j) {
+                if (same_as(k, j)) {
+                    match = j;
+                    break;
+                }
+            }
+            if (match < distinct) {  // indices ascend within a run, so the first one represents
+                out.representative[i] = original[match];
+                ++out.duplicate_count;
+            } else {
+                out.representative[i] = i;
+                local_xy[2 * distinct] = local_xy[2 * k];
+                local_xy[2 * distinct + 1] = local_xy[2 * k + 1];
+                original.push_back(i);
+                ++distinct;
+            }
+        }
+        begin = end;
+    }
+    local_xy.resize(2 * distinct);
+    if (box.exponent != 0) {
+        for (double& v : local_xy) v = std::ldexp(v, box.exponent);
+    }
+}
+
+/// Output triangles in local indices, one fan per face from the corner with the lowest ORIGINAL
+/// index, each clockwise and starting at that corner. When the faces are triangles with known
+/// twins, also returns the output twins in *twins (otherwise leaves it empty).
+std::vector<std::uint32_t> fan_faces(const Faces& faces, const std::vector<std::uint32_t>& original,
+                                     std::vector<std::int32_t>* twins) {
+    std::size_t triangle_count = 0;
+    for (std::size_t f = 0; f < faces.size(); ++f) triangle_count += faces.corners(f) - 2;
     std::vector<std::uint32_t> triangles(3 * triangle_count);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    std::vector<std::uint8_t> low_of;
+    if (!faces.twin.empty()) low_of.resize(faces.size());
+    std::size_t t = 0;
     for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t* c = &faces.vertices[faces.offsets[f]];
-        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-        const std::size_t low = static_cast<std::size_t>(std::min_element(c, c + m) - c);
-        const std::uint32_t v0 = c[low];
-        for (std::size_t k = 1; k + 1 < m; ++k) {
-            // Counter-clockwise fan triangle (v0, c_k, c_k+1) written clockwise: (v0, c_k+1, c_k).
-            const std::uint32_t t = fill[v0]++;
-            triangles[3 * t] = v0;
+        const std::uint32_t* c = &faces.vertices[faces.begin(f)];
+        const std::size_t m = faces.corners(f);
+        std::size_t low = 0;
+        for (std::size_t k = 1; k < m; ++k)
+            if (original[c[k]] < original[c[low]]) low = k;
+        if (!low_of.empty()) low_of[f] = static_cast<std::uint8_t>(low);
+        for (std::size_t k = 1; k + 1 < m; ++k, ++t) {
+            // Counter-clockwise fan triangle (c_low, c_k, c_k+1) written clockwise.
+            triangles[3 * t] = c[low];
             triangles[3 * t + 1] = c[(low + k + 1) % m];
             triangles[3 * t + 2] = c[(low + k) % m];
         }
     }
-    for (std::size_t i = 0; i < point_count; ++i) {
-        // Buckets hold about two triangles: insertion sort by the second index.
-        for (std::uint32_t t = start[i] + 1; t < start[i + 1]; ++t) {
-            const std::uint32_t b = triangles[3 * t + 1], c = triangles[3 * t + 2];
-            std::uint32_t s = t;
-            while (s > start[i] && triangles[3 * (s - 1) + 1] > b) {
-                triangles[3 * s + 1] = triangles[3 * (s - 1) + 1];
-                triangles[3 * s + 2] = triangles[3 * (s - 1) + 2];
-                --s;
+    twins->clear();
+    if (!low_of.empty()) {
+        // Output edge j of face f runs backwards along the face's edge (low + 2 - j) mod 3, so
+        // face edge k is output edge (low + 2 - k) mod 3.
+        twins->resize(triangles.size());
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            for (std::size_t j = 0; j < 3; ++j) {
+                const std::int32_t g = faces.twin[3 * f + (low_of[f] + 2 - j) % 3];
+                if (g < 0) {
+                    (*twins)[3 * f + j] = -1;
+                    continue;
+                }
+                const std::size_t h = static_cast<std::size_t>(g) / 3;
+                const std::size_t k = static_cast<std::size_t>(g) % 3;
+                (*twins)[3 * f + j] = static_cast<std::int32_t>(3 * h + (low_of[h] + 5 - k) % 3);
             }
-            triangles[3 * s + 1] = b;
-            triangles[3 * s + 2] = c;
         }
     }
     return triangles;
 }
 
-/// delaunator's half-edges for `triangles`: each half-edge is matched with its reverse, found among
-/// the half-edges leaving its end vertex (grouped by start vertex with a counting sort).
+/// Half-edge twins: each half-edge is matched with its reverse among the half-edges leaving its end
+/// vertex (grouped by start vertex with a counting sort). Local indices keep this cache-friendly.
 std::vector<std::int32_t> match_halfedges(std::size_t point_count, const std::vector<std::uint32_t>& triangles) {
     const std::size_t edges = triangles.size();
     std::vector<std::uint32_t> start(point_count + 1, 0);
     for (std::size_t e = 0; e < edges; ++e) ++start[triangles[e] + 1];
     for (std::size_t i = 0; i < point_count; ++i) start[i + 1] += start[i];
     std::vector<std::uint32_t> by_start(edges);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t e = 0; e < edges; ++e) by_start[fill[triangles[e]]++] = static_cast<std::uint32_t>(e);
+    for (std::size_t e = 0; e < edges; ++e) by_start[start[triangles[e]]++] = static_cast<std::uint32_t>(e);
+    // start[i] now is the end of i's group, i.e. the beginning of group i + 1.
     auto next = [](std::size_t e) { return e % 3 == 2 ? e - 2 : e + 1; };
     std::vector<std::int32_t> halfedges(edges, -1);
     for (std::size_t e = 0; e < edges; ++e) {
         if (halfedges[e] != -1) continue;
         const std::uint32_t from = triangles[e], to = triangles[next(e)];
-        for (std::uint32_t k = start[to]; k < start[to + 1]; ++k) {
+        for (std::uint32_t k = to == 0 ? 0 : start[to - 1]; k < start[to]; ++k) {
             const std::uint32_t f = by_start[k];
             if (triangles[next(f)] == from) {
                 halfedges[e] = static_cast<std::int32_t>(f);
@@ -166,34 +271,70 @@ std::vector<std::int32_t> match_halfedges(std::size_t point_count, const std::ve
     return halfedges;
 }
 
-/// The hull cycle: from the lowest hull index along the boundary half-edges.
-std::vector<std::uint32_t> hull_cycle(std::size_t point_count, const std::vector<std::uint32_t>& triangles,
-                                      const std::vector<std::int32_t>& halfedges) {
-    std::vector<std::uint32_t> successor(point_count, std::numeric_limits<std::uint32_t>::max());
-    std::uint32_t first = std::numeric_limits<std::uint32_t>::max();
-    std::size_t count = 0;
-    for (std::size_t e = 0; e < triangles.size(); ++e) {
-        if (halfedges[e] != -1) continue;
-        const std::uint32_t from = triangles[e];
-        successor[from] = triangles[e % 3 == 2 ? e - 2 : e + 1];
-        first = std::min(first, from);
-        ++count;
+/// Writes triangles and half-edges in the canonical order: sorted by the Hilbert position (local
+/// index) of their first corner, then of their second (a counting sort by the first, then each
+/// small bucket by the second). The positions depend only on the input, so every algorithm gets
+/// the same order, and neighbouring triangles stay near each other in memory.
+void write_canonical(const std::vector<std::uint32_t>& local, const std::vector<std::int32_t>& twins,
+                     const std::vector<std::uint32_t>& original, Delaunay& out) {
+    const std::size_t count = local.size() / 3;
+    const std::size_t m = original.size();
+    std::vector<std::uint32_t> start(m + 1, 0);
+    for (std::size_t t = 0; t < count; ++t) ++start[local[3 * t] + 1];
+    for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> slot_of(count);  // canonical slot -> local triangle
+    for (std::size_t t = 0; t < count; ++t) slot_of[start[local[3 * t]]++] = static_cast<std::uint32_t>(t);
+    // start[i] is now the end of bucket i. Buckets hold about two triangles: insertion sort.
+    std::uint32_t bucket_begin = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t bucket_end = start[i];
+        for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
+            for (std::uint32_t s = q; s > bucket_begin && local[3 * slot_of[s] + 1] < local[3 * slot_of[s - 1] + 1]; --s)
+                std::swap(slot_of[s], slot_of[s - 1]);
+        }
+        bucket_begin = bucket_end;
     }
+    std::vector<std::uint32_t> position(count);
+    for (std::size_t q = 0; q < count; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
+    out.triangles.resize(local.size());
+    out.halfedges.resize(local.size());
+    for (std::size_t q = 0; q < count; ++q) {
+        const std::size_t t = slot_of[q];
+        for (int k = 0; k < 3; ++k) {
+            out.triangles[3 * q + k] = original[local[3 * t + k]];
+            const std::int32_t f = twins[3 * t + k];
+            out.halfedges[3 * q + k] = f < 0 ? -1 : static_cast<std::int32_t>(3 * position[f / 3] + f % 3);
+        }
+    }
+}
+
+/// The hull cycle: from the lowest hull index along the boundary half-edges.
+std::vector<std::uint32_t> hull_cycle(const std::vector<std::uint32_t>& triangles,
+                                      const std::vector<std::int32_t>& halfedges) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
+    for (std::size_t e = 0; e < triangles.size(); ++e) {
+        if (halfedges[e] == -1) boundary.emplace_back(triangles[e], triangles[e % 3 == 2 ? e - 2 : e + 1]);
+    }
+    std::sort(boundary.begin(), boundary.end());
     std::vector<std::uint32_t> hull;
-    hull.reserve(count);
-    for (std::uint32_t v = first; hull.size() < count; v = successor[v]) hull.push_back(v);
+    hull.reserve(boundary.size());
+    std::uint32_t v = boundary.front().first;
+    for (std::size_t k = 0; k < boundary.size(); ++k) {
+        hull.push_back(v);
+        v = std::lower_bound(boundary.begin(), boundary.end(), std::make_pair(v, 0u))->second;
+    }
     return hull;
 }
 
 /// merge_cocircular: the faces turned clockwise, each from its lowest index, sorted like triangles.
-void fill_polygons(const Faces& faces, Delaunay& out) {
+void fill_polygons(const Faces& faces, const std::vector<std::uint32_t>& original, Delaunay& out) {
     std::vector<std::vector<std::uint32_t>> polygons(faces.size());
     for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t* c = &faces.vertices[faces.offsets[f]];
-        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-        const std::size_t low = static_cast<std::size_t>(std::min_element(c, c + m) - c);
+        const std::uint32_t* c = &faces.vertices[faces.begin(f)];
+        const std::size_t m = faces.corners(f);
         auto& polygon = polygons[f];
-        for (std::size_t k = 0; k < m; ++k) polygon.push_back(c[(low + m - k) % m]);
+        for (std::size_t k = 0; k < m; ++k) polygon.push_back(original[c[m - 1 - k]]);
+        std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
     }
     std::sort(polygons.begin(), polygons.end());
     out.polygon_offsets.assign(1, 0);
@@ -207,8 +348,8 @@ void fill_polygons(const Faces& faces, Delaunay& out) {
 
 namespace delaunay_detail {
 
-Faces merge_cocircular_triangles(PointSpan2 p, const std::vector<std::uint32_t>& triangles,
-                                 const std::vector<std::int32_t>& twin) {
+Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triangles,
+                                 std::vector<std::int32_t> twin) {
     const std::size_t count = triangles.size() / 3;
     // Union-find over triangles joined across edges with an exactly cocircular neighbour.
     std::vector<std::uint32_t> parent;
@@ -220,7 +361,7 @@ Faces merge_cocircular_triangles(PointSpan2 p, const std::vector<std::uint32_t>&
         const std::int32_t f = twin[e];
         if (f < 0 || static_cast<std::size_t>(f) < e) continue;
         const std::size_t t = e / 3;
-        const std::uint32_t opposite = triangles[f % 3 == 0 ? f + 2 : f - 1];  // vertex of f's triangle off the edge
+        const std::uint32_t opposite = triangles[f % 3 == 0 ? f + 2 : f - 1];  // f's corner off the edge
         const double* a = p[triangles[3 * t]];
         const double* b = p[triangles[3 * t + 1]];
         const double* c = p[triangles[3 * t + 2]];
@@ -235,26 +376,34 @@ Faces merge_cocircular_triangles(PointSpan2 p, const std::vector<std::uint32_t>&
     }
     Faces faces;
     if (parent.empty()) {  // general position: every triangle is a face
-        faces.vertices = triangles;
-        faces.offsets.resize(count + 1);
-        for (std::size_t t = 0; t <= count; ++t) faces.offsets[t] = static_cast<std::uint32_t>(3 * t);
+        faces.vertices = std::move(triangles);
+        faces.twin = std::move(twin);
         return faces;
     }
-    // Group the triangles by root; walk each group's boundary (a convex cycle on one circle).
-    std::vector<std::vector<std::uint32_t>> members(count);
-    for (std::uint32_t t = 0; t < count; ++t) members[find(t)].push_back(t);
-    std::vector<std::uint32_t> successor;
+    // Group the triangles by root (counting sort); walk each group's boundary, a convex cycle on
+    // one circle.
+    std::vector<std::uint32_t> start(count + 1, 0);
+    for (std::uint32_t t = 0; t < count; ++t) ++start[find(t) + 1];
+    for (std::size_t r = 0; r < count; ++r) start[r + 1] += start[r];
+    std::vector<std::uint32_t> members(count);
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::uint32_t t = 0; t < count; ++t) members[fill[find(t)]++] = t;
+    }
+    faces.offsets.push_back(0);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
     for (std::uint32_t root = 0; root < count; ++root) {
-        const auto& group = members[root];
-        if (group.empty()) continue;
-        if (group.size() == 1) {
+        const std::uint32_t begin = start[root], end = start[root + 1];
+        if (begin == end) continue;
+        if (end - begin == 1) {
             faces.vertices.insert(faces.vertices.end(), &triangles[3 * root], &triangles[3 * root + 3]);
             faces.offsets.push_back(static_cast<std::uint32_t>(faces.vertices.size()));
             continue;
         }
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
-        for (std::uint32_t t : group) {
-            for (int k = 0; k < 3; ++k) {
+        boundary.clear();
+        for (std::uint32_t m = begin; m < end; ++m) {
+            const std::uint32_t t = members[m];
+            for (std::uint32_t k = 0; k < 3; ++k) {
                 const std::size_t e = 3 * t + k;
                 const std::int32_t f = twin[e];
                 if (f >= 0 && find(static_cast<std::uint32_t>(f / 3)) == root) continue;
@@ -275,45 +424,47 @@ Faces merge_cocircular_triangles(PointSpan2 p, const std::vector<std::uint32_t>&
 }  // namespace delaunay_detail
 
 Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
-    int exponent = 0;
-    Delaunay out = check_input(input, &exponent);
+    Extent extent;
+    Delaunay out = check_input(input, &extent);
     if (!out.ok()) return out;
-    std::vector<double> scaled;
-    PointSpan2 points = input;
-    if (exponent != 0) {
-        scaled.resize(2 * input.count);
-        for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = std::ldexp(input.xy[i], exponent);
-        points = PointSpan2(scaled.data(), input.count);
-    }
+    std::vector<double> local_xy;
     delaunay_detail::Input in;
-    in.points = points;
-    in.distinct = merge_duplicates(points, out);
-    const auto& d = in.distinct;
-    if (d.empty()) {
+    gather_distinct(input, extent, out, local_xy, in.original);
+    in.points = PointSpan2(local_xy.data(), in.original.size());
+    const PointSpan2 p = in.points;
+    const std::size_t m = p.count;
+    if (m == 0) {
         out.dimension = -1;
         return out;
     }
-    if (d.size() == 1) {
+    if (m == 1) {
         out.dimension = 0;
-        out.hull = d;
+        out.hull = in.original;
         return out;
     }
     std::size_t k = 2;
-    while (k < d.size() && orient2d(points[d[0]][0], points[d[0]][1], points[d[1]][0], points[d[1]][1],
-                                     points[d[k]][0], points[d[k]][1]) == 0)
-        ++k;
-    if (k == d.size()) {  // all collinear: the (x, y) order is the order along the line
+    while (k < m && orient2d(p[0][0], p[0][1], p[1][0], p[1][1], p[k][0], p[k][1]) == 0) ++k;
+    if (k == m) {  // all collinear: the (x, y) order is the order along the line
         out.dimension = 1;
-        out.hull = d;
+        std::vector<std::uint32_t> along(m);
+        std::iota(along.begin(), along.end(), 0u);
+        std::sort(along.begin(), along.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return p[a][0] < p[b][0] || (p[a][0] == p[b][0] && p[a][1] < p[b][1]);
+        });
+        for (std::uint32_t i : along) out.hull.push_back(in.original[i]);
         return out;
     }
     out.dimension = 2;
     const Faces faces = options.algorithm == DelaunayAlgorithm::Giftwrap ? delaunay_detail::giftwrap_faces(in)
                                                                          : delaunay_detail::incremental_faces(in);
-    out.triangles = canonical_triangles(input.count, faces);
-    out.halfedges = match_halfedges(input.count, out.triangles);
-    out.hull = hull_cycle(input.count, out.triangles, out.halfedges);
-    if (options.merge_cocircular) fill_polygons(faces, out);
+    {
+        std::vector<std::int32_t> twins;
+        const std::vector<std::uint32_t> local = fan_faces(faces, in.original, &twins);
+        if (twins.empty()) twins = match_halfedges(m, local);
+        write_canonical(local, twins, in.original, out);
+    }
+    out.hull = hull_cycle(out.triangles, out.halfedges);
+    if (options.merge_cocircular) fill_polygons(faces, in.original, out);
     return out;
 }
 

@@ -10,19 +10,26 @@ namespace hullkit {
 namespace delaunay_detail {
 
 /// Convex polygons given as index cycles, COUNTER-clockwise with y up (the algorithms' internal
-/// orientation; the driver turns them round for the output).
+/// orientation; the driver turns them round for the output). `offsets` empty means every face is
+/// a triangle (the common case, stored without offsets).
 struct Faces {
-    std::vector<std::uint32_t> offsets{0};
+    std::vector<std::uint32_t> offsets;
     std::vector<std::uint32_t> vertices;
-    std::size_t size() const { return offsets.size() - 1; }
+    /// Optional, only with every face a triangle: twin[e] the opposite half-edge of half-edge e
+    /// (3 * face + k, from corner k to corner k + 1), -1 on the hull. Saves matching them again.
+    std::vector<std::int32_t> twin;
+    std::size_t size() const { return offsets.empty() ? vertices.size() / 3 : offsets.size() - 1; }
+    std::size_t begin(std::size_t f) const { return offsets.empty() ? 3 * f : offsets[f]; }
+    std::size_t corners(std::size_t f) const { return offsets.empty() ? 3 : offsets[f + 1] - offsets[f]; }
 };
 
-/// The input of an algorithm: `points` already in the predicates' exact range, and the distinct
-/// points (lowest index of each set of exact duplicates) sorted by (x, y), at least 3 of them and
-/// not all collinear.
+/// The input of an algorithm: the distinct points (duplicates merged), in the predicates' exact
+/// range, stored contiguously in Hilbert-curve order (nearby points nearby in memory); point i here
+/// is input point original[i]. At least 3 of them, not all collinear. Algorithms work with these
+/// local indices.
 struct Input {
     PointSpan2 points;
-    std::vector<std::uint32_t> distinct;
+    std::vector<std::uint32_t> original;
 };
 
 /// Both algorithms return the Delaunay faces: the lower faces of the lifted hull, each a maximal set
@@ -32,8 +39,8 @@ Faces giftwrap_faces(const Input& input);
 
 /// Merges a Delaunay triangulation (counter-clockwise triangles, `twin[e]` the opposite half-edge or
 /// -1) into its Delaunay faces: triangles joined across every edge whose in-circle test is exactly 0.
-Faces merge_cocircular_triangles(PointSpan2 points, const std::vector<std::uint32_t>& triangles,
-                                 const std::vector<std::int32_t>& twin);
+Faces merge_cocircular_triangles(PointSpan2 points, std::vector<std::uint32_t> triangles,
+                                 std::vector<std::int32_t> twin);
 
 }  // namespace delaunay_detail
 }  // namespace hullkit

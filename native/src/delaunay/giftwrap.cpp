@@ -22,7 +22,7 @@ inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 
 Faces giftwrap_faces(const Input& input) {
     const PointSpan2 p = input.points;
-    const std::vector<std::uint32_t>& pts = input.distinct;
+    const std::uint32_t count = static_cast<std::uint32_t>(p.count);
     auto orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         return orient2d(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1]);
     };
@@ -33,26 +33,30 @@ Faces giftwrap_faces(const Input& input) {
     // First edge: from the lowest point in (x, y) order, which is a hull vertex, to the hull vertex
     // that follows it counter-clockwise: no point strictly to the right, and of the points on the
     // line the nearest (the line's points all come after the first one in (x, y) order).
-    const std::uint32_t first = pts[0];
-    std::uint32_t second = pts[1];
-    for (std::size_t k = 2; k < pts.size(); ++k) {
-        const std::uint32_t q = pts[k];
+    std::uint32_t first = 0;
+    for (std::uint32_t q = 1; q < count; ++q)
+        if (lex_less(q, first)) first = q;
+    std::uint32_t second = first == 0 ? 1 : 0;
+    for (std::uint32_t q = 0; q < count; ++q) {
+        if (q == first || q == second) continue;
         const int o = orient(first, second, q);
         if (o < 0 || (o == 0 && lex_less(q, second))) second = q;
     }
 
     Faces faces;
+    faces.offsets.push_back(0);
     std::unordered_set<std::uint64_t> done;  // directed edges whose left face is known
     std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{first, second}};
     std::vector<std::uint32_t> on_circle;
     while (!stack.empty()) {
-        const auto [a, b] = stack.back();
+        const std::uint32_t a = stack.back().first;
+        const std::uint32_t b = stack.back().second;
         stack.pop_back();
         if (done.count(edge_key(a, b))) continue;
         // The candidate: a point strictly left of a->b; replaced by any point strictly inside the
         // circle through a, b and the candidate (a, b, candidate counter-clockwise).
         std::uint32_t c = UINT32_MAX;
-        for (std::uint32_t q : pts) {
+        for (std::uint32_t q = 0; q < count; ++q) {
             if (orient(a, b, q) <= 0) continue;
             if (c == UINT32_MAX ||
                 incircle(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1], p[q][0], p[q][1]) > 0)
@@ -62,7 +66,7 @@ Faces giftwrap_faces(const Input& input) {
         // The face: every point on the left exactly on the (empty) circle, in counter-clockwise
         // order, which seen from a is increasing angle.
         on_circle.clear();
-        for (std::uint32_t q : pts) {
+        for (std::uint32_t q = 0; q < count; ++q) {
             if (orient(a, b, q) <= 0) continue;
             if (q == c ||
                 incircle(p[a][0], p[a][1], p[b][0], p[b][1], p[c][0], p[c][1], p[q][0], p[q][1]) == 0)

@@ -23,49 +23,6 @@ namespace {
 
 inline std::uint32_t next_edge(std::uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 
-/// Index along a Hilbert curve on a 2^16 x 2^16 grid.
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-    std::uint32_t d = 0;
-    for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
-        const std::uint32_t rx = (x & s) ? 1 : 0;
-        const std::uint32_t ry = (y & s) ? 1 : 0;
-        d += s * s * ((3 * rx) ^ ry);
-        if (ry == 0) {  // rotate the quadrant so the curve continues
-            if (rx == 1) {
-                x = ~x;
-                y = ~y;
-            }
-            std::swap(x, y);
-        }
-    }
-    return d;
-}
-
-/// The distinct points sorted along a Hilbert curve over their bounding box (ties by index).
-std::vector<std::uint32_t> hilbert_order(PointSpan2 p, const std::vector<std::uint32_t>& ids) {
-    double xmin = p[ids[0]][0], xmax = xmin, ymin = p[ids[0]][1], ymax = ymin;
-    for (std::uint32_t i : ids) {
-        xmin = std::min(xmin, p[i][0]), xmax = std::max(xmax, p[i][0]);
-        ymin = std::min(ymin, p[i][1]), ymax = std::max(ymax, p[i][1]);
-    }
-    // The order only affects speed, never the result, so rounding here is harmless.
-    const double width = xmax - xmin, height = ymax - ymin;
-    const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
-    std::vector<std::uint64_t> keys(ids.size());
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        const std::uint32_t i = ids[k];
-        double fx = (p[i][0] - xmin) * sx, fy = (p[i][1] - ymin) * sy;
-        fx = std::min(std::max(fx, 0.0), 65535.0);  // also catches overflow of the width to inf
-        fy = std::min(std::max(fy, 0.0), 65535.0);
-        const std::uint32_t h = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
-        keys[k] = (static_cast<std::uint64_t>(h) << 32) | i;
-    }
-    std::sort(keys.begin(), keys.end());
-    std::vector<std::uint32_t> order(ids.size());
-    for (std::size_t k = 0; k < keys.size(); ++k) order[k] = static_cast<std::uint32_t>(keys[k]);
-    return order;
-}
-
 class Triangulation {
 public:
     explicit Triangulation(PointSpan2 points) : p_(points), ghost_(static_cast<std::uint32_t>(points.count)) {
@@ -239,24 +196,24 @@ private:
 }  // namespace
 
 Faces incremental_faces(const Input& input) {
-    const PointSpan2 p = input.points;
-    const std::vector<std::uint32_t> order = hilbert_order(p, input.distinct);
+    const PointSpan2 p = input.points;  // already in Hilbert order: insert them as they come
+    const std::uint32_t count = static_cast<std::uint32_t>(p.count);
     // The first triangle: the first two points and the first point off their line.
-    const std::uint32_t a = order[0], b = order[1];
-    std::size_t k = 2;
+    std::uint32_t k = 2;
     int o = 0;
-    while ((o = orient2d(p[a][0], p[a][1], p[b][0], p[b][1], p[order[k]][0], p[order[k]][1])) == 0) ++k;
+    while ((o = orient2d(p[0][0], p[0][1], p[1][0], p[1][1], p[k][0], p[k][1])) == 0) ++k;
     Triangulation tri(p);
     if (o > 0)
-        tri.start(a, b, order[k]);
+        tri.start(0, 1, k);
     else
-        tri.start(b, a, order[k]);
-    for (std::size_t j = 2; j < order.size(); ++j)
-        if (j != k) tri.insert(order[j]);
+        tri.start(1, 0, k);
+    for (std::uint32_t j = 2; j < count; ++j)
+        if (j != k) tri.insert(j);
     std::vector<std::uint32_t> triangles;
     std::vector<std::int32_t> twin;
     tri.finite(triangles, twin);
-    return merge_cocircular_triangles(p, triangles, twin);
+    tri = Triangulation(PointSpan2());  // release the working mesh before merging
+    return merge_cocircular_triangles(p, std::move(triangles), std::move(twin));
 }
 
 }  // namespace delaunay_detail

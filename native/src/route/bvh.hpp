@@ -1,7 +1,6 @@
 // Private to the route module: an axis-aligned bounding-box tree over triangles, in flat arrays.
 //
-// Built once by median splits on the triangles' centroids along the widest axis (O(n log n) with
-// nth_element); node i is internal when count == 0, its children are `first` and `first + 1`;
+// Built once as a linear BVH (Morton order of the triangles' box centres); node i is internal when count == 0, its children are `first` and `first + 1`;
 // a leaf holds the items order[first .. first + count). Boxes are the exact min/max of the
 // coordinates, so any box test made with an outward tolerance is conservative.
 #pragma once
@@ -58,54 +57,100 @@ struct Bvh {
     std::vector<BvhNode> nodes;
     std::vector<std::uint32_t> order;
 
+    /// Builds the tree: triangles sorted along a Morton (Z-order) curve of their box centres,
+    /// then split where the codes' highest differing bit changes (a linear BVH: one sort, then
+    /// O(n)); runs of equal codes are halved.
     void build(const std::vector<Vec>& triangles) {
-        const std::size_t n = triangles.size() / 3;
+        build(triangles.size() / 3, [&](std::size_t i) {
+            Box b;
+            for (int k = 0; k < 3; ++k) b.add(triangles[3 * i + k]);
+            return b;
+        });
+    }
+
+    /// The same over n items whose boxes box_of(i) gives.
+    template <typename BoxOf>
+    void build(std::size_t n, BoxOf&& box_of) {
         nodes.clear();
         order.resize(n);
         if (n == 0) return;
-        std::vector<Box> boxes(n);
-        std::vector<Vec> centroids(n);
+        boxes_.resize(n);
+        Box world;
         for (std::size_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) boxes[i].add(triangles[3 * i + k]);
-            centroids[i] = (boxes[i].lo + boxes[i].hi) * 0.5;
-            order[i] = static_cast<std::uint32_t>(i);
+            const Box b = box_of(i);
+            boxes_[i] = b;
+            world.add((b.lo + b.hi) * 0.5);
         }
+        const Vec extent = world.hi - world.lo;
+        const double size = std::max({extent.x, extent.y, extent.z});
+        const double scale = size > 0.0 ? 1023.0 / size : 0.0;
+        keyed_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec c = ((boxes_[i].lo + boxes_[i].hi) * 0.5 - world.lo) * scale;
+            keyed_[i] = (std::uint64_t{morton(c)} << 32) | i;
+        }
+        std::sort(keyed_.begin(), keyed_.end());
+        for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(keyed_[i]);
         nodes.reserve(2 * n);
         nodes.emplace_back();
-        split(0, 0, static_cast<std::uint32_t>(n), boxes, centroids);
+        split(0, 0, static_cast<std::uint32_t>(n));
+        boxes_.clear();
+        boxes_.shrink_to_fit();
+        keyed_.clear();
+        keyed_.shrink_to_fit();
     }
 
 private:
     static constexpr std::uint32_t kLeafSize = 4;
+    std::vector<Box> boxes_;            // per triangle, during the build
+    std::vector<std::uint64_t> keyed_;  // Morton code << 32 | triangle, during the build
 
-    void split(std::size_t node, std::uint32_t begin, std::uint32_t end,
-               const std::vector<Box>& boxes, const std::vector<Vec>& centroids) {
-        Box box, spread;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            box.add(boxes[order[i]]);
-            spread.add(centroids[order[i]]);
-        }
-        nodes[node].box = box;
+    /// Spreads the low 10 bits of x to every third bit.
+    static std::uint32_t spread(std::uint32_t x) {
+        x &= 0x3ff;
+        x = (x | (x << 16)) & 0x030000ff;
+        x = (x | (x << 8)) & 0x0300f00f;
+        x = (x | (x << 4)) & 0x030c30c3;
+        x = (x | (x << 2)) & 0x09249249;
+        return x;
+    }
+    static std::uint32_t morton(const Vec& c) {
+        auto q = [](double v) { return static_cast<std::uint32_t>(std::clamp(v, 0.0, 1023.0)); };
+        return (spread(q(c.x)) << 2) | (spread(q(c.y)) << 1) | spread(q(c.z));
+    }
+
+    void split(std::size_t node, std::uint32_t begin, std::uint32_t end) {
         if (end - begin <= kLeafSize) {
+            Box box;
+            for (std::uint32_t i = begin; i < end; ++i) box.add(boxes_[order[i]]);
+            nodes[node].box = box;
             nodes[node].first = begin;
             nodes[node].count = end - begin;
             return;
         }
-        const Vec extent = spread.hi - spread.lo;
-        const int axis = extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2)
-                                              : (extent.y >= extent.z ? 1 : 2);
-        const std::uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             return centroids[a][axis] < centroids[b][axis];
-                         });
+        const std::uint32_t first_code = static_cast<std::uint32_t>(keyed_[begin] >> 32);
+        const std::uint32_t last_code = static_cast<std::uint32_t>(keyed_[end - 1] >> 32);
+        std::uint32_t mid = begin + (end - begin) / 2;
+        if (first_code != last_code) {
+            // The first item whose code has the highest differing bit set.
+            int bit = 31;
+            while (!(((first_code ^ last_code) >> bit) & 1u)) --bit;
+            const std::uint64_t threshold =
+                (std::uint64_t{(last_code >> bit) << bit}) << 32;
+            mid = static_cast<std::uint32_t>(
+                std::lower_bound(keyed_.begin() + begin, keyed_.begin() + end, threshold) -
+                keyed_.begin());
+        }
         const auto left = static_cast<std::uint32_t>(nodes.size());
         nodes[node].first = left;
         nodes[node].count = 0;
         nodes.emplace_back();
         nodes.emplace_back();
-        split(left, begin, mid, boxes, centroids);
-        split(left + 1, mid, end, boxes, centroids);
+        split(left, begin, mid);
+        split(left + 1, mid, end);
+        Box box = nodes[left].box;
+        box.add(nodes[left + 1].box);
+        nodes[node].box = box;
     }
 };
 

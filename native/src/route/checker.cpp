@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -31,7 +31,6 @@ using namespace route_detail;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Coordinates (and offsets) are limited so that every translated coordinate stays inside the exact
 /// range of the predicates (see predicates.hpp) with room to spare.
 constexpr double kMaxCoordinate = 0x1p+300;
@@ -58,44 +57,65 @@ Vec point_of(const TriangleMesh& m, std::uint32_t i) {
 /// Closedness (every directed edge used once and its reverse once, vertices merged by exact
 /// coordinates) and connected components of a validated mesh.
 Topology analyze(const TriangleMesh& m) {
+    // Merge points with identical coordinates: sort (x, y, z, index) records.
     const std::size_t n = m.xyz.size() / 3;
-    std::vector<std::uint32_t> by_coord(n);
-    for (std::size_t i = 0; i < n; ++i) by_coord[i] = static_cast<std::uint32_t>(i);
-    auto less = [&](std::uint32_t a, std::uint32_t b) {
-        return std::lexicographical_compare(&m.xyz[3 * a], &m.xyz[3 * a + 3], &m.xyz[3 * b],
-                                            &m.xyz[3 * b + 3]);
+    struct Keyed {
+        double x, y, z;
+        std::uint32_t index;
     };
-    std::sort(by_coord.begin(), by_coord.end(), less);
+    std::vector<Keyed> keyed(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        keyed[i] = {m.xyz[3 * i], m.xyz[3 * i + 1], m.xyz[3 * i + 2], static_cast<std::uint32_t>(i)};
+    }
+    std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+        return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+    });
     std::vector<std::uint32_t> id(n);
     for (std::size_t k = 0; k < n; ++k) {
-        id[by_coord[k]] = (k > 0 && !less(by_coord[k - 1], by_coord[k])) ? id[by_coord[k - 1]]
-                                                                        : by_coord[k];
+        const bool same = k > 0 && keyed[k].x == keyed[k - 1].x && keyed[k].y == keyed[k - 1].y &&
+                          keyed[k].z == keyed[k - 1].z;
+        id[keyed[k].index] = same ? id[keyed[k - 1].index] : keyed[k].index;
     }
+    // Directed edges bucketed by their first point (counting sort), so that "used once, and its
+    // reverse once" is a scan of small buckets.
     const std::size_t t = m.triangles.size() / 3;
-    std::vector<std::uint64_t> edges;
-    edges.reserve(3 * t);
+    std::vector<std::uint32_t> start(n + 1, 0), targets(3 * t);
     std::vector<std::uint32_t> parent(n);
     for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::uint32_t>(i);
     auto find = [&](std::uint32_t x) {
         while (parent[x] != x) x = parent[x] = parent[parent[x]];
         return x;
     };
+    std::size_t edge_count = 0;
     for (std::size_t f = 0; f < t; ++f) {
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t u = id[m.triangles[3 * f + k]];
             const std::uint32_t v = id[m.triangles[3 * f + (k + 1) % 3]];
-            if (u != v) edges.push_back(std::uint64_t{u} << 32 | v);
+            if (u != v) ++start[u + 1], ++edge_count;
             parent[find(u)] = find(v);
         }
     }
-    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < t; ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t u = id[m.triangles[3 * f + k]];
+            const std::uint32_t v = id[m.triangles[3 * f + (k + 1) % 3]];
+            if (u != v) targets[fill[u]++] = v;
+        }
+    }
+    auto count = [&](std::uint32_t u, std::uint32_t v) {
+        int c = 0;
+        for (std::uint32_t e = start[u]; e < start[u + 1]; ++e) c += targets[e] == v;
+        return c;
+    };
     Topology topo;
-    topo.closed = !edges.empty();
-    for (std::size_t k = 0; k < edges.size() && topo.closed; ++k) {
-        const bool single = (k == 0 || edges[k - 1] != edges[k]) &&
-                            (k + 1 == edges.size() || edges[k + 1] != edges[k]);
-        const std::uint64_t reverse = (edges[k] << 32) | (edges[k] >> 32);
-        topo.closed = single && std::binary_search(edges.begin(), edges.end(), reverse);
+    topo.closed = edge_count > 0;
+    for (std::uint32_t u = 0; u < n && topo.closed; ++u) {
+        for (std::uint32_t e = start[u]; e < start[u + 1] && topo.closed; ++e) {
+            const std::uint32_t v = targets[e];
+            topo.closed = count(u, v) == 1 && count(v, u) == 1;
+        }
     }
     std::vector<std::int64_t> component_of(n, -1);
     for (std::size_t f = 0; f < t; ++f) {
@@ -189,6 +209,49 @@ double fraction_of(int piece, const double w[3]) {
     if (piece == 0) return 0.0;
     if (piece == 1) return 1.0;
     return piece % 2 == 0 ? w[2] : w[1] + w[2];
+}
+
+/// The separating-axis picture of triangle p (local) moving by a + t d against triangle q, in
+/// floating point, over t in [0, limit]. Returns false when one axis keeps them apart by more than
+/// `tol` (times the axis length) over the whole window: a proof of no contact, since rounding is
+/// far below tol. Otherwise true, with *estimate the first t at which no axis separates them (the
+/// exact first contact up to rounding; NaN when the axes cannot tell).
+bool sat_window(const Vec* p, const Vec* q, const Vec& a, const Vec& d, double limit, double tol,
+                double* estimate) {
+    const Vec ep[3] = {p[1] - p[0], p[2] - p[1], p[0] - p[2]};
+    const Vec eq[3] = {q[1] - q[0], q[2] - q[1], q[0] - q[2]};
+    const Vec np = glm::cross(ep[0], ep[1]), nq = glm::cross(eq[0], eq[1]);
+    Vec axes[17];
+    int count = 0;
+    axes[count++] = np;
+    axes[count++] = nq;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) axes[count++] = glm::cross(ep[i], eq[j]);
+        axes[count++] = glm::cross(np, ep[i]);
+        axes[count++] = glm::cross(nq, eq[i]);
+    }
+    double t_lo = 0.0, t_hi = limit;
+    for (int k = 0; k < count; ++k) {
+        const Vec& n = axes[k];
+        const double len = glm::length(n);
+        if (!(len > 0.0)) continue;
+        const double pa = glm::dot(n, p[0]), pb = glm::dot(n, p[1]), pc = glm::dot(n, p[2]);
+        const double qa = glm::dot(n, q[0]), qb = glm::dot(n, q[1]), qc = glm::dot(n, q[2]);
+        const double shift = glm::dot(n, a), s = glm::dot(n, d);
+        const double pmin = std::min({pa, pb, pc}) + shift, pmax = std::max({pa, pb, pc}) + shift;
+        const double qmin = std::min({qa, qb, qc}), qmax = std::max({qa, qb, qc});
+        const double gap = tol * len;
+        const double end_shift = s * limit;
+        // Apart along n at both ends of the window (hence throughout: the motion is linear).
+        if (pmax < qmin - gap && pmax + end_shift < qmin - gap) return false;
+        if (pmin > qmax + gap && pmin + end_shift > qmax + gap) return false;
+        if (s == 0.0) continue;
+        const double t1 = (qmin - pmax) / s, t2 = (qmax - pmin) / s;
+        t_lo = std::max(t_lo, std::min(t1, t2));
+        t_hi = std::min(t_hi, std::max(t1, t2));
+    }
+    *estimate = t_lo <= t_hi ? t_lo : std::numeric_limits<double>::quiet_NaN();
+    return true;
 }
 
 /// Fixed, "generic" directions for parity rays; a ray found degenerate (exactly) is retried with
@@ -494,10 +557,11 @@ void RouteChecker::Impl::build() {
         world.add(parts[i].box);
     }
 
-    std::vector<Vec> all;
-    std::vector<std::uint32_t> owner, index;
+    // Every obstacle triangle in one BVH; first[o] numbers obstacle o's triangles globally.
+    std::vector<std::size_t> first(scene.obstacles.size() + 1, 0);
     for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
         const TriangleMesh& m = scene.obstacles[o];
+        first[o + 1] = first[o] + m.triangles.size() / 3;
         Topology topo = analyze(m);
         obstacle_closed.push_back(topo.closed);
         Box box;
@@ -508,66 +572,46 @@ void RouteChecker::Impl::build() {
         }
         obstacle_box.push_back(box);
         world.add(box);
-        for (std::size_t f = 0; f < m.triangles.size() / 3; ++f) {
-            for (int k = 0; k < 3; ++k) all.push_back(point_of(m, m.triangles[3 * f + k]));
-            owner.push_back(static_cast<std::uint32_t>(o));
-            index.push_back(static_cast<std::uint32_t>(f));
-        }
     }
-    bvh.build(all);
-    const std::size_t n = owner.size();
+    const std::size_t n = first.back();
+    std::vector<std::uint32_t> owner(n);
+    for (std::size_t o = 0; o < scene.obstacles.size(); ++o) {
+        std::fill(owner.begin() + first[o], owner.begin() + first[o + 1], static_cast<std::uint32_t>(o));
+    }
+    auto corner = [&](std::size_t t, int k) {
+        const TriangleMesh& m = scene.obstacles[owner[t]];
+        return point_of(m, m.triangles[3 * (t - first[owner[t]]) + k]);
+    };
+    bvh.build(n, [&](std::size_t t) {
+        Box b;
+        for (int k = 0; k < 3; ++k) b.add(corner(t, k));
+        return b;
+    });
     tris.resize(3 * n);
     tri_obstacle.resize(n);
     tri_index.resize(n);
     for (std::size_t s = 0; s < n; ++s) {
         const std::uint32_t t = bvh.order[s];
-        for (int k = 0; k < 3; ++k) tris[3 * s + k] = all[3 * t + k];
+        for (int k = 0; k < 3; ++k) tris[3 * s + k] = corner(t, k);
         tri_obstacle[s] = owner[t];
-        tri_index[s] = index[t];
+        tri_index[s] = static_cast<std::uint32_t>(t - first[owner[t]]);
     }
 }
 
-bool RouteChecker::Impl::inside_part(const Part& part, const Vec& w, const Vec& x,
-                                     double tol) const {
-    const Box box = part.box.shifted(w);
-    const double reach = 4.0 * (glm::length(box.hi - box.lo) + glm::length(x - box.lo)) + 1.0;
-    for (int attempt = 0; attempt < 64; ++attempt) {
-        const Vec far = x + reach * ray_direction(attempt);
-        const Vec lo = x - w, lf = far - w;  // the ray in the part's coordinates, for culling
-        int crossings = 0;
-        bool degenerate = false;
-        std::uint32_t stack[128];
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0 && !degenerate) {
-            const BvhNode& node = part.bvh.nodes[stack[--top]];
-            if (!segment_hits_box(lo, lf, node.box.inflated(tol))) continue;
-            if (node.count == 0) {
-                stack[top++] = node.first;
-                stack[top++] = node.first + 1;
-                continue;
-            }
-            for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
-                const Vec* p = &part.tris[3 * s];
-                const Vec q[3] = {p[0] + w, p[1] + w, p[2] + w};
-                const int r = ray_crossing(x, far, q);
-                if (r < 0) {
-                    degenerate = true;
-                    break;
-                }
-                crossings += r;
-            }
-        }
-        if (!degenerate) return crossings % 2 == 1;
-    }
-    return true;  // never certified outside: count it as inside (a hit, never a false "clear")
-}
+namespace {
 
-bool RouteChecker::Impl::inside_obstacle(std::uint32_t o, const Vec& x, double tol) const {
-    const Box& box = obstacle_box[o];
+/// Ray parity of x against the triangles `bvh` holds: `crossing(slot, far)` classifies one
+/// triangle (ray_crossing), `shift` maps world points into the BVH's coordinates (for culling
+/// only). A ray found degenerate (exactly) is retried in another direction; a point never
+/// certified outside counts as inside, so that doubt becomes a hit, never a false "clear".
+template <typename Crossing>
+bool parity_inside(const Bvh& bvh, const Vec& x, const Vec& shift, const Box& box, double tol,
+                   Crossing&& crossing) {
+    if (bvh.nodes.empty()) return false;
     const double reach = 4.0 * (glm::length(box.hi - box.lo) + glm::length(x - box.lo)) + 1.0;
     for (int attempt = 0; attempt < 64; ++attempt) {
         const Vec far = x + reach * ray_direction(attempt);
+        const Vec local_x = x - shift, local_far = far - shift;
         int crossings = 0;
         bool degenerate = false;
         std::uint32_t stack[128];
@@ -575,15 +619,14 @@ bool RouteChecker::Impl::inside_obstacle(std::uint32_t o, const Vec& x, double t
         stack[top++] = 0;
         while (top > 0 && !degenerate) {
             const BvhNode& node = bvh.nodes[stack[--top]];
-            if (!segment_hits_box(x, far, node.box.inflated(tol))) continue;
+            if (!segment_hits_box(local_x, local_far, node.box.inflated(tol))) continue;
             if (node.count == 0) {
                 stack[top++] = node.first;
                 stack[top++] = node.first + 1;
                 continue;
             }
             for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
-                if (tri_obstacle[s] != o) continue;
-                const int r = ray_crossing(x, far, &tris[3 * s]);
+                const int r = crossing(s, far);
                 if (r < 0) {
                     degenerate = true;
                     break;
@@ -594,6 +637,25 @@ bool RouteChecker::Impl::inside_obstacle(std::uint32_t o, const Vec& x, double t
         if (!degenerate) return crossings % 2 == 1;
     }
     return true;
+}
+
+}  // namespace
+
+bool RouteChecker::Impl::inside_part(const Part& part, const Vec& w, const Vec& x,
+                                     double tol) const {
+    return parity_inside(part.bvh, x, w, part.box.shifted(w), tol,
+                         [&](std::uint32_t s, const Vec& far) {
+                             const Vec* p = &part.tris[3 * s];
+                             const Vec q[3] = {p[0] + w, p[1] + w, p[2] + w};
+                             return ray_crossing(x, far, q);
+                         });
+}
+
+bool RouteChecker::Impl::inside_obstacle(std::uint32_t o, const Vec& x, double tol) const {
+    return parity_inside(bvh, x, Vec(0.0), obstacle_box[o], tol,
+                         [&](std::uint32_t s, const Vec& far) {
+                             return tri_obstacle[s] == o ? ray_crossing(x, far, &tris[3 * s]) : 0;
+                         });
 }
 
 bool RouteChecker::Impl::static_touch(std::size_t pi, const Vec& w, Found* found) const {
@@ -737,8 +799,30 @@ void RouteChecker::Impl::sweep_part(std::size_t pi, const Vec& a, const Vec& b,
             double hi = limit();
             if (pr.first > hi) break;
             const Vec* p = &part.tris[3 * pr.second];
+            double estimate;
+            if (!sat_window(p, q, a, d, hi, reach, &estimate)) continue;
             if (!pair_sweep(p, a, offset_at(a, b, hi), q)) continue;
             double lo = 0.0;  // the start pose is known clear
+            if (margin == 0.0 && estimate >= 0.0 && estimate <= hi) {
+                // Margin 0: the separating axes give the first contact up to rounding; two exact
+                // sweeps certify a bracket around it (else they narrow the bisection).
+                const double below = estimate - 0.25 * kBracketWidth;
+                const double above = std::min(hi, estimate + 0.25 * kBracketWidth);
+                if (below > 0.0) {
+                    if (pair_sweep(p, a, offset_at(a, b, below), q)) {
+                        hi = below;
+                    } else {
+                        lo = below;
+                    }
+                }
+                if (above > lo && above < hi) {
+                    if (pair_sweep(p, a, offset_at(a, b, above), q)) {
+                        hi = above;
+                    } else {
+                        lo = above;
+                    }
+                }
+            }
             while (hi - lo > kBracketWidth) {
                 const double mid = 0.5 * (lo + hi);
                 if (pair_sweep(p, a, offset_at(a, b, mid), q)) {
@@ -883,6 +967,7 @@ void RouteChecker::Impl::nearest_over_leg(std::size_t pi, const Vec& a, const Ve
                     sweep_pieces(p, a, b, pieces);
                     for (int k = 0; k < 8; ++k) {
                         if (k > 0 && a == b) break;  // a leg of length zero: the start cap alone
+                        if (triangle_box(pieces[k]).distance(qbox) >= best->distance) continue;
                         double w[3];
                         const double dist = triangle_distance(pieces[k], q, w);
                         if (dist < best->distance) {

@@ -1,0 +1,148 @@
+// delaunay_find against brute force (GMP distances) and Voronoi cells against their definition;
+// verify_delaunay rejecting broken triangulations.
+#include <cmath>
+#include <random>
+
+#include "delaunay_checks.hpp"
+
+using delaunay_test::q;
+using hullkit::Delaunay;
+
+namespace {
+
+/// The nearest input point by brute force with exact rational distances, ties to the lowest index.
+std::int64_t brute_nearest(const std::vector<double>& xy, double x, double y) {
+    std::int64_t best = -1;
+    mpq_class best_d;
+    for (std::size_t i = 0; i < xy.size() / 2; ++i) {
+        const mpq_class dx = q(xy[2 * i]) - q(x), dy = q(xy[2 * i + 1]) - q(y);
+        const mpq_class d = dx * dx + dy * dy;
+        if (best < 0 || d < best_d) best = static_cast<std::int64_t>(i), best_d = d;
+    }
+    return best;
+}
+
+std::vector<double> grid_with_random(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0, 10);
+    std::vector<double> xy;
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) xy.insert(xy.end(), {double(i), double(j)});
+    for (int k = 0; k < 100; ++k) xy.insert(xy.end(), {u(rng), u(rng)});
+    xy.insert(xy.end(), {3.0, 3.0, 5.0, 5.0});  // duplicates of grid points
+    return xy;
+}
+
+}  // namespace
+
+TEST_CASE("delaunay_find: nearest point matches brute force, ties to the lowest index", "[query]") {
+    const std::vector<double> xy = grid_with_random(21);
+    const Delaunay d = hullkit::delaunay(xy);
+    hullkit::DelaunayLocator locator(xy, d);
+    std::mt19937_64 rng(22);
+    std::uniform_real_distribution<double> u(-3, 13);
+    std::uniform_int_distribution<std::uint32_t> start(0, static_cast<std::uint32_t>(xy.size() / 2 - 1));
+    std::size_t wrong = 0;
+    for (int i = 0; i < 3000; ++i) {
+        // Half the queries at exact tie positions: grid cell centres and edge midpoints.
+        const double x = i % 2 ? u(rng) : 0.5 * std::floor(2 * u(rng));
+        const double y = i % 2 ? u(rng) : 0.5 * std::floor(2 * u(rng));
+        const std::int64_t expected = brute_nearest(xy, x, y);
+        wrong += hullkit::delaunay_find(xy, d, x, y, start(rng)) != expected;
+        wrong += locator.find(x, y) != expected;
+    }
+    REQUIRE(wrong == 0);
+    // Collinear, one point, none.
+    const std::vector<double> line = {0, 0, 3, 3, 1, 1, 2, 2};
+    const Delaunay dl = hullkit::delaunay(line);
+    REQUIRE(hullkit::delaunay_find(line, dl, 2.9, 2.0) == brute_nearest(line, 2.9, 2.0));
+    REQUIRE(hullkit::delaunay_find(line, dl, -5, 0, 1) == 0);
+    const std::vector<double> one = {4, 4, 4, 4};
+    REQUIRE(hullkit::delaunay_find(one, hullkit::delaunay(one), 0, 0) == 0);
+    const std::vector<double> none;
+    REQUIRE(hullkit::delaunay_find(none, hullkit::delaunay(none), 0, 0) == -1);
+}
+
+TEST_CASE("delaunay_voronoi: cells are the points nearest to their site", "[query]") {
+    const std::vector<double> xy = grid_with_random(31);
+    const Delaunay d = hullkit::delaunay(xy);
+    const double xmin = -1, ymin = -2, xmax = 11, ymax = 10.5;
+    const hullkit::VoronoiCells cells = hullkit::delaunay_voronoi(xy, d, xmin, ymin, xmax, ymax);
+    const std::size_t n = xy.size() / 2;
+    REQUIRE(cells.cell_offsets.size() == n + 1);
+    double total_area = 0;
+    std::size_t bad = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t begin = cells.cell_offsets[i], end = cells.cell_offsets[i + 1];
+        if (d.representative[i] != i) {
+            bad += begin != end;  // duplicates get no cell
+            continue;
+        }
+        REQUIRE(end - begin >= 3);
+        double area = 0;
+        double cx = 0, cy = 0;
+        for (std::uint32_t k = begin; k < end; ++k) {
+            const std::uint32_t l = k + 1 == end ? begin : k + 1;
+            const double x0 = cells.cell_xy[2 * k], y0 = cells.cell_xy[2 * k + 1];
+            const double x1 = cells.cell_xy[2 * l], y1 = cells.cell_xy[2 * l + 1];
+            area += x0 * y1 - x1 * y0;
+            cx += x0, cy += y0;
+            // Every corner: inside the rectangle, and no site nearer than this cell's site (up to
+            // rounding of the clipped coordinates).
+            bad += x0 < xmin - 1e-9 || x0 > xmax + 1e-9 || y0 < ymin - 1e-9 || y0 > ymax + 1e-9;
+            const double own = std::hypot(x0 - xy[2 * i], y0 - xy[2 * i + 1]);
+            for (std::size_t j = 0; j < n; ++j) bad += std::hypot(x0 - xy[2 * j], y0 - xy[2 * j + 1]) < own - 1e-9;
+        }
+        bad += area <= 0;  // counter-clockwise, y up
+        total_area += area / 2;
+        // The site lies in its cell: the corner average is nearer to it than to any other site.
+        cx /= end - begin, cy /= end - begin;
+        const std::int64_t nearest = brute_nearest(xy, cx, cy);
+        bad += nearest != static_cast<std::int64_t>(i) &&
+               std::fabs(std::hypot(cx - xy[2 * nearest], cy - xy[2 * nearest + 1]) -
+                         std::hypot(cx - xy[2 * i], cy - xy[2 * i + 1])) > 1e-9;
+    }
+    REQUIRE(bad == 0);
+    // The cells tile the rectangle.
+    REQUIRE(total_area == Approx((xmax - xmin) * (ymax - ymin)).epsilon(1e-9));
+}
+
+TEST_CASE("delaunay_voronoi: collinear points give slabs, one point the rectangle", "[query]") {
+    const std::vector<double> line = {0, 0, 2, 0, 1, 0};
+    const hullkit::VoronoiCells slabs = hullkit::delaunay_voronoi(line, hullkit::delaunay(line), -1, -1, 3, 1);
+    REQUIRE(slabs.cell_offsets == std::vector<std::uint32_t>{0, 4, 8, 12});
+    const std::vector<double> one = {0.5, 0.5};
+    const hullkit::VoronoiCells all = hullkit::delaunay_voronoi(one, hullkit::delaunay(one), 0, 0, 1, 1);
+    REQUIRE(all.cell_xy == std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1});
+}
+
+TEST_CASE("verify_delaunay: rejects broken triangulations", "[verify]") {
+    // The unit square split along the diagonal 0-2 with a point near the other diagonal's circle.
+    const std::vector<double> xy = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+    const Delaunay d = hullkit::delaunay(xy);
+    REQUIRE(hullkit::verify_delaunay(xy, d.triangles.data(), d.triangle_count()).ok);
+    auto bad = [&](std::vector<std::uint32_t> tris, const std::string& what) {
+        const hullkit::DelaunayVerifyReport r = hullkit::verify_delaunay(xy, tris.data(), tris.size() / 3);
+        INFO(what);
+        REQUIRE_FALSE(r.ok);
+        REQUIRE(r.problem_count > 0);
+        REQUIRE_FALSE(r.problems.empty());
+    };
+    std::vector<std::uint32_t> flipped = d.triangles;
+    std::swap(flipped[1], flipped[2]);
+    bad(flipped, "counter-clockwise triangle");
+    bad(std::vector<std::uint32_t>(d.triangles.begin(), d.triangles.end() - 3), "missing triangle");
+    bad({0, 3, 2, 0, 2, 1}, "point 4 unused");
+    std::vector<std::uint32_t> out_of_range = d.triangles;
+    out_of_range[0] = 9;
+    bad(out_of_range, "index out of range");
+    // Not Delaunay: a quadrilateral with the wrong diagonal.
+    const std::vector<double> quad = {0, 0, 2, -0.2, 4, 0, 2, 3};
+    const std::vector<std::uint32_t> wrong = {0, 3, 1, 1, 3, 2};  // diagonal 1-3 is legal? check both
+    const std::vector<std::uint32_t> other = {0, 3, 2, 0, 2, 1};
+    const bool first_ok = hullkit::verify_delaunay(quad, wrong.data(), 2).ok;
+    const bool second_ok = hullkit::verify_delaunay(quad, other.data(), 2).ok;
+    REQUIRE(first_ok != second_ok);  // exactly one diagonal of a non-cocircular quad is Delaunay
+    const Delaunay dq = hullkit::delaunay(quad);
+    REQUIRE((first_ok ? wrong : other) == dq.triangles);
+}

@@ -1,0 +1,104 @@
+// embind registrations for Delaunay triangulation only: the friendly API lives in delaunay.js.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cstdint>
+#include <string>
+
+#include "hullkit/delaunay.hpp"
+
+namespace {
+
+using emscripten::val;
+
+const double* doubles_at(std::uintptr_t address) { return reinterpret_cast<const double*>(address); }
+const std::uint32_t* uint32s_at(std::uintptr_t address) { return reinterpret_cast<const std::uint32_t*>(address); }
+
+// Points are copied by the JS layer into a malloc'ed block of 2*count doubles at `xy`; the JS
+// layer has checked the option values.
+hullkit::Delaunay delaunay_from_heap(std::uintptr_t xy, std::uint32_t count, const std::string& algorithm,
+                                     bool merge_cocircular) {
+    hullkit::DelaunayOptions options;
+    if (!hullkit::parse_delaunay_algorithm(algorithm, &options.algorithm)) {
+        hullkit::Delaunay unknown;
+        unknown.error = "unknown algorithm \"" + algorithm + "\"";
+        return unknown;
+    }
+    options.merge_cocircular = merge_cocircular;
+    return hullkit::delaunay(hullkit::PointSpan2(doubles_at(xy), count), options);
+}
+
+/// A Delaunay rebuilt from the arrays a JS caller holds (triangles, halfedges, hull and the
+/// `count` representatives in malloc'ed blocks, already checked by the JS layer to be in range),
+/// for find and voronoi.
+hullkit::Delaunay triangulation_from_heap(std::uint32_t count, int dimension, std::uintptr_t triangles,
+                                          std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull,
+                                          std::uint32_t hull_count, std::uintptr_t representative) {
+    hullkit::Delaunay result;
+    result.dimension = dimension;
+    result.representative.assign(uint32s_at(representative), uint32s_at(representative) + count);
+    for (std::uint32_t i = 0; i < count; ++i) result.duplicate_count += result.representative[i] != i;
+    result.triangles.assign(uint32s_at(triangles), uint32s_at(triangles) + corner_count);
+    const auto* opposite = reinterpret_cast<const std::int32_t*>(halfedges);
+    result.halfedges.assign(opposite, opposite + corner_count);
+    result.hull.assign(uint32s_at(hull), uint32s_at(hull) + hull_count);
+    return result;
+}
+
+double find_from_heap(std::uintptr_t xy, std::uint32_t count, int dimension, std::uintptr_t triangles,
+                      std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull, std::uint32_t hull_count,
+                      std::uintptr_t representative, double x, double y, std::uint32_t start) {
+    const hullkit::Delaunay triangulation = triangulation_from_heap(count, dimension, triangles, corner_count, halfedges,
+                                                                    hull, hull_count, representative);
+    return static_cast<double>(
+        hullkit::delaunay_find(hullkit::PointSpan2(doubles_at(xy), count), triangulation, x, y, start));
+}
+
+hullkit::VoronoiCells voronoi_from_heap(std::uintptr_t xy, std::uint32_t count, int dimension, std::uintptr_t triangles,
+                                        std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull,
+                                        std::uint32_t hull_count, std::uintptr_t representative, double xmin,
+                                        double ymin, double xmax, double ymax) {
+    const hullkit::Delaunay triangulation = triangulation_from_heap(count, dimension, triangles, corner_count, halfedges,
+                                                                    hull, hull_count, representative);
+    return hullkit::delaunay_voronoi(hullkit::PointSpan2(doubles_at(xy), count), triangulation, xmin, ymin, xmax, ymax);
+}
+
+// Views into the results' own vectors; the JS layer copies them out before deleting the result.
+template <typename T>
+val view_of(const std::vector<T>& values) {
+    return val(emscripten::typed_memory_view(values.size(), values.data()));
+}
+val triangles_view(const hullkit::Delaunay& d) { return view_of(d.triangles); }
+val halfedges_view(const hullkit::Delaunay& d) { return view_of(d.halfedges); }
+val hull_view(const hullkit::Delaunay& d) { return view_of(d.hull); }
+val representative_view(const hullkit::Delaunay& d) { return view_of(d.representative); }
+val polygon_offsets_view(const hullkit::Delaunay& d) { return view_of(d.polygon_offsets); }
+val polygon_vertices_view(const hullkit::Delaunay& d) { return view_of(d.polygon_vertices); }
+bool delaunay_ok(const hullkit::Delaunay& d) { return d.ok(); }
+double delaunay_error_point(const hullkit::Delaunay& d) { return static_cast<double>(d.error_point); }
+double duplicate_count(const hullkit::Delaunay& d) { return static_cast<double>(d.duplicate_count); }
+val cell_offsets_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_offsets); }
+val cell_xy_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_xy); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(hullkit_delaunay) {
+    emscripten::class_<hullkit::Delaunay>("Delaunay")
+        .property("dimension", &hullkit::Delaunay::dimension)
+        .property("error", &hullkit::Delaunay::error)
+        .function("ok", &delaunay_ok)
+        .function("errorPoint", &delaunay_error_point)
+        .function("duplicateCount", &duplicate_count)
+        .function("trianglesView", &triangles_view)
+        .function("halfedgesView", &halfedges_view)
+        .function("hullView", &hull_view)
+        .function("representativeView", &representative_view)
+        .function("polygonOffsetsView", &polygon_offsets_view)
+        .function("polygonVerticesView", &polygon_vertices_view);
+    emscripten::class_<hullkit::VoronoiCells>("VoronoiCells")
+        .function("cellOffsetsView", &cell_offsets_view)
+        .function("cellXYView", &cell_xy_view);
+    emscripten::function("delaunayFromHeap", &delaunay_from_heap);
+    emscripten::function("delaunayFindFromHeap", &find_from_heap);
+    emscripten::function("delaunayVoronoiFromHeap", &voronoi_from_heap);
+}
