@@ -1,15 +1,29 @@
 #!/usr/bin/env bash
-# Fuzzes the readers and the hull with clang's libFuzzer (Debian clang), one target after the
-# other, each for SECONDS (default 60):
+# Fuzzes the readers, the hull and the Delaunay triangulation with clang's libFuzzer (Debian
+# clang), each target for SECONDS (default 60), as many at once as there are cores
+# (HULLKIT_FUZZ_JOBS):
 #   bash scripts/fuzz.sh [SECONDS]
-# Targets (tests/fuzz/*.cpp): fuzz_points (parse_points and the chunked file reader: xyz, rbox,
-# OBJ, OFF), fuzz_off_mesh (read_off_mesh), fuzz_hull (hull() on bytes read as doubles, checked
-# by verify() and against gift wrapping). Each is built in build/fuzz with
-# -fsanitize=fuzzer,address,undefined against the core sources. The seed corpus is tests/data/
-# (every file, read as the target's input); what libFuzzer adds goes to build/fuzz/corpus/TARGET.
+# Targets (tests/fuzz/*.cpp):
+#   fuzz_points    parse_points and the chunked file reader (xyz, rbox, OBJ, OFF), which must agree
+#   fuzz_off_mesh  read_off_mesh (the OFF reader of `hullkit verify`)
+#   fuzz_mesh      every mesh reader (OBJ, OFF, PLY ascii/binary, STL ascii/binary) and read_mesh's
+#                  format detection; meshes must be consistent and read back from OFF unchanged
+#   fuzz_points2d  parse_points_2d (xy, xyz, rbox 2D); points must be on the lines they name
+#   fuzz_scene     parse_scene (route scene JSON; bytes after the first NUL are the mesh a "mesh"
+#                  entry loads, in memory); scenes must write back and read again unchanged
+#   fuzz_hull      hull() on bytes read as doubles, checked by verify() and against gift wrapping
+#   fuzz_delaunay  delaunay() on bytes read as doubles or small integers, checked by
+#                  verify_delaunay(), against gift wrapping and merge_cocircular, and by
+#                  nearest-point queries
+# A failed check aborts. Each target is built in build/fuzz with -fsanitize=fuzzer,address,undefined
+# and linked with every library source (native/src/*.cpp, io/, delaunay/, route/; objects in
+# build/fuzz/obj named FILE.o, SUBFOLDER_FILE.o for a subfolder, rebuilt when the source or any
+# header is newer; a target is relinked when its source, an object or a public header is newer). The
+# seed corpus is tests/data/ and all its subfolders (libFuzzer reads directories recursively; every
+# file is read as the target's input); what libFuzzer adds goes to build/fuzz/corpus/TARGET.
 # A crash, a hang (> 10 s for one input) or a leak stops that target and leaves the input in
-# build/fuzz/artifacts/; the script then exits 1 after the other targets ran. Make every such input
-# a regression file in tests/data/ with a test.
+# build/fuzz/artifacts/; the script then exits 1 once the other targets ran. Make every such input
+# a regression file in tests/data/fuzz/ with a test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -17,28 +31,63 @@ out=build/fuzz
 mkdir -p "$out/obj" "$out/artifacts"
 cxx=${CXX_FUZZ:-clang++}
 command -v "$cxx" >/dev/null || { echo "fuzz: $cxx not found (apt-get install clang)" >&2; exit 2; }
+# nlohmann/json and fast_float are header-only in /usr/include, as CMakeLists.txt finds them.
 flags=(-std=c++17 -O1 -g -ffp-contract=off -fno-omit-frame-pointer -fsanitize=address,undefined
        -fno-sanitize-recover=undefined -Inative/include -Inative/src)
 
-# The core library: every native/src/*.cpp (not the delaunay/route subfolders), rebuilt when newer.
+# Up to HULLKIT_FUZZ_JOBS (default: the number of cores) compilers, and then fuzzers, at once.
+jobs=${HULLKIT_FUZZ_JOBS:-$(nproc)}
+pool() { while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done; }
+rm -f "$out/compile-failed"
+
+# Every library source, rebuilt when it or any header is newer than its object.
 objects=()
-for src in native/src/*.cpp; do
-  obj="$out/obj/$(basename "${src%.cpp}").o"
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find native/include native/src -maxdepth 1 -name '*.hpp' -newer "$obj" | head -n 1)" ]; then
-    "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -c "$src" -o "$obj"
+for src in native/src/*.cpp native/src/io/*.cpp native/src/delaunay/*.cpp native/src/route/*.cpp; do
+  dir=$(dirname "$src")
+  prefix=""
+  [ "$dir" != native/src ] && prefix="$(basename "$dir")_"
+  obj="$out/obj/$prefix$(basename "${src%.cpp}").o"
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find native/include native/src -name '*.hpp' -newer "$obj" | head -n 1)" ]; then
+    echo "fuzz: compiling $src" >&2
+    pool
+    { "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -c "$src" -o "$obj" || { rm -f "$obj"; touch "$out/compile-failed"; }; } &
   fi
   objects+=("$obj")
 done
+wait
+[ -f "$out/compile-failed" ] && { echo "fuzz: compiling the library failed" >&2; exit 2; }
 
-status=0
+targets=()
 for src in tests/fuzz/fuzz_*.cpp; do
   name=$(basename "${src%.cpp}")
-  "$cxx" "${flags[@]}" -fsanitize=fuzzer "$src" "${objects[@]}" -o "$out/$name"
+  targets+=("$name")
+  newer=$(find "$src" "${objects[@]}" native/include -newer "$out/$name" 2>/dev/null | head -n 1 || true)
+  if [ ! -f "$out/$name" ] || [ -n "$newer" ]; then
+    echo "fuzz: building $name" >&2
+    pool
+    { "$cxx" "${flags[@]}" -fsanitize=fuzzer "$src" "${objects[@]}" -o "$out/$name" || { rm -f "$out/$name"; touch "$out/compile-failed"; }; } &
+  fi
+done
+wait
+[ -f "$out/compile-failed" ] && { echo "fuzz: building a fuzz target failed" >&2; exit 2; }
+
+# One fuzzer per core at a time; each writes its log and, when it fails, a .failed marker.
+for name in "${targets[@]}"; do
   mkdir -p "$out/corpus/$name"
+  rm -f "$out/$name.failed"
   echo "fuzz: $name for ${seconds} s" >&2
-  if ! "$out/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+  pool
+  {
+    "$out/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
       -print_final_stats=1 -artifact_prefix="$out/artifacts/$name-" \
-      "$out/corpus/$name" tests/data tests/data/degenerate >"$out/$name.log" 2>&1; then
+      "$out/corpus/$name" tests/data >"$out/$name.log" 2>&1 || touch "$out/$name.failed"
+  } &
+done
+wait
+
+status=0
+for name in "${targets[@]}"; do
+  if [ -f "$out/$name.failed" ]; then
     echo "fuzz: $name FAILED, see $out/$name.log; the input is in $out/artifacts/:" >&2
     grep -E "ERROR|SUMMARY|Test unit written" "$out/$name.log" | head -n 5 >&2 || true
     status=1

@@ -596,3 +596,26 @@ TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
     CHECK(single_error_line(piped) == message);
     for (unsigned char c : piped.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
 }
+
+TEST_CASE("cli: a PNG, a PLY and an ASCII STL are named as what they are, exit 2, no bytes echoed") {
+    TempDir dir("hullkit-cli");
+    // A PNG's signature and the start of its IHDR chunk.
+    const std::string png = dir.file("picture.png");
+    write_text(png, std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0", 33));
+    RunResult result = run_cli(dir, {"hull", png});
+    CHECK(single_error_line(result) == "hullkit: " + png + ": not a point file: binary data (byte 0x1a at offset 6)");
+    CHECK(result.out.empty());
+    for (unsigned char c : result.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
+
+    const std::string ply = dir.file("mesh.ply");
+    write_text(ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                    "end_header\n0 0 0\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", ply})) ==
+          "hullkit: " + ply + ": not a point file: PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+
+    const std::string stl = dir.file("mesh.stl");
+    write_text(stl, "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+                    "endfacet\nendsolid t\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", stl})) ==
+          "hullkit: " + stl + ": not a point file: ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+}

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "hullkit/giftwrap.hpp"
 #include "hullkit/hull.hpp"
 #include "hullkit/verify.hpp"
 
@@ -80,6 +81,29 @@ val verify_from_heap(std::uintptr_t xyz, std::uint32_t count, std::uintptr_t tri
     return out;
 }
 
+// The recorded gift wrap of the points at `xyz` (exact sides); the JS layer has checked the count.
+hullkit::GiftwrapTrace giftwrap_trace_from_heap(std::uintptr_t xyz, std::uint32_t count, bool restart) {
+    return hullkit::giftwrap_trace(hullkit::PointSpan(reinterpret_cast<const double*>(xyz), count),
+                                   restart ? hullkit::GiftwrapScan::Restart : hullkit::GiftwrapScan::SinglePass);
+}
+val trace_kinds_view(const hullkit::GiftwrapTrace& trace) {
+    return val(emscripten::typed_memory_view(trace.kinds.size(), trace.kinds.data()));
+}
+val trace_args_view(const hullkit::GiftwrapTrace& trace) {
+    return val(emscripten::typed_memory_view(trace.args.size(), trace.args.data()));
+}
+val trace_triangles_view(const hullkit::GiftwrapTrace& trace) {
+    return val(emscripten::typed_memory_view(trace.triangles.size(), trace.triangles.data()));
+}
+bool trace_ok(const hullkit::GiftwrapTrace& trace) { return trace.ok(); }
+double trace_error_point(const hullkit::GiftwrapTrace& trace) { return static_cast<double>(trace.error_point); }
+val giftwrap_event_names() {
+    val names = val::array();
+    for (int k = 0; k < hullkit::kGiftwrapEventKinds; ++k)
+        names.call<void>("push", val(hullkit::giftwrap_event_name(static_cast<hullkit::GiftwrapEvent>(k))));
+    return names;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(hullkit) {
@@ -95,6 +119,16 @@ EMSCRIPTEN_BINDINGS(hullkit) {
         .function("faceOffsetsView", &face_offsets_view)
         .function("faceVerticesView", &face_vertices_view)
         .function("normalView", &normal_view);
+    emscripten::class_<hullkit::GiftwrapTrace>("GiftwrapTrace")
+        .property("dimension", &hullkit::GiftwrapTrace::dimension)
+        .property("error", &hullkit::GiftwrapTrace::error)
+        .function("ok", &trace_ok)
+        .function("errorPoint", &trace_error_point)
+        .function("kindsView", &trace_kinds_view)
+        .function("argsView", &trace_args_view)
+        .function("trianglesView", &trace_triangles_view);
     emscripten::function("hullFromHeap", &hull_from_heap);
+    emscripten::function("giftwrapTraceFromHeap", &giftwrap_trace_from_heap);
+    emscripten::function("giftwrapEventNames", &giftwrap_event_names);
     emscripten::function("verifyFromHeap", &verify_from_heap);
 }

@@ -150,3 +150,39 @@ export function delaunayVoronoi(core, xy, triangulation, bounds) {
     cells.delete();
   }
 }
+
+/** delaunayGiftwrapTrace refuses more points than this (the wrap is O(n²)). */
+export const DELAUNAY_TRACE_MAX_POINTS = 2000;
+
+/**
+ * The recorded gift wrap on the lifted points (see hullkit.d.ts): events with input indices, the
+ * event names, and delaunay(xy)'s triangles.
+ * @param core the loaded WebAssembly module
+ */
+export function delaunayGiftwrapTrace(core, xy) {
+  const points = toFloat64(xy, 'delaunayGiftwrapTrace', 2);
+  const count = points.length / 2;
+  if (count > DELAUNAY_TRACE_MAX_POINTS) {
+    throw new HullkitError(`delaunayGiftwrapTrace: ${count} points is too many to trace (at most ${DELAUNAY_TRACE_MAX_POINTS}); ` +
+      'use delaunay(xy, {algorithm: "giftwrap"}) for the triangulation alone');
+  }
+  const address = copyIn(core, points, 'delaunayGiftwrapTrace');
+  let trace;
+  try {
+    trace = core.delaunayGiftwrapTraceFromHeap(address, count);
+  } finally {
+    core._free(address);
+  }
+  try {
+    if (!trace.ok()) throw new HullkitError(`delaunayGiftwrapTrace: ${trace.error}`, { pointIndex: trace.errorPoint() });
+    return {
+      kinds: trace.kindsView().slice(),
+      args: trace.argsView().slice(),
+      kindNames: core.giftwrapEventNames(),
+      triangles: trace.trianglesView().slice(),
+      dimension: trace.dimension,
+    };
+  } finally {
+    trace.delete();
+  }
+}

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hullkit/delaunay.hpp"
+#include "hullkit/giftwrap.hpp"
 
 namespace {
 
@@ -80,9 +81,15 @@ double duplicate_count(const hullkit::Delaunay& d) { return static_cast<double>(
 val cell_offsets_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_offsets); }
 val cell_xy_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_xy); }
 
+// The recorded gift wrap on the lifted points (class GiftwrapTrace is registered in bindings.cpp).
+hullkit::GiftwrapTrace delaunay_giftwrap_trace_from_heap(std::uintptr_t xy, std::uint32_t count) {
+    return hullkit::delaunay_giftwrap_trace(hullkit::PointSpan2(doubles_at(xy), count));
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(hullkit_delaunay) {
+    emscripten::function("delaunayGiftwrapTraceFromHeap", &delaunay_giftwrap_trace_from_heap);
     emscripten::class_<hullkit::Delaunay>("Delaunay")
         .property("dimension", &hullkit::Delaunay::dimension)
         .property("error", &hullkit::Delaunay::error)

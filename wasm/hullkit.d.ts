@@ -85,6 +85,51 @@ export interface Hullkit {
   /** The algorithm names `hull` accepts, the default first. */
   readonly algorithms: readonly HullAlgorithm[];
   /**
+   * The seed's 3D gift wrapping of `xyz` (exact side tests), recorded step by step by the C++ core
+   * while it wraps: the same wrap as `hull(xyz, {algorithm: 'giftwrap'})`. Replaying the events
+   * (see {@link GiftwrapTrace}) gives exactly that hull's `triangles`, in the same order.
+   * Deterministic. Input without volume (coplanar, collinear, identical or no points) is not
+   * wrapped: the trace is the single event `done 0 t`, with `triangles` and `dimension` as `hull`
+   * gives them.
+   *
+   * @throws {HullkitError} for more points than {@link Hullkit.traceLimits} allows for the scan
+   *   (5000 single pass, 1000 restart), an unknown option or scan, a coordinate count that is not a
+   *   multiple of 3, a non-finite coordinate (`pointIndex`), or coordinates out of the exact range.
+   */
+  giftwrapTrace(xyz: Float64Array | ArrayLike<number>, options?: GiftwrapTraceOptions): GiftwrapTrace;
+  /** The most points {@link Hullkit.giftwrapTrace} takes per scan, and {@link Hullkit.delaunayGiftwrapTrace} (`delaunay`). */
+  readonly traceLimits: Readonly<Record<GiftwrapScan | 'delaunay', number>>;
+  /**
+   * The 3D points in a file, read by the C++ readers `hullkit hull` uses: "x y z" text, qhull/rbox
+   * text, OBJ and OFF (their vertices, faces not needed), and PLY and STL (ASCII or binary: the
+   * mesh's vertices; STL corners with equal coordinates merged). A ".ply"/".stl" name picks the mesh
+   * reader, ".obj"/".off" the point reader; otherwise the content decides (PLY, STL, else text).
+   * Returns x0 y0 z0 x1 y1 z1 ...
+   *
+   * @param bytes the file's contents
+   * @param name the file name: picks the format and starts every error message (default "<bytes>")
+   * @throws {HullkitError} with the reader's message, "name:LINE: what is wrong" (then `line` is
+   *   set) or "name: what is wrong" (empty file, truncated binary STL, ...).
+   */
+  readPoints(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): Float64Array;
+  /**
+   * 2D points from a file, x0 y0 x1 y1 ...: text as `hullkit delaunay` reads it ("x y" or
+   * "x y z" lines, z ignored; qhull/rbox text of dimension 2 or 3); a mesh file (OBJ, OFF, PLY,
+   * STL, by name or content) gives the x and y of the points {@link Hullkit.readPoints} reads.
+   *
+   * @throws {HullkitError} as {@link Hullkit.readPoints}.
+   */
+  readPoints2d(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): Float64Array;
+  /**
+   * A triangle mesh from OBJ, OFF, PLY (ascii or binary) or STL (ASCII or binary), read as the
+   * route checker reads obstacle and traverse meshes (format from the content, then the name's
+   * extension). Faces with more than 3 corners are fanned.
+   *
+   * @throws {HullkitError} with the reader's message naming the line (`line`) or binary record, or
+   *   the problem (no triangles, truncated binary STL, not a mesh format).
+   */
+  readMesh(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): MeshData;
+  /**
    * The Delaunay triangulation of the 2D points `xy`, a flat array x0 y0 x1 y1 ... (a Float64Array
    * is used as it is; other array-likes of numbers are converted): the lower convex hull of the
    * points lifted to the paraboloid z = x² + y², projected back. Every decision is exact.
@@ -118,6 +163,21 @@ export interface Hullkit {
   /** The algorithm names `delaunay` accepts, the default first. */
   readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
   /**
+   * The Delaunay view's gift wrap, recorded by the C++ core: the wrap of
+   * `delaunay(xy, {algorithm: 'giftwrap'})` on the points lifted to z = x² + y² (same code, the
+   * distinct points in input order), events with input indices as in {@link GiftwrapTrace}:
+   * `first_point` (the lowest point in (x, y) order), `first_edge` (the convex hull edge leaving
+   * it) and its `push_edge`, then per popped edge `pop_edge`, `candidate`, `replace` (p strictly
+   * inside the circle through a, b and the candidate = below its lifted plane), `coplanar` (p on the
+   * final circle), the projected `accept`s (clockwise with y up, as `delaunay` reports them) and
+   * `push_edge`s; a `pop_edge` with no `candidate` is a convex hull edge. The accepts, as a set, are
+   * `delaunay(xy).triangles` (which is `triangles` here, in delaunay's order). Collinear or fewer
+   * than three distinct points: the single event `done`.
+   *
+   * @throws {HullkitError} for more than 2000 points (`traceLimits.delaunay`), and as {@link Hullkit.delaunay}.
+   */
+  delaunayGiftwrapTrace(xy: Float64Array | ArrayLike<number>): GiftwrapTrace;
+  /**
    * Checks a traverse moved along the scene's route (straight translations) against its obstacles,
    * one exact check per leg: the convex hull of each part at both ends of a leg contains all it
    * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
@@ -136,6 +196,68 @@ export interface Hullkit {
    * may be left out. Free it with `delete()` (or `using checker = new hullkit.RouteChecker(...)`).
    */
   RouteChecker: new (scene: RouteScene, options?: RouteSceneOptions) => RouteChecker;
+}
+
+/** How gift wrapping searches for the face across an edge. */
+export type GiftwrapScan = 'single-pass' | 'restart';
+
+export interface GiftwrapTraceOptions {
+  /**
+   * `'single-pass'` (default): one pass over the points per edge; a point above the candidate's
+   * plane replaces it (`replace` events). `'restart'`: the seed's literal step 4; a point above the
+   * candidate's plane rejects it and the next candidate is tested from the start (`restart` events).
+   */
+  scan?: GiftwrapScan;
+}
+
+/**
+ * The name of a recorded gift-wrap event; each event has three arguments a, b, c (point indices,
+ * unused ones 0). "Above" a plane means outside the would-be face.
+ *  - `first_point` a: step 1, the point with the largest x (then y, z).
+ *  - `first_edge` a b: step 2, the edge a→b of the flattened points' hull leaving a.
+ *  - `vertical_face` a b c: the vertical plane through the first edge holds a face (a, b, c span
+ *    it); its `accept` events follow directly.
+ *  - `wrap_first` a b: the vertical plane touches the hull along the segment a–b: the first face is
+ *    searched across a→b (not taken from the stack).
+ *  - `push_edge` a b: a→b goes onto the edge stack (the face on its left is still unknown).
+ *  - `pop_edge` a b: a→b taken off the stack to be wrapped: the edge being wrapped.
+ *  - `skip_edge` a b: a→b taken off the stack, but both its faces are known: discarded.
+ *  - `candidate` a b c: candidate triangle a, b, c for the edge being wrapped.
+ *  - `replace` a b p: (single pass) p lies above the candidate's plane: new candidate a, b, p.
+ *  - `restart` a b p: (restart) p lies above the candidate's plane: the candidate is rejected and
+ *    the next `candidate` is tested against all points again.
+ *  - `coplanar` a b p: p lies exactly on the candidate's plane; it joins the face if the candidate
+ *    stands (a later `replace` forgets it).
+ *  - `accept` a b c: a hull triangle, counter-clockwise from outside (a face with more corners gives
+ *    consecutive accepts fanned from its lowest index), followed by its `push_edge`s.
+ *  - `done` f t: the hull closed with f faces and t triangles (the last event).
+ */
+export type GiftwrapEventName =
+  | 'first_point' | 'first_edge' | 'vertical_face' | 'wrap_first' | 'push_edge' | 'pop_edge' | 'skip_edge'
+  | 'candidate' | 'replace' | 'restart' | 'coplanar' | 'accept' | 'done';
+
+/**
+ * A recorded gift wrap. Event e is `kindNames[kinds[e]]` with arguments `args[3e]`, `args[3e + 1]`,
+ * `args[3e + 2]`. Replay: the edge stack is the `push_edge` events, each `pop_edge` / `skip_edge`
+ * removing its top (the edge it names); the `accept` events in order are `triangles`.
+ */
+export interface GiftwrapTrace {
+  kinds: Uint8Array;
+  args: Uint32Array;
+  /** Index = kind: the {@link GiftwrapEventName}s in the order above. */
+  kindNames: GiftwrapEventName[];
+  /** The hull's triangles, as `hull(xyz, {algorithm: 'giftwrap'}).triangles`. */
+  triangles: Uint32Array;
+  /** As `hull` (or for delaunayGiftwrapTrace, `delaunay`) gives it. */
+  dimension: 3 | 2 | 1 | 0 | -1;
+}
+
+/** A triangle mesh read from a file. */
+export interface MeshData {
+  /** x0 y0 z0 x1 y1 z1 ... */
+  vertices: Float64Array;
+  /** 3 vertex indices per triangle, in the file's orientation. */
+  triangles: Uint32Array;
 }
 
 /** Algorithms available to {@link Hullkit.delaunay}; every one returns identical triangles. */
@@ -358,6 +480,8 @@ export class HullkitError extends Error {
   name: 'HullkitError';
   /** Index of the point to blame, when there is one. */
   pointIndex?: number;
+  /** readPoints / readPoints2d / readMesh: the 1-based line the reader names, when it names one. */
+  line?: number;
 }
 
 /** Loads the WebAssembly module (once per call) and resolves to the API. */

@@ -2,7 +2,7 @@
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, checkOptions, copyIn, toFloat64, toUint32 } from './internal.js';
-import { delaunay, delaunayFind, delaunayVoronoi, DELAUNAY_ALGORITHMS } from './delaunay.js';
+import { delaunay, delaunayFind, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { checkRoute, RouteChecker } from './route.js';
 
 export { HullkitError };
@@ -10,6 +10,10 @@ export { HullkitError };
 const ALGORITHMS = ['quickhull', 'giftwrap'];
 const EPSILONS = ['exact', 'seed'];
 const HULL_OPTIONS = ['algorithm', 'epsilon', 'mergeCoplanar'];
+const SCANS = ['single-pass', 'restart'];
+/** giftwrapTrace refuses more points than this (single pass) / TRACE_MAX_RESTART (restart scan). */
+const TRACE_MAX_POINTS = 5000;
+const TRACE_MAX_RESTART = 1000;
 
 const isNode = typeof process === 'object' && typeof process.versions?.node === 'string';
 
@@ -29,9 +33,14 @@ export default async function createHullkit() {
   return Object.freeze({
     hull: (xyz, options) => hull(core, xyz, options),
     verify: (xyz, result) => verify(core, xyz, result),
+    giftwrapTrace: (xyz, options) => giftwrapTrace(core, xyz, options),
+    readPoints: (bytes, name) => readPoints(core, bytes, name),
+    readPoints2d: (bytes, name) => readPoints2d(core, bytes, name),
+    readMesh: (bytes, name) => readMesh(core, bytes, name),
     delaunay: (xy, options) => delaunay(core, xy, options),
     find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
+    delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
     checkRoute: (scene, options) => checkRoute(core, scene, options),
     RouteChecker: class extends RouteChecker {
       constructor(scene, options) {
@@ -39,6 +48,7 @@ export default async function createHullkit() {
       }
     },
     algorithms: Object.freeze([...ALGORITHMS]),
+    traceLimits: Object.freeze({ 'single-pass': TRACE_MAX_POINTS, restart: TRACE_MAX_RESTART, delaunay: DELAUNAY_TRACE_MAX_POINTS }),
     delaunayAlgorithms: Object.freeze([...DELAUNAY_ALGORITHMS]),
   });
 }
@@ -150,5 +160,92 @@ function verify(core, xyz, result) {
   }
 }
 
+let eventNames = null; // the C++ core's event kind names, index = kind
 
+/** The recorded gift wrap of `xyz` (exact sides): events, their names and the hull's triangles. */
+function giftwrapTrace(core, xyz, options = {}) {
+  const points = toFloat64(xyz, 'giftwrapTrace');
+  const { scan = 'single-pass' } = checkOptions(options, ['scan'], 'giftwrapTrace');
+  if (!SCANS.includes(scan)) {
+    throw new HullkitError(`giftwrapTrace: unknown scan "${scan}" (known: ${SCANS.join(', ')})`);
+  }
+  const count = points.length / 3;
+  const limit = scan === 'restart' ? TRACE_MAX_RESTART : TRACE_MAX_POINTS;
+  if (count > limit) {
+    throw new HullkitError(`giftwrapTrace: ${count} points is too many to trace with the ${scan} scan (at most ${limit}); ` +
+      'use hull(xyz, {algorithm: "giftwrap"}) for the hull alone');
+  }
+  eventNames ??= Object.freeze(core.giftwrapEventNames());
+  const address = copyIn(core, points, 'giftwrapTrace');
+  let trace;
+  try {
+    trace = core.giftwrapTraceFromHeap(address, count, scan === 'restart');
+  } finally {
+    core._free(address);
+  }
+  try {
+    if (!trace.ok()) throw new HullkitError(`giftwrapTrace: ${trace.error}`, { pointIndex: trace.errorPoint() });
+    return {
+      kinds: trace.kindsView().slice(),
+      args: trace.argsView().slice(),
+      kindNames: [...eventNames],
+      triangles: trace.trianglesView().slice(),
+      dimension: trace.dimension,
+    };
+  } finally {
+    trace.delete();
+  }
+}
 
+/** The bytes of a Uint8Array, another typed array or DataView, or an ArrayBuffer. */
+function fileBytes(bytes, where) {
+  if (bytes instanceof Uint8Array) return bytes;
+  if (bytes instanceof ArrayBuffer) return new Uint8Array(bytes);
+  if (ArrayBuffer.isView(bytes)) return new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  throw new TypeError(`${where}: the file must be a Uint8Array or an ArrayBuffer`);
+}
+
+/**
+ * Runs one of the C++ readers on the file's bytes; `take(result)` copies the arrays out. A reader's
+ * error ("name:LINE: what is wrong") is thrown as a HullkitError with that message and, when the
+ * message names one, `line` (1-based).
+ */
+function readFile(core, bytes, name, where, read, take) {
+  const data = fileBytes(bytes, where);
+  if (name === undefined || name === null) name = '';
+  if (typeof name !== 'string') throw new TypeError(`${where}: the name must be a string (the file name)`);
+  if (data.length > 0xffffffff) throw new HullkitError(`${where}: ${name || 'the file'} is too large (4 GiB at most)`);
+  const source = name || '<bytes>';
+  const address = copyIn(core, data, where);
+  let result;
+  try {
+    result = read(address, data.length, source);
+  } finally {
+    core._free(address);
+  }
+  try {
+    const error = result.error();
+    if (error) {
+      const failure = new HullkitError(error);
+      const match = error.startsWith(`${source}:`) ? /^(\d+): /.exec(error.slice(source.length + 1)) : null;
+      if (match) failure.line = Number(match[1]);
+      throw failure;
+    }
+    return take(result);
+  } finally {
+    result.delete();
+  }
+}
+
+function readPoints(core, bytes, name) {
+  return readFile(core, bytes, name, 'readPoints', (a, n, s) => core.readPointsFromHeap(a, n, s), (r) => r.view().slice());
+}
+
+function readPoints2d(core, bytes, name) {
+  return readFile(core, bytes, name, 'readPoints2d', (a, n, s) => core.readPoints2dFromHeap(a, n, s), (r) => r.view().slice());
+}
+
+function readMesh(core, bytes, name) {
+  return readFile(core, bytes, name, 'readMesh', (a, n, s) => core.readMeshFromHeap(a, n, s),
+    (r) => ({ vertices: r.verticesView().slice(), triangles: r.trianglesView().slice() }));
+}

@@ -7,7 +7,7 @@
 //                 (delaunay: {algorithms}, the names hullkit.delaunay accepts)
 //                 {type: 'load-error', message}                if it cannot be loaded
 // main -> worker  {type: 'compute', id, distribution, n, seed, algorithm?, epsilon?,
-//                  mergeCoplanar?, text?}
+//                  mergeCoplanar?, text?, xyz?}   (xyz: the points of distribution 'file')
 // worker -> main  {type: 'result', id, n, dimension, xyz, triangles, vertices, edges,
 //                  faces, faceSizes?, volume, area, extent, comparison?,
 //                  hullMs, genMs, workerMs}                     (buffers transferred)
@@ -16,6 +16,12 @@
 // main -> worker  {type: 'delaunay', id, xy, algorithm?, voronoi?: [xmin, ymin, xmax, ymax]}
 // worker -> main  {type: 'result', id, dimension, triangles, halfedges, hull, representative,
 //                  duplicateCount, cells?: {cellOffsets, cellXY}, ms, voronoiMs}
+// main -> worker  {type: 'read', id, bytes (ArrayBuffer), name, as: 'points' | 'points2d' | 'mesh'}
+// worker -> main  {type: 'result', id, xyz | xy | {vertices, triangles}, ms}: the file read by the
+//                 C++ readers the CLI uses (hullkit.readPoints / readPoints2d / readMesh)
+// main -> worker  {type: 'trace', id, xyz, scan?} / {type: 'trace', id, xy, lifted: true}
+// worker -> main  {type: 'result', id, kinds, args, kindNames, triangles, dimension, ms}: the
+//                 events of the real gift wrapping (hullkit.giftwrapTrace / delaunayGiftwrapTrace)
 // main -> worker  {type: 'route', id, scene, route, samples}
 // worker -> main  {type: 'result', id, report, sweeps: [{leg, part, triangles}], ms}
 //                 (sweeps: each part's swept hull per leg, from hullkit.hull of the part's
@@ -75,7 +81,7 @@ function isInputError(err) {
 
 self.onmessage = (event) => {
   const msg = event.data;
-  const run = msg && { compute, delaunay: delaunayJob, route: routeJob }[msg.type];
+  const run = msg && { compute, delaunay: delaunayJob, route: routeJob, read: readJob, trace: traceJob }[msg.type];
   if (run) {
     run(msg).catch((err) => {
       // Should not happen (compute catches everything), but never drop it.
@@ -84,11 +90,16 @@ self.onmessage = (event) => {
   }
 };
 
-async function compute({ id, distribution, n, seed, algorithm, epsilon, mergeCoplanar = false, text }) {
+async function compute({ id, distribution, n, seed, algorithm, epsilon, mergeCoplanar = false, text, xyz: given }) {
   const w0 = performance.now();
   let xyz;
   try {
-    xyz = distribution === 'custom' ? parsePoints(text ?? '') : generatePoints(distribution, n, seed);
+    if (distribution === 'file') {
+      if (!(given instanceof Float64Array)) throw new Error('no points from a file');
+      xyz = given;
+    } else {
+      xyz = distribution === 'custom' ? parsePoints(text ?? '') : generatePoints(distribution, n, seed);
+    }
   } catch (err) {
     self.postMessage({ type: 'error', id, kind: 'input', message: describe(err), n });
     return;
@@ -357,6 +368,43 @@ function delaunayJob({ id, xy, algorithm, voronoi }) {
     const transfer = [out.triangles.buffer, out.halfedges.buffer, out.hull.buffer, out.representative.buffer];
     if (cells) transfer.push(cells.cellOffsets.buffer, cells.cellXY.buffer);
     self.postMessage(out, transfer);
+  });
+}
+
+// ---------------------------------------------------------------- files and traces
+
+const READERS = { points: 'readPoints', points2d: 'readPoints2d', mesh: 'readMesh' };
+
+function readJob({ id, bytes, name, as }) {
+  return withHullkit(id, (hullkit) => {
+    const reader = READERS[as];
+    if (!reader || typeof hullkit[reader] !== 'function') throw new Error(`this hullkit build cannot read ${as} files`);
+    const t0 = performance.now();
+    const result = hullkit[reader](new Uint8Array(bytes), String(name ?? ''));
+    const ms = performance.now() - t0;
+    if (as === 'mesh') {
+      const vertices = ownedCopy(result.vertices, Float64Array, 'vertices');
+      const triangles = ownedCopy(result.triangles, Uint32Array, 'triangles');
+      self.postMessage({ type: 'result', id, vertices, triangles, ms }, [vertices.buffer, triangles.buffer]);
+    } else {
+      const coords = ownedCopy(result, Float64Array, 'points');
+      self.postMessage({ type: 'result', id, [as === 'points' ? 'xyz' : 'xy']: coords, ms }, [coords.buffer]);
+    }
+  });
+}
+
+function traceJob({ id, xyz, xy, lifted = false, scan }) {
+  return withHullkit(id, (hullkit) => {
+    const t0 = performance.now();
+    const trace = lifted ? hullkit.delaunayGiftwrapTrace(xy) : hullkit.giftwrapTrace(xyz, scan ? { scan } : {});
+    const ms = performance.now() - t0;
+    const kinds = ownedCopy(trace.kinds, Uint8Array, 'kinds');
+    const args = ownedCopy(trace.args, Uint32Array, 'args');
+    const triangles = ownedCopy(trace.triangles, Uint32Array, 'triangles');
+    self.postMessage(
+      { type: 'result', id, kinds, args, triangles, kindNames: [...trace.kindNames], dimension: trace.dimension, ms },
+      [kinds.buffer, args.buffer, triangles.buffer],
+    );
   });
 }
 

@@ -614,25 +614,12 @@ int incircle_adapt(double ax, double ay, double bx, double by, double cx, double
     return incircle_exact_sign(ax, ay, bx, by, cx, cy, dx, dy);
 }
 
-/// Stage A; falls through to incircle_adapt.
+/// Stage A (detail::incircle_stage_a, shared with the header's inline test); falls through to
+/// incircle_adapt.
 inline int incircle_impl(double ax, double ay, double bx, double by, double cx, double cy,
                          double dx, double dy, int* stage) {
-    const double adx = ax - dx, ady = ay - dy;
-    const double bdx = bx - dx, bdy = by - dy;
-    const double cdx = cx - dx, cdy = cy - dy;
-
-    const double bdx_cdy = bdx * cdy, cdx_bdy = cdx * bdy;
-    const double cdx_ady = cdx * ady, adx_cdy = adx * cdy;
-    const double adx_bdy = adx * bdy, bdx_ady = bdx * ady;
-    const double alift = adx * adx + ady * ady;
-    const double blift = bdx * bdx + bdy * bdy;
-    const double clift = cdx * cdx + cdy * cdy;
-
-    const double det = alift * (bdx_cdy - cdx_bdy) + blift * (cdx_ady - adx_cdy) +
-                       clift * (adx_bdy - bdx_ady);
-    const double permanent = (std::fabs(bdx_cdy) + std::fabs(cdx_bdy)) * alift +
-                             (std::fabs(cdx_ady) + std::fabs(adx_cdy)) * blift +
-                             (std::fabs(adx_bdy) + std::fabs(bdx_ady)) * clift;
+    const detail::IncircleStageA a = detail::incircle_stage_a(ax, ay, bx, by, cx, cy, dx, dy);
+    const double det = a.det, permanent = a.permanent;
     const double errbound = kIncircleBoundA * permanent;
     if (stage) *stage = 0;
     if (std::fabs(det) > errbound) return sign_of(det);
@@ -701,6 +688,23 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
              double dy) {
     return incircle_impl(ax, ay, bx, by, cx, cy, dx, dy, nullptr);
 }
+
+namespace detail {
+
+static_assert(kOrient2dFilterBound == kOrient2dBoundA && kIncircleFilterBound == kIncircleBoundA,
+              "the header's stage A bounds must match");
+
+int orient2d_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
+                         double detsum) {
+    return orient2d_adapt(ax, ay, bx, by, cx, cy, detsum, nullptr);
+}
+
+int incircle_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
+                         double dx, double dy, double permanent) {
+    return incircle_adapt(ax, ay, bx, by, cx, cy, dx, dy, permanent, nullptr);
+}
+
+}  // namespace detail
 
 bool incircle_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate,
                              int* exponent) {

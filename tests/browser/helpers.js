@@ -110,3 +110,35 @@ export function averageColor(img, x0, y0, w, h) {
   return sum.map((s) => s / (w * h));
 }
 
+
+// ------------------------------------------------------------------ a browser on the page
+
+/**
+ * Serves the repository and launches Debian's Chromium: {browser, base (the page's URL), errors,
+ * watch(page), close()}. watch(page) collects console errors, page errors, failed requests and
+ * any request outside the page's own server into `errors` (the page must fetch nothing else).
+ */
+export async function openBrowser() {
+  const fs = await import('node:fs');
+  if (!fs.existsSync(CHROMIUM)) throw new Error(`Chromium not found at ${CHROMIUM}`);
+  const { startServer } = await import('../../scripts/serve.js');
+  const { chromium } = await import('playwright-core');
+  const server = await startServer({ port: 0, root: ROOT });
+  const origin = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  const errors = [];
+  const watch = (page) => {
+    page.on('console', (msg) => { if (msg.type() === 'error') errors.push(`console.error: ${msg.text()}`); });
+    page.on('pageerror', (err) => errors.push(`pageerror: ${err.message}`));
+    page.on('requestfailed', (req) => errors.push(`request failed: ${req.url()}`));
+    page.on('request', (req) => {
+      const url = req.url();
+      if (!url.startsWith(origin) && !url.startsWith('data:') && !url.startsWith('blob:')) errors.push(`outside request: ${url}`);
+    });
+  };
+  const close = async () => {
+    await browser.close();
+    await new Promise((resolve) => server.close(resolve));
+  };
+  return { browser, base: `${origin}web/`, errors, watch, close };
+}

@@ -10,8 +10,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { startServer } from '../../scripts/serve.js';
-import { ROOT, CHROMIUM, CHROMIUM_ARGS, decodePng, pixel, averageColor } from './helpers.js';
+import { ROOT, openBrowser, decodePng, pixel, averageColor } from './helpers.js';
 
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
@@ -62,18 +61,7 @@ async function nextRun(page, hook, before) {
 }
 
 test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
-  assert.ok(fs.existsSync(CHROMIUM), `Chromium not found at ${CHROMIUM}`);
-  const { chromium } = await import('playwright-core');
-  const server = await startServer({ port: 0, root: ROOT });
-  const base = `http://127.0.0.1:${server.address().port}/web/`;
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
-  const errors = [];
-  const watch = (page) => {
-    page.on('console', (msg) => { if (msg.type() === 'error') errors.push(`console.error: ${msg.text()}`); });
-    page.on('pageerror', (err) => errors.push(`pageerror: ${err.message}`));
-    page.on('requestfailed', (req) => errors.push(`request failed: ${req.url()}`));
-    page.on('request', (req) => { if (!req.url().startsWith(`http://127.0.0.1:${server.address().port}/`) && !req.url().startsWith('data:') && !req.url().startsWith('blob:')) errors.push(`outside request: ${req.url()}`); });
-  };
+  const { browser, base, errors, watch, close } = await openBrowser();
   fs.mkdirSync(DOCS, { recursive: true });
   try {
     const page = await browser.newPage({ viewport: DESKTOP, deviceScaleFactor: 1 });
@@ -297,7 +285,6 @@ test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
       assert.deepEqual(errors, []);
     });
   } finally {
-    await browser.close();
-    await new Promise((resolve) => server.close(resolve));
+    await close();
   }
 });

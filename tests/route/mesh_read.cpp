@@ -411,3 +411,28 @@ TEST_CASE("mesh_read: truncated and corrupted files give a mesh or a one-line er
         }
     }
 }
+
+TEST_CASE("mesh_read: regression inputs from fuzzing (tests/data/fuzz) give a clear error or the mesh", "[mesh_read]") {
+    auto read = [](const std::string& name) {
+        std::string bytes, error;
+        REQUIRE(hullkit::read_file(hullkit_test::data_path("fuzz/" + name), &bytes, &error));
+        return hullkit::read_mesh(bytes, name);
+    };
+    // A 19-digit index overflowed int64 while it was parsed (undefined behaviour).
+    CHECK(read("obj-face-index-19-digits.obj").error ==
+          "obj-face-index-19-digits.obj:4: face corner \"9999999999999999999\" is not a vertex index (1-based, or negative)");
+    // Ascii PLY values of any magnitude were cast to long long for the message (undefined behaviour).
+    CHECK(read("ply-ascii-list-count-minus-1e300.ply").error ==
+          "ply-ascii-list-count-minus-1e300.ply:13: face 0: a list count is negative: -1e+300");
+    CHECK(read("ply-ascii-face-index-1e300.ply").error ==
+          "ply-ascii-face-index-1e300.ply:13: face 0: index 1e+300 out of range (3 vertices)");
+    // Bytes of the file in a message: printable ASCII only (0xff 0xfe used to be echoed raw).
+    CHECK(read("obj-unknown-record-escape-and-high-bytes.obj").error ==
+          "obj-unknown-record-escape-and-high-bytes.obj:1: unknown OBJ record \"?[31m??\"");
+    // 10^18 rows of an element without properties: nothing to read in a binary body, which used to
+    // spin through every row.
+    const MeshResult empty_rows = read("ply-binary-empty-element-1e18-rows.ply");
+    INFO(empty_rows.error);
+    CHECK(empty_rows.xyz == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+    CHECK(empty_rows.triangles == std::vector<std::uint32_t>{0, 1, 2});
+}

@@ -308,3 +308,22 @@ TEST_CASE("scene_io: the report JSON, read back by nlohmann", "[scene_io]") {
     report.legs.clear();
     CHECK(nlohmann::json::parse(hullkit::write_report_json(scene, report, {}))["legs"] == nlohmann::json::array());
 }
+
+TEST_CASE("scene_io: messages show no control character or malformed UTF-8 from the scene (tests/data/fuzz)", "[scene_io]") {
+    auto read = [](const std::string& name) {
+        const std::string text = hullkit_test::read_text(hullkit_test::data_path("fuzz/" + name));
+        REQUIRE_FALSE(text.empty());
+        return error_of(text, map_loader({}));
+    };
+    // A newline and an escape sequence in a mesh file name (JSON escapes) used to reach the
+    // terminal, and the newline split the one-line message.
+    CHECK(read("scene-control-characters-in-mesh-name.json") ==
+          "s.json: traverse.parts[0].mesh: a?b?[2J.stl: no such mesh given");
+    // A key with ESC and the C1 control U+009B (CSI): replaced; the UTF-8 bullet before them is kept.
+    CHECK(read("scene-escape-and-c1-in-key.json") ==
+          "s.json: \xe2\x80\xa2?[2J?: unknown key (known here: traverse, route, obstacles, margin)");
+    // Malformed UTF-8: nlohmann's message quotes the bytes it read; they come out as '?'.
+    const std::string invalid = read("scene-invalid-utf8-string.json");
+    CHECK(invalid.rfind("s.json: invalid JSON: ", 0) == 0);
+    for (unsigned char c : invalid) CHECK((c >= 0x20 && c < 0x7f));
+}

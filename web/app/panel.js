@@ -9,3 +9,30 @@ export function showError(el, message, logged) {
   el.textContent = message;
   el.hidden = false;
 }
+
+/**
+ * The message for a file the readers rejected: "Cannot read NAME: line N: what" from the reader's
+ * "NAME:N: what" (or its message as it is when it names no line).
+ */
+export function fileReadError(name, message) {
+  let rest = String(message);
+  if (rest.startsWith(`${name}:`)) rest = rest.slice(name.length + 1).trimStart();
+  const line = /^(\d+):\s*/.exec(rest);
+  if (line) rest = `line ${line[1]}: ${rest.slice(line[0].length)}`;
+  return `Cannot read ${name}: ${rest}`;
+}
+
+/**
+ * Reads `file` in the worker with the C++ reader for `as` ('points' | 'points2d' | 'mesh'):
+ * resolves with the worker's result message, or with {error} (the message to show), or with
+ * {cancelled: true} when Cancel dropped the worker meanwhile.
+ */
+export async function readInWorker(worker, file, as) {
+  let msg;
+  try {
+    msg = await worker.request({ type: 'read', as, bytes: await file.arrayBuffer(), name: file.name });
+  } catch (err) {
+    return err.cancelled ? { cancelled: true } : { error: fileReadError(file.name, err.message) };
+  }
+  return msg.type === 'result' ? msg : { error: fileReadError(file.name, msg.message) };
+}

@@ -11,10 +11,13 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { discTexture, clearGroup, zUpCamera } from '../app/stage.js';
 import { fmtInt, fmtMs } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
-import { showError } from '../app/panel.js';
+import { showError, readInWorker } from '../app/panel.js';
+import { compact, offText, triangulationSvg, download } from '../app/export.js';
+import { createGiftwrapStepper } from './giftwrap-stepper.js';
 import { POINT_SETS, generatePoints2, gridSide2 } from '../points2d.js';
 
 const N_MAX = 50_000;
+const FILE_MAX = 200_000; // points of an opened file the page draws (the CLI takes any number)
 const DEFAULTS = { set: 'uniform', n: 300, seed: 1, layout: 'side', voronoi: false, algorithm: '' };
 const FIGURE1_N = 1024;
 const GIFTWRAP_MAX = 5000;
@@ -124,6 +127,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
 
   let active = false;
   let base = null; // {set, n, seed, xy}: the generated points
+  let fileInput = null; // {name, xy}: the points of the last file opened
   let added = []; // clicked points [[x, y], ...]
   let xy = new Float64Array(0); // base + added
   let tri = null; // the last triangulation drawn
@@ -457,7 +461,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   // ------------------------------------------------------------ parameters, URL, compute
 
   function readParams() {
-    const set = POINT_SETS.includes(ui.set.value) ? ui.set.value : DEFAULTS.set;
+    const set = POINT_SETS.includes(ui.set.value) || (ui.set.value === 'file' && fileInput) ? ui.set.value : DEFAULTS.set;
     let n = Math.round(Number(ui.n.value));
     if (!Number.isFinite(n) || ui.n.value.trim() === '') n = DEFAULTS.n;
     n = Math.max(0, Math.min(N_MAX, n));
@@ -495,6 +499,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
 
   function urlParams() {
     const p = readParams();
+    if (p.set === 'file') return { set: DEFAULTS.set }; // a file's points cannot be put in a link
     return {
       set: p.set, n: p.n, seed: p.seed,
       layout: p.layout === 'side' ? undefined : p.layout,
@@ -528,7 +533,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     if (q.get('view') === 'delaunay' && list.includes(q.get('algo'))) ui.algorithm.value = q.get('algo');
   }
 
-  const keyOf = (p) => `${p.set}|${p.n}|${p.seed}|${p.algorithm}|${p.voronoi}|${encodeAdded()}`;
+  const keyOf = (p) => `${p.set}|${p.n}|${p.seed}|${p.algorithm}|${p.voronoi}|${encodeAdded()}|${p.set === 'file' ? fileInput.name : ''}`;
 
   /** Generates the points, asks the worker for the triangulation (and cells) and draws it. */
   function compute({ push = false, force = false } = {}) {
@@ -540,8 +545,11 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     }
     const p = readParams();
     const key = keyOf(p);
-    if (!force && (key === pendingKey || (key === drawnKey && pendingKey === null))) return;
-    if (!base || base.set !== p.set || base.n !== p.n || base.seed !== p.seed) {
+    if (!force && (key === pendingKey || key === cancelledKey || (key === drawnKey && pendingKey === null))) return;
+    cancelledKey = null;
+    if (p.set === 'file') {
+      if (!base || base.xy !== fileInput.xy) base = { set: 'file', n: p.n, seed: p.seed, xy: fileInput.xy };
+    } else if (!base || base.set !== p.set || base.n !== p.n || base.seed !== p.seed) {
       base = { set: p.set, n: p.n, seed: p.seed, xy: generatePoints2(p.set, p.n, p.seed) };
     }
     xy = new Float64Array(base.xy.length + 2 * added.length);
@@ -550,7 +558,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     extent = boundsOf(xy);
     const bounds = [extent.cx - 1.3 * extent.r, extent.cy - 1.3 * extent.r, extent.cx + 1.3 * extent.r, extent.cy + 1.3 * extent.r];
 
-    if (active) writeUrl('delaunay', urlParams(), { push });
+    if (active && p.set !== 'file') writeUrl('delaunay', urlParams(), { push });
     if (p.algorithm === 'giftwrap' && xy.length / 2 > GIFTWRAP_MAX) {
       // Every lifted point is a hull vertex, so gift wrapping them costs O(n²).
       fail(`Gift wrapping the lifted points takes O(n²) time (every lifted point is a hull vertex): ` +
@@ -614,7 +622,9 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
       ms: fmtMs(msg.ms), rtt: fmtMs(roundTripMs), dup: fmtInt(tri.duplicateCount),
     });
     ui.stat.ms.title = 'hullkit.delaunay() inside the worker';
-    const setLabel = ui.set.selectedOptions[0]?.textContent ?? p.set;
+    const setLabel = p.set === 'file' ? fileInput.name : ui.set.selectedOptions[0]?.textContent ?? p.set;
+    lastExport = { xy: points, triangles: tri.triangles, hull: tri.hull, cells: msg.cells ?? null, name: p.set === 'file' ? `${fileInput.name.replace(/\.[^.]*$/, '')}-delaunay` : `delaunay-${p.set}-${p.n}-seed${p.seed}` };
+    for (const b of exportButtons) b.disabled = tri.triangles.length === 0;
     let status = `${fmtInt(distinct)} points (${setLabel}${added.length ? `, ${added.length} clicked` : ''}): ` +
       `${fmtInt(triangles)} triangles = 2n − h − 2 with h = ${fmtInt(tri.hull.length)} hull points.`;
     if (tri.dimension < 2) status = `${fmtInt(distinct)} distinct points, all on one line: no triangles, the hull is the ordered line of points.`;
@@ -625,13 +635,23 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
       n, distinct, duplicates: tri.duplicateCount, triangles, hull: tri.hull.length, dimension: tri.dimension,
       ms: msg.ms, set: p.set, seed: p.seed, added: added.length, voronoi: Boolean(cells), run: runCount,
     };
+    liftStepper.offer({
+      coords: xy, n: distinct, eligible: tri.dimension === 2 && tri.duplicateCount === 0,
+      why: tri.dimension !== 2 ? 'Available when the points span the plane.'
+        : tri.duplicateCount ? 'Available for points without duplicates.' : `Available for at most ${LIFT_STEP_MAX} points (set n to ${LIFT_STEP_MAX} or fewer).`,
+    });
     // The coordinates too (non-enumerable: JSON of the hook stays short).
     Object.defineProperty(window.hullkitDelaunay, 'points', { value: Array.from(xy) });
+    const drawn = tri.triangles;
+    Object.defineProperty(window.hullkitDelaunay, 'triangleList', { get: () => Array.from(drawn) });
     setState('ready');
     requestRender();
   }
 
   function fail(message, logged = true) {
+    liftStepper.offer({ why: 'Triangulate first.' });
+    lastExport = null;
+    for (const b of exportButtons) b.disabled = true;
     showError(ui.error, message, logged);
     ui.status.textContent = '';
     setState('error');
@@ -647,6 +667,92 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     event.preventDefault();
     compute({ push: true, force: true });
   });
+  // ------------------------------------------------------------ the lifted gift wrap, step by step
+
+  const LIFT_STEP_MAX = 300;
+  const liftStepper = createGiftwrapStepper({
+    worker, requestRender, prefix: 'dl-step', hook: 'hullkitLiftStepper', lifted: true, limit: LIFT_STEP_MAX,
+    targets: (coords) => {
+      const n = coords.length / 2;
+      const up = new Float32Array(3 * n);
+      const flat = new Float32Array(3 * n);
+      for (let i = 0; i < n; i++) {
+        const x = coords[2 * i], y = coords[2 * i + 1];
+        up.set([x, y, LIFT * (x * x + y * y)], 3 * i);
+        flat.set([x, y, 0], 3 * i);
+      }
+      return [{ scene: scene3d, positions: up }, { scene: scene2d, positions: flat }];
+    },
+    request: (coords) => ({ type: 'trace', xy: coords, lifted: true }),
+    hideResult: (hidden) => {
+      lifted.visible = plane.visible = planeIn3d.visible = !hidden;
+      requestRender();
+    },
+  });
+
+  // ------------------------------------------------------------ files in and out
+
+  let lastExport = null;
+  const exportButtons = [...document.querySelectorAll('[data-dl-export]')];
+  for (const button of exportButtons) {
+    button.addEventListener('click', () => {
+      if (!lastExport) return;
+      const { xy: pts, triangles, hull, cells: vcells, name } = lastExport;
+      if (button.dataset.dlExport === 'off') {
+        const mesh = compact(pts, triangles, 2);
+        download(`${name}.off`, offText(mesh, `Delaunay triangulation by hullkit, z = 0, ${triangles.length / 3} triangles`), 'text/plain');
+      } else {
+        const svg = triangulationSvg({ xy: pts, triangles, hull, cells: vcells ? { offsets: vcells.cellOffsets, xy: vcells.cellXY } : null });
+        download(`${name}.svg`, svg, 'image/svg+xml');
+      }
+    });
+  }
+
+  /** Reads `file` with the C++ 2D point reader (in the worker) and triangulates its points. */
+  async function openFile(file) {
+    ui.error.hidden = true;
+    ui.status.textContent = `Reading ${file.name}…`;
+    const msg = await readInWorker(worker, file, 'points2d');
+    if (msg.cancelled) return;
+    if (msg.error) {
+      fileError(msg.error);
+      return;
+    }
+    const count = msg.xy.length / 2;
+    if (count > FILE_MAX) {
+      fileError(`${file.name} has ${fmtInt(count)} points; this page draws at most ${fmtInt(FILE_MAX)} (the hullkit command and hullkit.delaunay take any number).`);
+      return;
+    }
+    fileInput = { name: file.name, xy: msg.xy };
+    const option = ui.set.querySelector('option[value="file"]');
+    option.hidden = false;
+    option.textContent = `from ${file.name}`;
+    ui.set.value = 'file';
+    ui.n.value = String(count);
+    added = [];
+    updateHint();
+    framed = false;
+    compute({ force: true });
+  }
+
+  /** A file that cannot be read: say why; the drawing stays as it was. */
+  function fileError(message) {
+    showError(ui.error, message, false);
+    ui.status.textContent = '';
+    setState('error');
+  }
+
+  function cancel() {
+    if (pendingKey === null) return;
+    worker.restart(); // a wasm call cannot be interrupted
+    cancelledKey = pendingKey;
+    pendingKey = null;
+    requestSeq++;
+    ui.status.textContent = 'Cancelled; the worker was restarted.';
+    setState('cancelled');
+  }
+  let cancelledKey = null;
+
   ui.set.addEventListener('change', () => {
     if (ui.set.value === 'figure1') ui.n.value = String(FIGURE1_N);
     added = [];
@@ -703,5 +809,9 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     },
     applyUrl,
     urlParams,
+    openFile,
+    cancel,
+    fileHint: '2D points (x y per line, rbox "2 n", or OBJ/OFF/PLY/STL vertices: x and y)',
+    busyLabel: () => 'Triangulating',
   };
 }

@@ -13,16 +13,23 @@ import { gridSide, pointCount } from '../distributions.js';
 import { discTexture, clearGroup } from '../app/stage.js';
 import { fmtInt, fmtReal, fmtMs, fmtDuration } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
+import { readInWorker } from '../app/panel.js';
+import { compact, objText, offText, stlBytes, download } from '../app/export.js';
+import { createGiftwrapStepper, STEP_MAX } from './giftwrap-stepper.js';
 
 const N_MIN = 4;
-const N_MAX = 100_000;
+const N_MAX = 1_000_000;
+// Interior points beyond this many are drawn sparsely (every k-th): they only give the hull its
+// context, and a million points would make orbiting stutter on a software renderer.
+const MAX_INTERIOR_DRAWN = 150_000;
+const DENSE_TRIANGLES = 60_000; // more hull triangles than this: front faces only, no wireframe
 const N_DEFAULT = 2000;
 const SEED_DEFAULT = 1;
 const DIST_DEFAULT = 'ball';
 const SPHERE_WARN_N = 5000; // gift wrapping points on a sphere is O(n²): every point is a hull vertex
 const WARN_MS = 10_000; // a gift wrapping run estimated longer than this asks for confirmation
 const DEFAULT_ALGORITHM = 'quickhull'; // the library's default (it lists it first)
-const DISTRIBUTIONS = ['cube', 'ball', 'sphere', 'plane', 'near-coplanar', 'grid', 'rotated-grid', 'custom'];
+const DISTRIBUTIONS = ['cube', 'ball', 'sphere', 'plane', 'near-coplanar', 'grid', 'rotated-grid', 'custom', 'file'];
 const GRIDS = ['grid', 'rotated-grid'];
 const CUSTOM_SAMPLE = `# x y z per point; '#' comments
 # unit cube + centre
@@ -137,6 +144,9 @@ export function createHullView({ stage, worker, setState }) {
     const algorithm = ui.algorithm.value || undefined;
     const epsilon = epsilonApplies() && ui.epsilon.value === 'seed' ? 'seed' : 'exact';
     const mergeCoplanar = ui.merge.checked;
+    if (distribution === 'file' && fileInput) {
+      return { distribution, n: fileInput.xyz.length / 3, seed: 0, algorithm, epsilon, mergeCoplanar, file: fileInput.name };
+    }
     if (distribution === 'custom') {
       const text = ui.customPoints.value;
       return { distribution, n: roughCustomCount(text), seed: 0, algorithm, epsilon, mergeCoplanar, text };
@@ -145,8 +155,8 @@ export function createHullView({ stage, worker, setState }) {
   }
 
   function writeParams({ distribution, n, seed }) {
-    ui.distribution.value = distribution;
-    if (distribution !== 'custom') {
+    ui.distribution.value = distribution === 'file' && !fileInput ? DIST_DEFAULT : distribution;
+    if (distribution !== 'custom' && distribution !== 'file') {
       ui.n.value = String(n);
       ui.nSlider.value = String(nToSlider(n));
       ui.seed.value = String(seed);
@@ -157,7 +167,7 @@ export function createHullView({ stage, worker, setState }) {
   function updateSourceFields() {
     const custom = ui.distribution.value === 'custom';
     ui.customField.hidden = !custom;
-    ui.generatedFields.hidden = custom;
+    ui.generatedFields.hidden = custom || ui.distribution.value === 'file';
     updateNHint();
   }
 
@@ -186,7 +196,8 @@ export function createHullView({ stage, worker, setState }) {
   let preferredAlgorithm = null; // from the URL, applied once the worker lists the algorithms
 
   function paramsFromUrl(q) {
-    const distribution = DISTRIBUTIONS.includes(q.get('dist')) ? q.get('dist') : DIST_DEFAULT;
+    // A file's points cannot be put in a link: such URLs show the default points.
+    const distribution = DISTRIBUTIONS.includes(q.get('dist')) && q.get('dist') !== 'file' ? q.get('dist') : DIST_DEFAULT;
     const n = q.has('n') ? parseN(q.get('n')) : N_DEFAULT;
     const seed = q.has('seed') ? parseSeed(q.get('seed')) : SEED_DEFAULT;
     preferredAlgorithm = q.get('algo');
@@ -198,6 +209,7 @@ export function createHullView({ stage, worker, setState }) {
   /** The URL parameters that reproduce `params`. */
   function urlParamsOf({ distribution, n, seed, algorithm, epsilon, mergeCoplanar }) {
     const q = { dist: distribution };
+    if (distribution === 'file') return { dist: DIST_DEFAULT }; // not reproducible by a link
     if (distribution !== 'custom') {
       q.n = n;
       q.seed = seed;
@@ -210,10 +222,11 @@ export function createHullView({ stage, worker, setState }) {
 
   /** A new history entry for each run after the first (back/forward step through them). */
   function paramsToUrl(params) {
+    if (params.distribution === 'file') return; // the URL keeps the last reproducible state
     if (active) writeUrl('hull', urlParamsOf(params), { push: runCount > 0 || lastFailed });
   }
 
-  const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.algorithm}|${p.epsilon}|${p.mergeCoplanar}|${p.text ?? ''}`;
+  const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.algorithm}|${p.epsilon}|${p.mergeCoplanar}|${p.text ?? ''}|${p.file ?? ''}`;
 
   // ---------------------------------------------------------------- cost estimate
 
@@ -243,7 +256,7 @@ export function createHullView({ stage, worker, setState }) {
   }
 
   /** Points the run will hash (grids round n to a cube number). */
-  const inputSize = ({ distribution, n }) => (distribution === 'custom' ? n : pointCount(distribution, n));
+  const inputSize = ({ distribution, n }) => (distribution === 'custom' || distribution === 'file' ? n : pointCount(distribution, n));
 
   function estimateMs(params) {
     const key = costKey(params.algorithm);
@@ -315,6 +328,11 @@ export function createHullView({ stage, worker, setState }) {
   const layers = { faces: [], edges: [], points: [] };
   let viewRadius = 1;
   let framedOnce = false;
+  let interiorStride = 1; // the last drawing shows every interiorStride-th interior point
+  let dense = false; // the last hull was drawn without back faces and wireframe
+  let interiorTotal = 0;
+  let fileInput = null; // {name, xyz}: the points of the last file opened
+  let lastHull = null; // {xyz, triangles, dimension, name}: what the export buttons write
 
   function clearContent() {
     clearGroup(content);
@@ -386,10 +404,20 @@ export function createHullView({ stage, worker, setState }) {
     const isHull = new Uint8Array(n);
     if (vertices) for (let i = 0; i < vertices.length; i++) isHull[vertices[i]] = 1;
     if (dropped) for (let i = 0; i < dropped.length; i++) isHull[dropped[i]] = 1;
-    const interior = [];
+    let interior = new Uint32Array(n);
+    let interiorCount = 0;
     for (let i = 0; i < n; i++) {
       // Rejected input may hold NaN / infinite coordinates: leave those out.
-      if (!isHull[i] && Number.isFinite(positions[3 * i] + positions[3 * i + 1] + positions[3 * i + 2])) interior.push(i);
+      if (!isHull[i] && Number.isFinite(positions[3 * i] + positions[3 * i + 1] + positions[3 * i + 2])) interior[interiorCount++] = i;
+    }
+    interiorStride = Math.max(1, Math.ceil(interiorCount / MAX_INTERIOR_DRAWN));
+    interiorTotal = interiorCount;
+    if (interiorStride > 1) {
+      const kept = new Uint32Array(Math.ceil(interiorCount / interiorStride));
+      for (let k = 0; k < kept.length; k++) kept[k] = interior[k * interiorStride];
+      interior = kept;
+    } else {
+      interior = interior.subarray(0, interiorCount);
     }
 
     materials.point.size = n <= 200 ? 5 : n <= 5000 ? 3 : n <= 30000 ? 2 : 1.5;
@@ -405,14 +433,17 @@ export function createHullView({ stage, worker, setState }) {
       const shared = new THREE.BufferAttribute(positions, 3);
       const vertGeom = pointsGeometry(positions, vertices);
       addObject(new THREE.Points(vertGeom, materials.vertex), 'points', 0);
+      // A very dense hull (points on a sphere) is drawn lighter so that orbiting stays smooth: its
+      // front faces only, no wireframe (it would be a solid sheet of lines anyway).
+      dense = triangles !== null && triangles.length / 3 > DENSE_TRIANGLES;
       if (triangles && triangles.length) {
         const faceGeom = new THREE.BufferGeometry();
         faceGeom.setAttribute('position', shared);
         faceGeom.setIndex(new THREE.BufferAttribute(triangles, 1));
-        addObject(new THREE.Mesh(faceGeom, materials.faceBack), 'faces', 1);
+        if (!dense) addObject(new THREE.Mesh(faceGeom, materials.faceBack), 'faces', 1);
         addObject(new THREE.Mesh(faceGeom, materials.faceFront), 'faces', 3);
       }
-      if (edges && edges.length) {
+      if (edges && edges.length && !dense) {
         const edgeGeom = new THREE.BufferGeometry();
         edgeGeom.setAttribute('position', shared);
         edgeGeom.setIndex(new THREE.BufferAttribute(edges, 1));
@@ -497,7 +528,9 @@ export function createHullView({ stage, worker, setState }) {
     updateProgress();
     job.timer = setInterval(updateProgress, 200);
     paramsToUrl(params);
-    worker.request({ type: 'compute', ...params }).then(
+    const request = { type: 'compute', ...params };
+    if (params.distribution === 'file') request.xyz = fileInput.xyz.slice();
+    worker.request(request).then(
       (msg) => { if (job === current) onAnswer(msg); },
       (err) => {
         if (job !== current || err.cancelled) return; // cancelJob has said so already
@@ -507,8 +540,9 @@ export function createHullView({ stage, worker, setState }) {
     );
   }
 
-  function describeInput({ distribution, n }) {
+  function describeInput({ distribution, n, file }) {
     if (distribution === 'custom') return 'the pasted points';
+    if (distribution === 'file') return `${fmtInt(n)} points from ${file}`;
     if (GRIDS.includes(distribution)) {
       const k = gridSide(n);
       return `${fmtInt(k ** 3)} points: ${labelOf(distribution)} ${k}×${k}×${k}`;
@@ -644,8 +678,11 @@ export function createHullView({ stage, worker, setState }) {
     ui.stat.ms.title = `hullkit.hull() inside the worker; points generated in ${fmtMs(msg.genMs)}, worker total ${fmtMs(msg.workerMs)}`;
     ui.stat.rtt.title = 'from posting the request to receiving the result (generation, hull, edges, transfer)';
     ui.stat.draw.title = 'building the three.js geometry and the first render on the main thread';
-    const seedNote = params.distribution === 'custom' || params.distribution === 'grid' ? '' : ` (seed ${params.seed})`;
-    let status = `Hull of ${params.distribution === 'custom' ? `${fmtInt(msg.n)} pasted points` : describeInput(params)}${seedNote}.`;
+    const seedNote = ['custom', 'grid', 'file'].includes(params.distribution) ? '' : ` (seed ${params.seed})`;
+    const fromFile = params.distribution === 'file';
+    let status = `Hull of ${params.distribution === 'custom' ? `${fmtInt(msg.n)} pasted points` : describeInput(params)}${fromFile ? '' : seedNote}.`;
+    if (interiorStride > 1) status += ` Drawing every ${fmtInt(interiorStride)}th of the ${fmtInt(interiorTotal)} interior points.`;
+    if (dense) status += ' So many faces: drawn without the wireframe and back faces, so that orbiting stays smooth.';
     if (DIMENSION_NOTES[msg.dimension]) status += ` ${DIMENSION_NOTES[msg.dimension](msg)}`;
     if (merged && msg.dimension === 3) {
       const sizes = msg.faceSizes ?? {};
@@ -659,12 +696,22 @@ export function createHullView({ stage, worker, setState }) {
     ui.status.textContent = status;
     showComparison(comparison, { vertices, faces, volume: msg.volume }, merged);
 
+    lastHull = { xyz: msg.xyz, triangles: msg.triangles, dimension: msg.dimension, name: exportName(params) };
+    setExportEnabled(msg.triangles.length > 0);
+    stepper.offer({
+      coords: msg.xyz, n: msg.n, eligible: msg.dimension === 3,
+      why: msg.dimension === 3 ? `Available for at most ${STEP_MAX} points (set n to ${STEP_MAX} or fewer).` : 'Available for three-dimensional hulls.',
+    });
     window.hullkitStats = {
       n: msg.n, vertices, faces, edges, triangles: msg.triangles.length / 3, merged,
+      interiorStride,
       volume: msg.volume, area: msg.area, dimension: msg.dimension,
       ms: msg.hullMs, roundTripMs, distribution: params.distribution, seed: params.seed,
       algorithm: params.algorithm ?? null, epsilon: params.epsilon ?? 'exact', run: runCount,
     };
+    // The triangles too, on demand (non-enumerable: JSON of the hook stays short).
+    const drawnTriangles = msg.triangles;
+    Object.defineProperty(window.hullkitStats, 'triangleList', { get: () => Array.from(drawnTriangles) });
     window.hullkitEpsilon = comparison ? publicComparison(comparison, { vertices, faces, volume: msg.volume }) : null;
     window.hullkitError = null;
     lastFailed = false;
@@ -730,6 +777,9 @@ export function createHullView({ stage, worker, setState }) {
 
   function showFailure(message, msg, params = null) {
     const comparison = msg?.comparison ?? null;
+    lastHull = null;
+    setExportEnabled(false);
+    stepper.offer({ why: 'Compute a hull first.' });
     if (msg && msg.xyz && msg.xyz.length % 3 === 0) {
       drawScene({ xyz: msg.xyz }); // show the offending input
       setStats({ n: fmtInt(msg.n) });
@@ -826,6 +876,69 @@ export function createHullView({ stage, worker, setState }) {
     requestCompute({ force: true });
   });
   ui.cancel.addEventListener('click', cancelJob);
+
+  // ---------------------------------------------------------------- files in and out
+
+  const fileOption = ui.distribution.querySelector('option[value="file"]');
+
+  /** Reads `file` with the C++ point readers (in the worker) and hulls its points. */
+  async function openFile(file) {
+    if (job) cancelJob();
+    hideWarning();
+    hideError();
+    ui.status.textContent = `Reading ${file.name}…`;
+    const msg = await readInWorker(worker, file, 'points');
+    if (msg.cancelled) return;
+    if (msg.error) {
+      showFileError(msg.error);
+      return;
+    }
+    fileInput = { name: file.name, xyz: msg.xyz };
+    fileOption.hidden = false;
+    fileOption.textContent = `from ${file.name}`;
+    ui.distribution.value = 'file';
+    updateSourceFields();
+    requestCompute();
+  }
+
+  /** A file that cannot be read: say why; the drawing and the inputs stay as they were. */
+  function showFileError(message) {
+    ui.error.textContent = message;
+    ui.error.hidden = false;
+    ui.status.textContent = '';
+    window.hullkitError = message;
+    setState('error');
+  }
+
+  const exportButtons = [...document.querySelectorAll('[data-export]')];
+  function setExportEnabled(on) {
+    for (const b of exportButtons) b.disabled = !on;
+  }
+  function exportName(params) {
+    if (params.distribution === 'file') return `${params.file.replace(/\.[^.]*$/, '')}-hull`;
+    if (params.distribution === 'custom') return 'pasted-hull';
+    return `hull-${params.distribution}-${params.n}-seed${params.seed}`;
+  }
+  for (const button of exportButtons) {
+    button.addEventListener('click', () => {
+      if (!lastHull) return;
+      const mesh = compact(lastHull.xyz, lastHull.triangles, 3);
+      const note = `convex hull by hullkit: ${mesh.positions.length / 3} vertices, ${mesh.triangles.length / 3} triangles, outward`;
+      const format = button.dataset.export;
+      if (format === 'obj') download(`${lastHull.name}.obj`, objText(mesh, note), 'model/obj');
+      else if (format === 'off') download(`${lastHull.name}.off`, offText(mesh, note), 'text/plain');
+      else download(`${lastHull.name}.stl`, stlBytes(mesh, note), 'model/stl');
+    });
+  }
+
+  // ---------------------------------------------------------------- gift wrapping, step by step
+
+  const stepper = createGiftwrapStepper({
+    worker, requestRender,
+    targets: (xyz) => [{ scene, positions: centredPositions(xyz).positions }],
+    request: (xyz, scan) => ({ type: 'trace', xyz, scan }),
+    hideResult: (hidden) => { content.visible = !hidden; requestRender(); },
+  });
   ui.nSlider.addEventListener('input', () => {
     ui.n.value = String(sliderToN(Number(ui.nSlider.value)));
     onParamsEdited();
@@ -940,6 +1053,13 @@ export function createHullView({ stage, worker, setState }) {
     /** The view's options for the URL when it is switched to. */
     urlParams() {
       return urlParamsOf(readParams());
+    },
+    openFile,
+    fileHint: 'points from OBJ, OFF, PLY, STL or x y z text',
+    busyLabel: () => (job ? `Computing the hull of ${describeInput(job.params)}` : 'Working'),
+    cancel() {
+      if (job) cancelJob();
+      else stepper.cancel();
     },
   };
 }

@@ -12,7 +12,8 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { clearGroup, zUpCamera } from '../app/stage.js';
 import { fmtMs } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
-import { showError } from '../app/panel.js';
+import { showError, readInWorker } from '../app/panel.js';
+import { download } from '../app/export.js';
 import { PRESETS, presetScene, partVertices, partTriangles } from '../route-scenes.js';
 
 const COLORS = {
@@ -33,7 +34,7 @@ const SAMPLES_MAX = 200;
 export function createRouteView({ stage, worker, setState, viewport }) {
   const $ = (id) => document.getElementById(id);
   const ui = {
-    form: $('rt-controls'), preset: $('rt-preset'), margin: $('rt-margin'), samples: $('rt-samples'),
+    form: $('rt-controls'), preset: $('rt-preset'), margin: $('rt-margin'), samples: $('rt-samples'), fileRole: $('rt-file-role'),
     showSamples: $('rt-show-samples'), add: $('rt-add'), remove: $('rt-remove'), reset: $('rt-reset'),
     status: $('rt-status'), error: $('rt-error'), legs: $('rt-legs').querySelector('tbody'),
     stat: { verdict: $('rt-stat-verdict'), clearance: $('rt-stat-clearance'), ms: $('rt-stat-ms') },
@@ -277,6 +278,7 @@ export function createRouteView({ stage, worker, setState, viewport }) {
 
   /** Sends the route to the worker; while an answer is pending, only the latest route follows. */
   function check() {
+    cancelled = false;
     if (!worker.ready) {
       if (worker.loadError) fail(`Cannot check the route: ${worker.loadError}`);
       else ui.status.textContent = 'Loading the WebAssembly module…';
@@ -356,11 +358,13 @@ export function createRouteView({ stage, worker, setState, viewport }) {
     ui.stat.ms.textContent = fmtMs(1000 * report.seconds);
     ui.stat.ms.title = `all legs checked in ${fmtMs(1000 * report.seconds)} inside the worker; scene prepared in ${fmtMs(1000 * (report.build_seconds ?? 0))}; round trip ${fmtMs(roundTripMs)}`;
     const missed = hits - report.legs.filter((l) => l.status !== 'clear' && l.sampled?.hit).length;
-    let status = `${PRESETS[preset].note} ${report.legs.length} legs: ${hits ? `${hits} hit${hits === 1 ? '' : 's'}` : 'all clear'}` +
+    let status = `${fileNote}${PRESETS[preset].note} ${report.legs.length} legs: ${hits ? `${hits} hit${hits === 1 ? '' : 's'}` : 'all clear'}` +
       ` (margin ${currentMargin()}).`;
     status += ` ${samples}-step sampling finds ${sampledHits} of ${hits}${missed > 0 ? `: it misses ${missed}` : ''}.`;
     ui.status.textContent = status;
+    exportButtons.report.disabled = false;
     window.hullkitRoute = {
+      obstacles: sceneJson.obstacles.length, parts: sceneJson.traverse.parts.length,
       preset, clear: report.clear, samples, overlay: ui.showSamples.checked, waypoints: route.length, run: runCount,
       legs: report.legs.map((l) => ({ status: l.status, fraction: l.fraction ?? null, obstacle: l.obstacle ?? null, clearance: l.clearance ?? null, sampledHit: l.sampled ? l.sampled.hit : null })),
     };
@@ -369,6 +373,7 @@ export function createRouteView({ stage, worker, setState, viewport }) {
   }
 
   function fail(message, logged = true) {
+    exportButtons.report.disabled = true;
     showError(ui.error, message, logged);
     setState('error');
   }
@@ -478,6 +483,7 @@ export function createRouteView({ stage, worker, setState, viewport }) {
     preset = PRESETS[name] ? name : 'doorway';
     ui.preset.value = preset;
     sceneJson = presetScene(preset);
+    fileNote = '';
     ui.margin.value = String(sceneJson.margin);
     route = waypoints ?? sceneJson.route.map((p) => [...p]);
     selected = -1;
@@ -546,7 +552,68 @@ export function createRouteView({ stage, worker, setState, viewport }) {
     return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
   };
 
-  worker.on('ready', () => { if (active) check(); });
+  // ------------------------------------------------------------ files in and out
+
+  let fileNote = ''; // what opened files changed in the preset, for the status line
+  let cancelled = false; // Cancel restarted the worker: do not re-run the check when it is ready
+  const exportButtons = {
+    report: document.querySelector('[data-rt-export="report"]'),
+    scene: document.querySelector('[data-rt-export="scene"]'),
+  };
+  exportButtons.report.addEventListener('click', () => {
+    if (report) download(`route-report-${preset}.json`, `${JSON.stringify(report, null, 2)}\n`, 'application/json');
+  });
+  exportButtons.scene.addEventListener('click', () => {
+    const out = { ...sceneJson, route: route.map((p) => [...p]), margin: currentMargin() };
+    download(`route-scene-${preset}.json`, `${JSON.stringify(out)}\n`, 'application/json');
+  });
+
+  /** Reads a mesh file with the C++ mesh readers (in the worker): an obstacle or the traverse. */
+  async function openFile(file) {
+    ui.error.hidden = true;
+    ui.status.textContent = `Reading ${file.name}…`;
+    const msg = await readInWorker(worker, file, 'mesh');
+    if (msg.cancelled) return;
+    if (msg.error) {
+      fail(msg.error, false);
+      return;
+    }
+    const vertices = [];
+    for (let i = 0; i < msg.vertices.length; i += 3) vertices.push([msg.vertices[i], msg.vertices[i + 1], msg.vertices[i + 2]]);
+    const triangles = [];
+    for (let t = 0; t < msg.triangles.length; t += 3) triangles.push([msg.triangles[t], msg.triangles[t + 1], msg.triangles[t + 2]]);
+    if (!triangles.length) {
+      fail(`Cannot use ${file.name}: it has no triangles (a traverse or an obstacle is a triangle mesh).`, false);
+      return;
+    }
+    const part = { name: file.name, vertices, triangles };
+    const role = ui.fileRole.value;
+    if (role === 'traverse') {
+      sceneJson = { ...sceneJson, traverse: { parts: [part] } };
+      fileNote += `Traverse: ${file.name} (${triangles.length} triangles). `;
+    } else {
+      sceneJson = { ...sceneJson, obstacles: [...sceneJson.obstacles, part] };
+      fileNote += `Obstacle added: ${file.name} (${triangles.length} triangles). `;
+    }
+    report = null;
+    buildStatic();
+    drawRoute();
+    drawReport();
+    frame();
+    check();
+  }
+
+  function cancel() {
+    if (!inFlight) return;
+    worker.restart(); // a wasm call cannot be interrupted
+    inFlight = false;
+    dirty = false;
+    cancelled = true;
+    ui.status.textContent = 'Cancelled; the worker was restarted. Move a waypoint to check again.';
+    setState('cancelled');
+  }
+
+  worker.on('ready', () => { if (active && !cancelled) check(); });
   loadPreset('doorway');
   worker.on('load-error', () => { if (active) check(); });
 
@@ -566,5 +633,9 @@ export function createRouteView({ stage, worker, setState, viewport }) {
     },
     applyUrl,
     urlParams,
+    openFile,
+    cancel,
+    fileHint: 'a mesh (OBJ, OFF, PLY, STL) as an obstacle or the traverse',
+    busyLabel: () => 'Checking the route',
   };
 }

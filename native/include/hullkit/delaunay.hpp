@@ -119,6 +119,7 @@ private:
     PointSpan2 points_;
     const Delaunay& triangulation_;
     std::vector<std::int32_t> outgoing_;  ///< per point: a half-edge leaving it, -1 if none
+    int exponent_ = 0;  ///< the power of two delaunay() scaled the points by (distances compared so)
     std::int64_t last_ = -1;
 };
 

@@ -63,7 +63,9 @@ struct Points2Result {
 ///     separated by whitespace.
 /// Blank lines and '#' comments as parse_points; a coordinate that is not a finite number is an
 /// error naming its line and point. With `point_lines`, also the 1-based line number of each
-/// point (for later messages about a point).
+/// point (for later messages about a point). Binary data, PLY, STL (ASCII or binary), OFF and OBJ
+/// are refused with "not a point file: ..." saying which (read meshes with read_mesh and take
+/// their vertices instead).
 Points2Result parse_points_2d(const std::string& text, const std::string& source,
                               std::vector<std::size_t>* point_lines = nullptr);
 

@@ -160,6 +160,77 @@ int incircle_traced(double ax, double ay, double bx, double by, double cx, doubl
 int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                    double dy);
 
+// ---- Inlinable fast paths (same results as orient2d / incircle) ----
+// Stage A (the floating-point filter with Shewchuk's error bound, the same bound as in
+// predicates.cpp) in the header, so that hot loops can inline it; when the filter cannot decide,
+// the exact stages B-D run out of line. The sign is always the exact sign, like the public
+// functions. Clang contracts a*b+c into fma within one expression by default; the bounds assume
+// separately rounded operations, hence the pragma (GCC gets -ffp-contract=off from CMakeLists.txt).
+
+/// Stage A error bound factors (multiples of the permanent); see predicates.cpp.
+inline constexpr double kOrient2dFilterBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+inline constexpr double kIncircleFilterBound = (10.0 + 96.0 * 0x1p-53) * 0x1p-53;
+
+/// Stages B-D of orient2d / incircle, given the permanent computed by stage A (out of line).
+int orient2d_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
+                         double detsum);
+int incircle_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
+                         double dx, double dy, double permanent);
+
+/// orient2d with stage A inline.
+inline int orient2d_inline(double ax, double ay, double bx, double by, double cx, double cy) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double left = (ax - cx) * (by - cy);
+    const double right = (ay - cy) * (bx - cx);
+    const double det = left - right;
+    const double detsum = (left < 0 ? -left : left) + (right < 0 ? -right : right);
+    const double errbound = kOrient2dFilterBound * detsum;
+    if (det > errbound) return 1;
+    if (-det > errbound) return -1;
+    return orient2d_adapt_entry(ax, ay, bx, by, cx, cy, detsum);
+}
+
+/// incircle's stage A: the determinant in floating point and its permanent (the bound on its
+/// rounding error is kIncircleFilterBound times the permanent). Shared with predicates.cpp.
+struct IncircleStageA {
+    double det;
+    double permanent;
+};
+inline IncircleStageA incircle_stage_a(double ax, double ay, double bx, double by, double cx, double cy,
+                                       double dx, double dy) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double adx = ax - dx, ady = ay - dy;
+    const double bdx = bx - dx, bdy = by - dy;
+    const double cdx = cx - dx, cdy = cy - dy;
+    const double bdx_cdy = bdx * cdy, cdx_bdy = cdx * bdy;
+    const double cdx_ady = cdx * ady, adx_cdy = adx * cdy;
+    const double adx_bdy = adx * bdy, bdx_ady = bdx * ady;
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det = alift * (bdx_cdy - cdx_bdy) + blift * (cdx_ady - adx_cdy) +
+                       clift * (adx_bdy - bdx_ady);
+    const double permanent =
+        ((bdx_cdy < 0 ? -bdx_cdy : bdx_cdy) + (cdx_bdy < 0 ? -cdx_bdy : cdx_bdy)) * alift +
+        ((cdx_ady < 0 ? -cdx_ady : cdx_ady) + (adx_cdy < 0 ? -adx_cdy : adx_cdy)) * blift +
+        ((adx_bdy < 0 ? -adx_bdy : adx_bdy) + (bdx_ady < 0 ? -bdx_ady : bdx_ady)) * clift;
+    return {det, permanent};
+}
+
+/// incircle with stage A inline.
+inline int incircle_inline(double ax, double ay, double bx, double by, double cx, double cy,
+                           double dx, double dy) {
+    const IncircleStageA a = incircle_stage_a(ax, ay, bx, by, cx, cy, dx, dy);
+    const double errbound = kIncircleFilterBound * a.permanent;
+    if (a.det > errbound) return 1;
+    if (-a.det > errbound) return -1;
+    return incircle_adapt_entry(ax, ay, bx, by, cx, cy, dx, dy, a.permanent);
+}
+
 }  // namespace detail
 
 }  // namespace hullkit

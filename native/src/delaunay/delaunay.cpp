@@ -76,20 +76,40 @@ Delaunay check_input(PointSpan2 points, Extent* extent) {
     return Delaunay{};
 }
 
-/// Index along a Hilbert curve on a 2^16 x 2^16 grid.
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-    std::uint32_t d = 0;
-    for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
-        const std::uint32_t rx = (x & s) ? 1 : 0;
-        const std::uint32_t ry = (y & s) ? 1 : 0;
-        d += s * s * ((3 * rx) ^ ry);
-        if (ry == 0) {  // rotate the quadrant so that the curve continues (only lower bits matter)
-            if (rx == 1) {
-                x = ~x;
-                y = ~y;
+/// Index along a Hilbert curve on a 2^16 x 2^16 grid, 4 levels per step from a table. The curve:
+/// at each level (from the top bit), with rx, ry the bits of the current (transformed) x and y, the
+/// digit is (3 * rx) ^ ry, and when ry == 0 the quadrant is rotated for the levels below (both
+/// coordinates complemented when rx == 1, then swapped). The transform so far is one of 4 (swap or
+/// not, complement or not; they commute): the table's state. Checked against the bit-by-bit loop
+/// (the curve fixes the canonical output order, so it must not change).
+struct HilbertTable {
+    std::uint16_t entry[4 * 256];  ///< [state * 256 + (4 bits of x) << 4 | (4 of y)]: digits << 2 | next state
+};
+constexpr HilbertTable make_hilbert_table() {
+    HilbertTable table{};
+    for (std::uint32_t state = 0; state < 4; ++state) {
+        for (std::uint32_t bits = 0; bits < 256; ++bits) {
+            std::uint32_t swap = state & 1, complement = state >> 1, digits = 0;
+            for (int level = 3; level >= 0; --level) {
+                const std::uint32_t bx = (bits >> (4 + level)) & 1, by = (bits >> level) & 1;
+                const std::uint32_t rx = (swap ? by : bx) ^ complement;
+                const std::uint32_t ry = (swap ? bx : by) ^ complement;
+                digits = (digits << 2) | ((3 * rx) ^ ry);
+                if (ry == 0) complement ^= rx, swap ^= 1;
             }
-            std::swap(x, y);
+            table.entry[state * 256 + bits] = static_cast<std::uint16_t>(digits << 2 | complement << 1 | swap);
         }
+    }
+    return table;
+}
+constexpr HilbertTable kHilbertTable = make_hilbert_table();
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    std::uint32_t d = 0, state = 0;
+    for (int shift = 12; shift >= 0; shift -= 4) {
+        const std::uint32_t bits = ((x >> shift) & 15u) << 4 | ((y >> shift) & 15u);
+        const std::uint32_t e = kHilbertTable.entry[state * 256 + bits];
+        d = d << 8 | e >> 2;
+        state = e & 3u;
     }
     return d;
 }
@@ -105,8 +125,12 @@ std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const Extent& box) {
     std::vector<std::uint64_t> keyed(n), swap(n);
     for (std::size_t i = 0; i < n; ++i) {
         double fx = (p[i][0] - box.xmin) * sx, fy = (p[i][1] - box.ymin) * sy;
-        fx = std::min(std::max(fx, 0.0), 65535.0);  // also tames an infinite width (NaN is excluded)
-        fy = std::min(std::max(fy, 0.0), 65535.0);
+        // A box narrower than 65535 / DBL_MAX makes the scale infinite (0 * inf at the low corner),
+        // one wider than DBL_MAX the width infinite and the scale 0 (inf * 0 at the far side): NaN
+        // must not reach the integer cast (found by fuzz_delaunay). NaN and negatives go to 0; the
+        // order only affects speed.
+        fx = fx > 0.0 ? std::min(fx, 65535.0) : 0.0;
+        fy = fy > 0.0 ? std::min(fy, 65535.0) : 0.0;
         const std::uint32_t key = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
         keyed[i] = (std::uint64_t{key} << 32) | i;
     }
@@ -308,6 +332,101 @@ void write_canonical(const std::vector<std::uint32_t>& local, const std::vector<
     }
 }
 
+/// The fast path of the incremental algorithm, straight from its working mesh: when no interior
+/// edge of the mesh has an exactly cocircular neighbour (incircle != 0 across every interior
+/// edge), every Delaunay face is a triangle and the mesh's finite triangles are the faces. Then
+/// writes the same arrays as fan_faces + write_canonical would (each triangle from its lowest
+/// original index, clockwise, sorted by first then second local corner) and returns true.
+/// Returns false, writing nothing, as soon as a cocircular edge is found: the caller then merges
+/// the faces and takes the general path.
+bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
+                          const std::vector<std::uint32_t>& original, Delaunay& out) {
+    const std::uint32_t* vertex = mesh.vertex.data();
+    const std::uint32_t* twin = mesh.twin.data();
+    const std::uint32_t ghost = mesh.ghost;
+    const std::size_t count = mesh.vertex.size() / 3;  // ghosts included
+    const std::size_t m = original.size();
+    constexpr std::uint8_t kGhostTriangle = 3;
+    // Pass 1: ghosts, the cocircularity check, the lowest corner, and the bucket sizes.
+    std::vector<std::uint8_t> low_of(count);
+    std::vector<std::uint32_t> start(m + 1, 0);
+    std::size_t finite = 0;
+    for (std::size_t t = 0; t < count; ++t) {
+        const std::uint32_t* v = vertex + 3 * t;
+        if (v[0] == ghost || v[1] == ghost || v[2] == ghost) {
+            low_of[t] = kGhostTriangle;
+            continue;
+        }
+        const double* a = p[v[0]];
+        const double* b = p[v[1]];
+        const double* c = p[v[2]];
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::uint32_t e = static_cast<std::uint32_t>(3 * t) + k;
+            const std::uint32_t f = twin[e];
+            if (f < e) continue;  // each interior edge once (a hull edge's twin is in a ghost)
+            const std::uint32_t opposite = vertex[f % 3 == 0 ? f + 2 : f - 1];  // f's corner off the edge
+            if (opposite == ghost) continue;
+            const double* d = p[opposite];
+            if (detail::incircle_inline(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0) return false;
+        }
+        const std::uint32_t o0 = original[v[0]], o1 = original[v[1]], o2 = original[v[2]];
+        const std::uint8_t low = o0 < o1 ? (o0 < o2 ? 0 : 2) : (o1 < o2 ? 1 : 2);
+        low_of[t] = low;
+        ++start[v[low] + 1];
+        ++finite;
+    }
+    for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
+    // Pass 2: counting sort by the first output corner (the lowest), then insertion sort of each
+    // small bucket by the second output corner (corner low + 2 of the counter-clockwise triangle).
+    std::vector<std::uint32_t> slot_of(finite);  // canonical slot -> mesh triangle
+    for (std::size_t t = 0; t < count; ++t) {
+        const std::uint8_t low = low_of[t];
+        if (low == kGhostTriangle) continue;
+        slot_of[start[vertex[3 * t + low]]++] = static_cast<std::uint32_t>(t);
+    }
+    auto second = [&](std::uint32_t t) {
+        const std::uint32_t low = low_of[t];
+        return vertex[3 * t + (low == 0 ? 2 : low - 1)];
+    };
+    std::uint32_t bucket_begin = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t bucket_end = start[i];
+        for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
+            const std::uint32_t moving = slot_of[q];
+            const std::uint32_t key = second(moving);
+            std::uint32_t s = q;
+            for (; s > bucket_begin && key < second(slot_of[s - 1]); --s) slot_of[s] = slot_of[s - 1];
+            slot_of[s] = moving;
+        }
+        bucket_begin = bucket_end;
+    }
+    start = std::vector<std::uint32_t>();
+    std::vector<std::uint32_t> position(count);
+    for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
+    // Pass 3: output corner j is mesh corner (low - j) mod 3 (clockwise from the lowest); output
+    // half-edge j runs backwards along mesh half-edge (low + 2 - j) mod 3, so a mesh half-edge k of
+    // triangle h is output half-edge (low_h + 5 - k) mod 3.
+    out.triangles.resize(3 * finite);
+    out.halfedges.resize(3 * finite);
+    std::uint32_t* tri_out = out.triangles.data();
+    std::int32_t* half_out = out.halfedges.data();
+    for (std::size_t q = 0; q < finite; ++q) {
+        const std::uint32_t t = slot_of[q];
+        const std::uint32_t low = low_of[t];
+        const std::uint32_t* v = vertex + 3 * t;
+        for (std::uint32_t j = 0; j < 3; ++j) {
+            tri_out[3 * q + j] = original[v[(low + 3 - j) % 3]];
+            const std::uint32_t g = twin[3 * t + (low + 2 - j) % 3];
+            const std::uint32_t h = g / 3;
+            const std::uint32_t low_h = low_of[h];
+            half_out[3 * q + j] = low_h == kGhostTriangle
+                                      ? -1
+                                      : static_cast<std::int32_t>(3 * position[h] + (low_h + 5 - g % 3) % 3);
+        }
+    }
+    return true;
+}
+
 /// The hull cycle: from the lowest hull index along the boundary half-edges.
 std::vector<std::uint32_t> hull_cycle(const std::vector<std::uint32_t>& triangles,
                                       const std::vector<std::int32_t>& halfedges) {
@@ -366,7 +485,7 @@ Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triang
         const double* b = p[triangles[3 * t + 1]];
         const double* c = p[triangles[3 * t + 2]];
         const double* d = p[opposite];
-        if (incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) != 0) continue;
+        if (detail::incircle_inline(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) != 0) continue;
         if (parent.empty()) {
             parent.resize(count);
             std::iota(parent.begin(), parent.end(), 0u);
@@ -455,8 +574,18 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
         return out;
     }
     out.dimension = 2;
-    const Faces faces = options.algorithm == DelaunayAlgorithm::Giftwrap ? delaunay_detail::giftwrap_faces(in)
-                                                                         : delaunay_detail::incremental_faces(in);
+    Faces faces;
+    if (options.algorithm == DelaunayAlgorithm::Giftwrap) {
+        faces = delaunay_detail::giftwrap_faces(in);
+    } else {
+        delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
+        if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, out)) {
+            mesh = delaunay_detail::Mesh();
+            out.hull = hull_cycle(out.triangles, out.halfedges);
+            return out;
+        }
+        faces = delaunay_detail::mesh_faces(p, std::move(mesh));
+    }
     {
         std::vector<std::int32_t> twins;
         const std::vector<std::uint32_t> local = fan_faces(faces, in.original, &twins);

@@ -32,6 +32,20 @@ struct Input {
     std::vector<std::uint32_t> original;
 };
 
+/// The incremental algorithm's working mesh: counter-clockwise triangles (3 vertices each) with
+/// their twin half-edges (twin[e] opposite half-edge of e = 3 * t + k, from corner k to k + 1),
+/// closed by "ghost" triangles on the outer side of every hull edge, which have the vertex `ghost`
+/// (the point count) as one corner. Every finite triangle is Delaunay; cocircular faces are not
+/// merged yet.
+struct Mesh {
+    std::vector<std::uint32_t> vertex;
+    std::vector<std::uint32_t> twin;
+    std::uint32_t ghost = 0;
+};
+Mesh incremental_mesh(const Input& input);
+/// The Delaunay faces of an incremental mesh (finite triangles, then merge_cocircular_triangles).
+Faces mesh_faces(PointSpan2 points, Mesh mesh);
+
 /// Both algorithms return the Delaunay faces: the lower faces of the lifted hull, each a maximal set
 /// of cocircular points whose circle is empty, as a counter-clockwise cycle.
 Faces incremental_faces(const Input& input);

@@ -99,24 +99,12 @@ public:
         last_ = new_[0];
     }
 
-    /// Finite triangles (counter-clockwise) with their twins (-1 across hull edges).
-    void finite(std::vector<std::uint32_t>& triangles, std::vector<std::int32_t>& twin) const {
-        const std::size_t count = vertex_.size() / 3;
-        std::vector<std::int32_t> index(count, -1);
-        std::int32_t finite_count = 0;
-        for (std::size_t t = 0; t < count; ++t)
-            if (!is_ghost(static_cast<std::uint32_t>(t))) index[t] = finite_count++;
-        triangles.resize(3 * static_cast<std::size_t>(finite_count));
-        twin.resize(triangles.size());
-        for (std::size_t t = 0; t < count; ++t) {
-            if (index[t] < 0) continue;
-            for (int k = 0; k < 3; ++k) {
-                const std::size_t e = 3 * static_cast<std::size_t>(index[t]) + k;
-                triangles[e] = vertex_[3 * t + k];
-                const std::uint32_t f = twin_[3 * t + k];
-                twin[e] = index[f / 3] < 0 ? -1 : 3 * index[f / 3] + static_cast<std::int32_t>(f % 3);
-            }
-        }
+    /// Hands over the mesh (ghost triangles included); the triangulation is left empty.
+    void release(Mesh& mesh) {
+        mesh.ghost = ghost_;
+        mesh.vertex = std::move(vertex_);
+        mesh.twin = std::move(twin_);
+        vertex_ = {}, twin_ = {}, mark_ = {}, start_of_ = {};
     }
 
 private:
@@ -195,26 +183,53 @@ private:
 
 }  // namespace
 
-Faces incremental_faces(const Input& input) {
+Mesh incremental_mesh(const Input& input) {
     const PointSpan2 p = input.points;  // already in Hilbert order: insert them as they come
     const std::uint32_t count = static_cast<std::uint32_t>(p.count);
     // The first triangle: the first two points and the first point off their line.
     std::uint32_t k = 2;
     int o = 0;
     while ((o = orient2d(p[0][0], p[0][1], p[1][0], p[1][1], p[k][0], p[k][1])) == 0) ++k;
-    Triangulation tri(p);
-    if (o > 0)
-        tri.start(0, 1, k);
-    else
-        tri.start(1, 0, k);
-    for (std::uint32_t j = 2; j < count; ++j)
-        if (j != k) tri.insert(j);
-    std::vector<std::uint32_t> triangles;
-    std::vector<std::int32_t> twin;
-    tri.finite(triangles, twin);
-    tri = Triangulation(PointSpan2());  // release the working mesh before merging
+    Mesh mesh;
+    {
+        Triangulation tri(p);
+        if (o > 0)
+            tri.start(0, 1, k);
+        else
+            tri.start(1, 0, k);
+        for (std::uint32_t j = 2; j < count; ++j)
+            if (j != k) tri.insert(j);
+        tri.release(mesh);
+    }
+    return mesh;
+}
+
+Faces mesh_faces(PointSpan2 p, Mesh mesh) {
+    // Finite triangles (counter-clockwise) with their twins (-1 across hull edges).
+    const std::size_t count = mesh.vertex.size() / 3;
+    const std::uint32_t ghost = mesh.ghost;
+    std::vector<std::int32_t> index(count, -1);
+    std::int32_t finite_count = 0;
+    for (std::size_t t = 0; t < count; ++t) {
+        const std::uint32_t* v = &mesh.vertex[3 * t];
+        if (v[0] != ghost && v[1] != ghost && v[2] != ghost) index[t] = finite_count++;
+    }
+    std::vector<std::uint32_t> triangles(3 * static_cast<std::size_t>(finite_count));
+    std::vector<std::int32_t> twin(triangles.size());
+    for (std::size_t t = 0; t < count; ++t) {
+        if (index[t] < 0) continue;
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t e = 3 * static_cast<std::size_t>(index[t]) + k;
+            triangles[e] = mesh.vertex[3 * t + k];
+            const std::uint32_t f = mesh.twin[3 * t + k];
+            twin[e] = index[f / 3] < 0 ? -1 : 3 * index[f / 3] + static_cast<std::int32_t>(f % 3);
+        }
+    }
+    mesh = Mesh();  // release the working mesh before merging
     return merge_cocircular_triangles(p, std::move(triangles), std::move(twin));
 }
+
+Faces incremental_faces(const Input& input) { return mesh_faces(input.points, incremental_mesh(input)); }
 
 }  // namespace delaunay_detail
 }  // namespace hullkit

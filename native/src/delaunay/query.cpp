@@ -2,6 +2,7 @@
 // DelaunayLocator) and Voronoi cells clipped to a rectangle (delaunay_voronoi).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hullkit/delaunay.hpp"
 #include "hullkit/predicates.hpp"
@@ -54,14 +55,38 @@ void for_each_neighbour(const Delaunay& d, const std::vector<std::int32_t>& outg
     }
 }
 
+/// The power of two delaunay() scales these points by before its exact tests (0 when they are in
+/// range): distances are compared on the same scaled coordinates, where squares neither underflow
+/// nor overflow. (Points outside every scale were refused by delaunay(); 0 then.)
+int scale_exponent(PointSpan2 p) {
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < p.count; ++i) {
+        for (int axis = 0; axis < 2; ++axis) {
+            const double m = std::fabs(p[i][axis]);
+            if (!(m <= std::numeric_limits<double>::max())) return 0;
+            largest = std::max(largest, m);
+            if (m != 0.0) smallest = std::min(smallest, m);
+        }
+    }
+    int exponent = 0;
+    if (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent)) return 0;
+    return exponent;
+}
+
 /// Greedy walk to the nearest point, then the lowest index among the exactly equidistant ones
-/// (they lie on one empty circle, so they are connected by Delaunay edges).
+/// (they lie on one empty circle, so they are connected by Delaunay edges). Coordinates are
+/// scaled by 2^exponent (exact) before each comparison.
 std::int64_t walk_to_nearest(PointSpan2 p, const Delaunay& d, const std::vector<std::int32_t>& outgoing,
-                             std::uint32_t current, double x, double y) {
+                             std::uint32_t current, double x, double y, int exponent) {
+    const auto s = [exponent](double v) { return exponent == 0 ? v : std::ldexp(v, exponent); };
+    x = s(x), y = s(y);
+    const auto compare = [&](std::uint32_t a, std::uint32_t b) {
+        return compare_distance(s(p[a][0]), s(p[a][1]), s(p[b][0]), s(p[b][1]), x, y);
+    };
     for (;;) {
         std::uint32_t best = current;
         for_each_neighbour(d, outgoing, current, [&](std::uint32_t v) {
-            const int c = compare_distance(p[v][0], p[v][1], p[best][0], p[best][1], x, y);
+            const int c = compare(v, best);
             if (c < 0 || (c == 0 && v < best)) best = v;
         });
         if (best == current) break;
@@ -71,7 +96,7 @@ std::int64_t walk_to_nearest(PointSpan2 p, const Delaunay& d, const std::vector<
     std::uint32_t lowest = current;
     for (std::size_t k = 0; k < tied.size(); ++k) {
         for_each_neighbour(d, outgoing, tied[k], [&](std::uint32_t v) {
-            if (compare_distance(p[v][0], p[v][1], p[current][0], p[current][1], x, y) != 0) return;
+            if (compare(v, current) != 0) return;
             if (std::find(tied.begin(), tied.end(), v) != tied.end()) return;
             tied.push_back(v);
             lowest = std::min(lowest, v);
@@ -89,12 +114,15 @@ std::uint32_t start_point(const Delaunay& d, std::int64_t start) {
 }  // namespace
 
 DelaunayLocator::DelaunayLocator(PointSpan2 points, const Delaunay& triangulation)
-    : points_(points), triangulation_(triangulation), outgoing_(outgoing_edges(points.count, triangulation)) {}
+    : points_(points),
+      triangulation_(triangulation),
+      outgoing_(outgoing_edges(points.count, triangulation)),
+      exponent_(scale_exponent(points)) {}
 
 std::int64_t DelaunayLocator::find(double x, double y, std::int64_t start) {
     if (triangulation_.hull.empty()) return -1;
     const std::uint32_t from = start_point(triangulation_, start >= 0 ? start : last_);
-    last_ = walk_to_nearest(points_, triangulation_, outgoing_, from, x, y);
+    last_ = walk_to_nearest(points_, triangulation_, outgoing_, from, x, y, exponent_);
     return last_;
 }
 

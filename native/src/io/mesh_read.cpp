@@ -47,7 +47,10 @@ bool parse_integer(std::string_view field, std::int64_t* out) {
     std::int64_t value = 0;
     for (; i < field.size(); ++i) {
         if (field[i] < '0' || field[i] > '9') return false;
-        value = value * 10 + (field[i] - '0');
+        const int digit = field[i] - '0';
+        // 19 digits can exceed int64: refuse rather than overflow.
+        if (value > (INT64_MAX - digit) / 10) return false;
+        value = value * 10 + digit;
     }
     *out = field[0] == '-' ? -value : value;
     return true;
@@ -55,8 +58,9 @@ bool parse_integer(std::string_view field, std::int64_t* out) {
 
 std::string quote(std::string_view field) {
     std::string text(field.substr(0, 40));
+    // Printable ASCII only: no byte of a file (control codes, invalid UTF-8) reaches a terminal.
     for (char& c : text) {
-        if (static_cast<unsigned char>(c) < 32) c = '?';
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
     }
     return "\"" + text + (field.size() > 40 ? "...\"" : "\"");
 }

@@ -45,10 +45,11 @@ std::vector<std::string_view> split_words(std::string_view line, char comment);
 
 /// The whole field as a finite double (strtod syntax, no trailing characters).
 bool parse_finite(std::string_view field, double* out);
-/// The whole field as a decimal integer (optional sign).
+/// The whole field as a decimal integer (optional sign); false if it does not fit int64.
 bool parse_integer(std::string_view field, std::int64_t* out);
 
-/// `field` in double quotes, shortened to 40 characters, for messages.
+/// `field` in double quotes, shortened to 40 characters, every byte that is not printable ASCII
+/// shown as '?', for messages.
 std::string quote(std::string_view field);
 
 /// Lower-cased extension of `source` without the dot ("" if none).

@@ -4,6 +4,7 @@
 #include "mesh_read_internal.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace hullkit {
@@ -50,6 +51,15 @@ std::size_t size_of(ScalarType type) {
 }
 
 bool is_integer(ScalarType type) { return type != ScalarType::Float32 && type != ScalarType::Float64; }
+
+/// An integral value read from the file, for messages. An ascii body may hold any magnitude
+/// ("1e300"), which a cast to an integer type cannot hold.
+std::string integer_text(double value) {
+    if (std::fabs(value) >= 1e15) return format_double(value);  // "1e+300"
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f", value);
+    return text;
+}
 
 struct Property {
     std::string name;
@@ -305,6 +315,9 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
     mesh.xyz.reserve(3 * std::min<std::uint64_t>(vertex->count, bytes.size() / 3));
     std::vector<std::uint32_t> corners;
     for (const Element& element : header.elements) {
+        // A binary row without properties holds no bytes: reading 10^18 of them would only spin
+        // in a loop. An ascii row is still a line that must be there.
+        if (element.properties.empty() && header.encoding != Encoding::Ascii) continue;
         for (std::uint64_t row = 0; row < element.count; ++row) {
             if (!body.begin_row(element, row)) return io::mesh_error(body.error());
             double xyz[3] = {0, 0, 0};
@@ -322,8 +335,9 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
                 if (!body.read(property.count_type, &count)) return io::mesh_error(body.error());
                 const bool is_face_list = &element == face && static_cast<int>(p) == index_property;
                 if (count < 0 || (is_face_list && count < 3)) {
-                    body.fail(element.name + " " + std::to_string(row) + ": a face needs at least 3 vertices, got " +
-                              std::to_string(static_cast<long long>(count)));
+                    body.fail(element.name + " " + std::to_string(row) + ": " +
+                              (count < 0 ? "a list count is negative: " : "a face needs at least 3 vertices, got ") +
+                              integer_text(count));
                     return io::mesh_error(body.error());
                 }
                 corners.clear();
@@ -332,7 +346,7 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
                     if (!body.read(property.type, &value)) return io::mesh_error(body.error());
                     if (!is_face_list) continue;
                     if (value < 0 || value >= static_cast<double>(vertex->count)) {
-                        body.fail("face " + std::to_string(row) + ": index " + std::to_string(static_cast<long long>(value)) +
+                        body.fail("face " + std::to_string(row) + ": index " + integer_text(value) +
                                   " out of range (" + std::to_string(vertex->count) + " vertices)");
                         return io::mesh_error(body.error());
                     }

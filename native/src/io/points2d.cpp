@@ -2,6 +2,7 @@
 // Lines, fields and numbers come from the readers' shared helpers (mesh_read_internal.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -120,6 +121,35 @@ bool read_rbox(Reader2& reader, std::vector<double>* xy) {
     return true;
 }
 
+/// Empty if `text` starts like text; else why it is not a 2D point file, naming the format where
+/// it is recognisable (PLY, ASCII or binary STL), never echoing a byte of it. Bytes >= 0x80 may be
+/// UTF-8 text (in a comment); other control bytes than whitespace are binary.
+std::string binary_input_message(const std::string& text) {
+    const std::string_view head = std::string_view(text).substr(0, 4096);
+    const std::string unsupported = " is not supported by the 2D point reader (read: x y, x y z, rbox)";
+    if (io::starts_with_word(head, "ply")) return "PLY" + unsupported;
+    if (io::starts_with_word(head, "solid") && head.find("facet") != std::string_view::npos) return "ASCII STL" + unsupported;
+    for (std::size_t i = 0; i < head.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(head[i]);
+        if (c >= 0x20 ? c != 0x7f : (c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f')) continue;
+        if (io::has_binary_stl_size(text)) return "binary STL" + unsupported;
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "binary data (byte 0x%02x at offset %zu)", c, i);
+        return detail;
+    }
+    return {};
+}
+
+/// 3D formats that hold more than points: named rather than read as a bad first point.
+const char* other_format(std::string_view first_field) {
+    if (first_field == "OFF") return "OFF";
+    static const char* const kObjRecords[] = {"v", "vt", "vn", "f", "o", "g", "mtllib", "usemtl"};
+    for (const char* record : kObjRecords) {
+        if (first_field == record) return "OBJ";
+    }
+    return nullptr;
+}
+
 bool read_lines(Reader2& reader, std::vector<double>* xy) {
     // Every line has as many coordinates as the first: a stray 3-number line in a 2D file (or the
     // reverse) is more likely a mistake than a point.
@@ -142,8 +172,15 @@ Points2Result parse_points_2d(const std::string& text, const std::string& source
     if (point_lines) point_lines->clear();
     Reader2 reader(text, source, point_lines);
     bool ok;
-    if (!reader.next()) {
+    const std::string binary = binary_input_message(text);
+    const char* format = nullptr;
+    if (!binary.empty()) {
+        ok = reader.fail_whole("not a point file: " + binary);
+    } else if (!reader.next()) {
         ok = reader.fail_whole("no points found (the input is empty)");
+    } else if ((format = other_format(reader.fields()[0])) != nullptr) {
+        ok = reader.fail_whole(std::string("not a point file: ") + format +
+                               " is not supported by the 2D point reader (read: x y, x y z, rbox)");
     } else if (is_rbox_header(reader.fields())) {
         ok = read_rbox(reader, &result.xy) && (!result.xy.empty() || reader.fail_whole("no points found"));
     } else {

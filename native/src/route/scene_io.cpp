@@ -38,6 +38,45 @@ std::string readable_parse_error(std::string message) {
     return message;
 }
 
+/// `text` safe to print on a terminal: well-formed UTF-8 (names may be in any language) is kept,
+/// every control character (C0, DEL, C1) and every byte that is not part of well-formed UTF-8
+/// becomes '?'. Messages quote keys, file names and nlohmann's "last read" bytes from the input.
+std::string terminal_safe(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80) {
+            out += (c < 0x20 || c == 0x7f) ? '?' : static_cast<char>(c);
+            ++i;
+            continue;
+        }
+        const std::size_t length = c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 ? 2 : 0;
+        bool ok = length != 0 && c <= 0xf4 && i + length <= text.size();
+        std::uint32_t code = c & (0x7f >> length);
+        for (std::size_t k = 1; ok && k < length; ++k) {
+            const unsigned char d = static_cast<unsigned char>(text[i + k]);
+            ok = (d & 0xc0) == 0x80;
+            code = code << 6 | (d & 0x3f);
+        }
+        ok = ok && !(length == 3 && code < 0x800) && !(length == 4 && (code < 0x10000 || code > 0x10ffff)) &&
+             !(code >= 0xd800 && code <= 0xdfff);
+        if (!ok) {
+            out += '?';  // one byte at a time: what follows may be well-formed again
+            ++i;
+        } else {
+            const bool control = code >= 0x80 && code < 0xa0;  // C1, e.g. U+009B (CSI)
+            if (control) {
+                out += '?';
+            } else {
+                out.append(text, i, length);
+            }
+            i += length;
+        }
+    }
+    return out;
+}
+
 /// Keys that would describe a rotation; refused with a message that says so.
 bool is_rotation_key(const std::string& key) {
     static const char* const kKeys[] = {"rotation", "rotations", "orientation", "orientations", "transform",
@@ -174,7 +213,7 @@ public:
                 }
                 const double i = index.get<double>();
                 if (i < 0 || i >= static_cast<double>(count)) {
-                    return fail(at, "index " + (index.is_number_integer() ? index.dump() : std::to_string(i)) +
+                    return fail(at, "index " + index.dump() +
                                         " out of range (" + std::to_string(count) + " vertices)");
                 }
                 mesh->triangles.push_back(static_cast<std::uint32_t>(i));
@@ -299,14 +338,15 @@ SceneResult parse_scene(const std::string& json_text, const std::string& source,
     json root;
     LocatingParser handler(root);
     if (!json::sax_parse(json_text, &handler, json::input_format_t::json, true, false) || !handler.message.empty()) {
-        result.error = source + ": invalid JSON: " +
-                       (handler.message.empty() ? std::string("cannot parse") : readable_parse_error(handler.message));
+        result.error = terminal_safe(source + ": invalid JSON: " +
+                                     (handler.message.empty() ? std::string("cannot parse")
+                                                              : readable_parse_error(handler.message)));
         return result;
     }
     SceneParser parser(source, load_mesh);
     if (!parser.scene(root, options, &result.scene)) {
         result.scene = Scene{};
-        result.error = parser.error();
+        result.error = terminal_safe(parser.error());
     }
     return result;
 }

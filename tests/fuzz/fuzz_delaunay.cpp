@@ -1,0 +1,151 @@
+// libFuzzer target: hullkit::delaunay on arbitrary bytes read as 2D points. The first byte picks
+// how the rest is read: (0) little-endian doubles x y (NaN, infinities, huge and tiny magnitudes);
+// (1) int8 pairs (grids, collinear and cocircular sets, repeats); (2) int8 pairs scaled by 2^-30
+// around (1e6, -1e6) (the same, exactly, far from the origin); (3) int16 pairs. Checked:
+//  - a triangulation that is returned passes the exact verify_delaunay; the half-edges pair up
+//    (halfedges[halfedges[e]] == e, the two half-edges running between the same points in opposite
+//    directions); each point's representative is the lowest index with its coordinates;
+//  - gift wrapping gives the very same arrays on small inputs, and so does merge_cocircular (each
+//    of its polygons has 3 or more corners and starts at its lowest index);
+//  - delaunay_find from varying starts answers a query at an input point with its representative
+//    (at any scale), and, inside incircle's exact range, a query elsewhere with the nearest point
+//    (exact compare_distance, lowest index on ties);
+//  - an error is one line, with no triangulation.
+// Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "hullkit/delaunay.hpp"
+#include "hullkit/predicates.hpp"
+
+namespace {
+
+std::vector<double> read_points(const std::uint8_t* data, std::size_t size) {
+    std::vector<double> xy;
+    if (size == 0) return xy;
+    const int mode = data[0] & 3;
+    ++data;
+    --size;
+    if (mode == 0) {
+        xy.resize(size / 16 * 2);
+        if (!xy.empty()) std::memcpy(xy.data(), data, 8 * xy.size());
+    } else if (mode == 1 || mode == 2) {
+        for (std::size_t i = 0; i + 1 < size; i += 2) {
+            const double x = static_cast<std::int8_t>(data[i]), y = static_cast<std::int8_t>(data[i + 1]);
+            if (mode == 1) {
+                xy.insert(xy.end(), {x, y});
+            } else {
+                xy.insert(xy.end(), {1e6 + std::ldexp(x, -30), -1e6 + std::ldexp(y, -30)});
+            }
+        }
+    } else {
+        for (std::size_t i = 0; i + 3 < size; i += 4) {
+            xy.push_back(static_cast<std::int16_t>(data[i] | data[i + 1] << 8));
+            xy.push_back(static_cast<std::int16_t>(data[i + 2] | data[i + 3] << 8));
+        }
+    }
+    return xy;
+}
+
+bool same(const hullkit::Delaunay& a, const hullkit::Delaunay& b) {
+    return a.dimension == b.dimension && a.triangles == b.triangles && a.halfedges == b.halfedges &&
+           a.hull == b.hull && a.representative == b.representative && a.duplicate_count == b.duplicate_count &&
+           a.error == b.error;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::vector<double> xy = read_points(data, size);
+    const std::size_t n = xy.size() / 2;
+    if (n > 300) return 0;  // keeps each input fast; structure matters, not size
+    const hullkit::PointSpan2 points(xy.data(), n);
+    const hullkit::Delaunay tri = hullkit::delaunay(points);
+    if (!tri.ok()) {
+        if (tri.error.find('\n') != std::string::npos || !tri.triangles.empty() || !tri.halfedges.empty()) std::abort();
+        if (tri.error_point >= static_cast<std::int64_t>(n)) std::abort();
+        return 0;
+    }
+    if (n == 0 ? tri.dimension != -1 : tri.dimension < 0 || tri.dimension > 2) std::abort();
+    if ((tri.dimension == 2) != !tri.triangles.empty()) std::abort();
+    const hullkit::DelaunayVerifyReport report = hullkit::verify_delaunay(points, tri.triangles.data(), tri.triangle_count());
+    if (!report.ok) std::abort();
+
+    // Half-edges pair up with their opposites.
+    if (tri.halfedges.size() != tri.triangles.size()) std::abort();
+    auto next = [](std::size_t e) { return e % 3 == 2 ? e - 2 : e + 1; };
+    for (std::size_t e = 0; e < tri.halfedges.size(); ++e) {
+        const std::int32_t o = tri.halfedges[e];
+        if (o == -1) continue;
+        if (o < 0 || static_cast<std::size_t>(o) >= tri.halfedges.size() || tri.halfedges[o] != static_cast<std::int32_t>(e))
+            std::abort();
+        if (tri.triangles[e] != tri.triangles[next(o)] || tri.triangles[next(e)] != tri.triangles[o]) std::abort();
+    }
+    // Representatives: the lowest index with the same coordinates.
+    if (tri.representative.size() != n) std::abort();
+    std::size_t duplicates = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        std::size_t lowest = i;
+        for (std::size_t j = 0; j < i; ++j) {
+            if (xy[2 * j] == xy[2 * i] && xy[2 * j + 1] == xy[2 * i + 1]) {
+                lowest = j;
+                break;
+            }
+        }
+        if (tri.representative[i] != lowest) std::abort();
+        duplicates += lowest != i;
+    }
+    if (duplicates != tri.duplicate_count) std::abort();
+
+    // Every algorithm and option gives the same triangulation.
+    hullkit::DelaunayOptions merged;
+    merged.merge_cocircular = true;
+    const hullkit::Delaunay polygons = hullkit::delaunay(points, merged);
+    if (!same(polygons, tri)) std::abort();
+    if (polygons.polygon_offsets.empty() ? tri.dimension == 2 : polygons.polygon_offsets.front() != 0 ||
+                                                                   polygons.polygon_offsets.back() != polygons.polygon_vertices.size()) {
+        std::abort();
+    }
+    for (std::size_t p = 0; p + 1 < polygons.polygon_offsets.size(); ++p) {
+        const std::uint32_t first = polygons.polygon_offsets[p], last = polygons.polygon_offsets[p + 1];
+        if (last < first + 3) std::abort();
+        for (std::uint32_t k = first + 1; k < last; ++k) {  // starts at its lowest index
+            if (polygons.polygon_vertices[k] <= polygons.polygon_vertices[first]) std::abort();
+        }
+    }
+    if (n <= 60) {
+        hullkit::DelaunayOptions wrap;
+        wrap.algorithm = hullkit::DelaunayAlgorithm::Giftwrap;
+        if (!same(hullkit::delaunay(points, wrap), tri)) std::abort();
+    }
+
+    // Nearest-point queries: at every input point (any scale: the locator compares distances on
+    // the coordinates delaunay() rescaled), then against a brute force (inside the predicates'
+    // exact range, where compare_distance on the raw coordinates is exact).
+    if (n == 0 || n > 120) return 0;
+    hullkit::DelaunayLocator locator(points, tri);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (locator.find(xy[2 * i], xy[2 * i + 1], static_cast<std::int64_t>((i * 7) % n)) != tri.representative[i]) std::abort();
+    }
+    double largest = 0, smallest = 0;
+    for (double v : xy) {
+        const double a = std::fabs(v);
+        largest = std::max(largest, a);
+        if (a != 0 && (smallest == 0 || a < smallest)) smallest = a;
+    }
+    if (!hullkit::incircle_range_ok(largest, smallest)) return 0;
+    // A query made of one point's x and another's y (inside the predicates' exact range).
+    for (std::size_t k = 0; k < 4 && k < n; ++k) {
+        const double qx = xy[2 * k], qy = xy[2 * (n - 1 - k) + 1];
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < n; ++i) {
+            if (hullkit::compare_distance(xy[2 * i], xy[2 * i + 1], xy[2 * best], xy[2 * best + 1], qx, qy) < 0) best = i;
+        }
+        if (hullkit::delaunay_find(points, tri, qx, qy, static_cast<std::uint32_t>(k)) != static_cast<std::int64_t>(best)) std::abort();
+    }
+    return 0;
+}

@@ -1,0 +1,105 @@
+// hullkit.readPoints / readPoints2d / readMesh: the CLI's C++ readers through the wasm module.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+
+import createHullkit, { HullkitError } from '../../wasm/hullkit.js';
+
+const hullkit = await createHullkit();
+const data = (name) => new Uint8Array(readFileSync(new URL(`../data/${name}`, import.meta.url)));
+const text = (s) => new TextEncoder().encode(s);
+
+/** A binary little-endian PLY: a unit right triangle at z = 2 plus one unused vertex. */
+function binaryPly() {
+  const header = text('ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n' +
+    'property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n');
+  const body = new DataView(new ArrayBuffer(4 * 12 + 1 + 12));
+  [0, 0, 2, 1, 0, 2, 0, 1, 2, 5, 5, 5].forEach((v, i) => body.setFloat32(4 * i, v, true));
+  body.setUint8(48, 3);
+  [0, 1, 2].forEach((v, i) => body.setInt32(49 + 4 * i, v, true));
+  const bytes = new Uint8Array(header.length + body.byteLength);
+  bytes.set(header);
+  bytes.set(new Uint8Array(body.buffer), header.length);
+  return bytes;
+}
+
+const ASCII_STL = 'solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n' +
+  '  endloop\n endfacet\n facet normal 0 0 1\n  outer loop\n   vertex 1 0 0\n   vertex 1 1 0\n   vertex 0 1 0\n' +
+  '  endloop\n endfacet\nendsolid t\n';
+
+test('readMesh: a good file of each format', () => {
+  const cases = [
+    ['cube.obj', data('cube.obj'), 8, 12],
+    ['tetra.off', data('tetra.off'), 4, 4],
+    ['plate.ply', data('route/plate.ply'), 4, 2],
+    ['binary.ply', binaryPly(), 4, 1],
+    ['load.stl', data('route/load.stl'), 8, 12],
+    ['ascii.stl', text(ASCII_STL), 4, 2],
+    ['binary-two-triangles.stl', data('binary-two-triangles.stl'), 4, 2],
+  ];
+  for (const [name, bytes, vertices, triangles] of cases) {
+    const mesh = hullkit.readMesh(bytes, name);
+    assert.ok(mesh.vertices instanceof Float64Array, name);
+    assert.ok(mesh.triangles instanceof Uint32Array, name);
+    assert.equal(mesh.vertices.length, 3 * vertices, name);
+    assert.equal(mesh.triangles.length, 3 * triangles, name);
+    for (const index of mesh.triangles) assert.ok(index < vertices, name);
+  }
+  const ply = hullkit.readMesh(binaryPly(), 'binary.ply');
+  assert.deepEqual([...ply.vertices], [0, 0, 2, 1, 0, 2, 0, 1, 2, 5, 5, 5]);
+  assert.deepEqual([...ply.triangles], [0, 1, 2]);
+  // The format comes from the content when the name says nothing; an ArrayBuffer works too.
+  assert.equal(hullkit.readMesh(data('cube.obj').slice().buffer, 'upload').triangles.length, 36);
+});
+
+test('readPoints: point text, rbox and the vertices of meshes', () => {
+  assert.deepEqual([...hullkit.readPoints(text('0 0 0\n1, 2, 3\n# note\n4 5 6\n'), 'p.xyz')], [0, 0, 0, 1, 2, 3, 4, 5, 6]);
+  assert.deepEqual([...hullkit.readPoints(text('3 rbox 2 D3\n2\n0 0 0\n1 1 1\n'), 'r.txt')], [0, 0, 0, 1, 1, 1]);
+  // OBJ and OFF as `hullkit hull` reads them (vertices, faces ignored); PLY and STL through the mesh readers.
+  assert.equal(hullkit.readPoints(data('cube.obj'), 'cube.obj').length, 24);
+  assert.equal(hullkit.readPoints(text('v 0 0 0\nv 1 0 0\n'), 'cloud.obj').length, 6);  // no faces needed
+  assert.deepEqual(hullkit.readPoints(data('tetra.off'), 'tetra.off'), hullkit.readMesh(data('tetra.off'), 'tetra.off').vertices);
+  assert.deepEqual(hullkit.readPoints(binaryPly(), 'b.ply'), hullkit.readMesh(binaryPly(), 'b.ply').vertices);
+  assert.equal(hullkit.readPoints(data('route/load.stl'), 'load.stl').length, 24);
+  assert.equal(hullkit.readPoints(data('binary-two-triangles.stl'), 'upload.bin').length, 12);  // by content
+  const points = hullkit.readPoints(data('cube.obj'), 'cube.obj');
+  assert.equal(hullkit.hull(points).volume, hullkit.hull(hullkit.readMesh(data('cube.obj'), 'cube.obj').vertices).volume);
+});
+
+test('readPoints2d: as `hullkit delaunay` reads, and x y of mesh vertices', () => {
+  assert.deepEqual([...hullkit.readPoints2d(text('0 0\n1 0\n0 1\n'), 'p.txt')], [0, 0, 1, 0, 0, 1]);
+  assert.deepEqual([...hullkit.readPoints2d(text('0 0 9\n1 0 9\n'), 'p.xyz')], [0, 0, 1, 0]);
+  assert.deepEqual([...hullkit.readPoints2d(text('2 rbox 3 D2\n3\n0 0\n1 0\n0 1\n'), 'r.txt')], [0, 0, 1, 0, 0, 1]);
+  assert.deepEqual([...hullkit.readPoints2d(binaryPly(), 'b.ply')], [0, 0, 1, 0, 0, 1, 5, 5]);
+  assert.equal(hullkit.readPoints2d(data('cube.obj'), 'cube.obj').length, 16);
+});
+
+test('readers: a malformed file throws a HullkitError naming the problem and the line', () => {
+  const badObj = text('v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n');
+  assert.throws(() => hullkit.readMesh(badObj, 'bad.obj'), (error) =>
+    error instanceof HullkitError && error.line === 3 && /^bad\.obj:3: .*3 coordinates/.test(error.message));
+  assert.throws(() => hullkit.readPoints(badObj, 'bad.obj'), (error) =>
+    error instanceof HullkitError && error.line === 3 && /^bad\.obj:3: /.test(error.message));
+  assert.throws(() => hullkit.readMesh(text('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n'), 'bad.obj'),
+    (error) => error.line === 4 && /face index 4 out of range/.test(error.message));
+  assert.throws(() => hullkit.readPoints2d(text('0 0\n1 x\n'), 'pts.txt'),
+    (error) => error instanceof HullkitError && error.line === 2 && /"x"/.test(error.message));
+});
+
+test('readers: a truncated binary STL says so', () => {
+  const stl = data('binary-two-triangles.stl');
+  for (const read of ['readMesh', 'readPoints']) {
+    assert.throws(() => hullkit[read](stl.subarray(0, stl.length - 20), 'cut.stl'), (error) =>
+      error instanceof HullkitError && /^cut\.stl: binary STL is truncated: .*184 bytes.*got 164/.test(error.message));
+  }
+  assert.throws(() => hullkit.readMesh(stl.subarray(0, 60), 'cut.stl'), /truncated: at least 84 bytes/);
+  assert.throws(() => hullkit.readPoints(new Uint8Array(0), 'empty.xyz'), /empty\.xyz: no points/);
+});
+
+test('readers: argument checks', () => {
+  assert.throws(() => hullkit.readPoints('0 0 0', 'p.xyz'), TypeError);
+  assert.throws(() => hullkit.readMesh(data('cube.obj'), 42), TypeError);
+  // Without a name the messages say <bytes>.
+  assert.throws(() => hullkit.readMesh(text('v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n')),
+    (error) => error.line === 3 && error.message.startsWith('<bytes>:3: '));
+});
