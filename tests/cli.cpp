@@ -601,7 +601,8 @@ TEST_CASE("cli: a PNG, a PLY and an ASCII STL are named as what they are, exit 2
     TempDir dir("hullkit-cli");
     // A PNG's signature and the start of its IHDR chunk.
     const std::string png = dir.file("picture.png");
-    write_text(png, std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0", 33));
+    static const char kPng[] = "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0";
+    write_text(png, std::string(kPng, sizeof kPng - 1));
     RunResult result = run_cli(dir, {"hull", png});
     CHECK(single_error_line(result) == "hullkit: " + png + ": not a point file: binary data (byte 0x1a at offset 6)");
     CHECK(result.out.empty());

@@ -20,8 +20,7 @@ namespace hullkit_cli {
 namespace {
 
 constexpr int kExitClear = 0;
-constexpr int kExitNotClear = 1;
-constexpr int kExitBadInput = 2;
+constexpr int kExitNotClear = 1;  // bad input exits 2 through the shared error path (cli_io)
 
 const char* const kRouteDescription =
     "Checks a traverse moved along a route of straight translations against obstacles, one exact\n"

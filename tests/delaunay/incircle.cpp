@@ -66,6 +66,7 @@ TEST_CASE("incircle: points on a circle with ulp perturbations agree with GMP", 
         }
     }
     // The cases reach the adaptive stages (otherwise they would test only the filter).
+    INFO("exactly cocircular after the perturbation: " << zero);
     REQUIRE(stages[1] + stages[2] + stages[3] > 100);
 }
 
