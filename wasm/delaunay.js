@@ -1,7 +1,7 @@
 // hullkit.delaunay, find and voronoi: the JS side of native/include/hullkit/delaunay.hpp.
 // Points go in as a Float64Array x0 y0 x1 y1 ...; every result array is a fresh typed array the
 // caller owns (copied out of the WebAssembly heap), laid out as delaunator's.
-import { HullkitError, checkOptions, copyIn, toFloat64, toUint32 } from './internal.js';
+import { HullkitError, checkOptions, copyIn, takeTrace, toFloat64, toUint32 } from './internal.js';
 
 /** The algorithm names `delaunay` accepts, the default first. */
 export const DELAUNAY_ALGORITHMS = ['incremental', 'giftwrap'];
@@ -173,16 +173,5 @@ export function delaunayGiftwrapTrace(core, xy) {
   } finally {
     core._free(address);
   }
-  try {
-    if (!trace.ok()) throw new HullkitError(`delaunayGiftwrapTrace: ${trace.error}`, { pointIndex: trace.errorPoint() });
-    return {
-      kinds: trace.kindsView().slice(),
-      args: trace.argsView().slice(),
-      kindNames: core.giftwrapEventNames(),
-      triangles: trace.trianglesView().slice(),
-      dimension: trace.dimension,
-    };
-  } finally {
-    trace.delete();
-  }
+  return takeTrace(trace, core.giftwrapEventNames(), 'delaunayGiftwrapTrace');
 }

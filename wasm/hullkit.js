@@ -1,7 +1,7 @@
 // hullkit for JavaScript: the WebAssembly build of the C++ core behind plain functions that take
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
-import { HullkitError, checkOptions, copyIn, toFloat64, toUint32 } from './internal.js';
+import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
 import { delaunay, delaunayFind, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { checkRoute, RouteChecker } from './route.js';
 
@@ -183,26 +183,13 @@ function giftwrapTrace(core, xyz, options = {}) {
   } finally {
     core._free(address);
   }
-  try {
-    if (!trace.ok()) throw new HullkitError(`giftwrapTrace: ${trace.error}`, { pointIndex: trace.errorPoint() });
-    return {
-      kinds: trace.kindsView().slice(),
-      args: trace.argsView().slice(),
-      kindNames: [...eventNames],
-      triangles: trace.trianglesView().slice(),
-      dimension: trace.dimension,
-    };
-  } finally {
-    trace.delete();
-  }
+  return takeTrace(trace, [...eventNames], 'giftwrapTrace');
 }
 
-/** The bytes of a Uint8Array, another typed array or DataView, or an ArrayBuffer. */
+/** The file's bytes (see bytesOf); anything else is a TypeError. */
 function fileBytes(bytes, where) {
-  if (bytes instanceof Uint8Array) return bytes;
-  if (bytes instanceof ArrayBuffer) return new Uint8Array(bytes);
-  if (ArrayBuffer.isView(bytes)) return new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  throw new TypeError(`${where}: the file must be a Uint8Array or an ArrayBuffer`);
+  if (!isBytes(bytes)) throw new TypeError(`${where}: the file must be a Uint8Array or an ArrayBuffer`);
+  return bytesOf(bytes);
 }
 
 /**

@@ -63,3 +63,32 @@ export function checkOptions(options, known, where) {
   }
   return options;
 }
+
+/** Whether `value` is an ArrayBuffer or a view on one (typed array, DataView): bytes for a reader. */
+export const isBytes = (value) => value instanceof ArrayBuffer || ArrayBuffer.isView(value);
+
+/** The bytes of a Uint8Array, any other typed array or DataView, or an ArrayBuffer (no copy). */
+export function bytesOf(value) {
+  if (value instanceof Uint8Array) return value;
+  if (value instanceof ArrayBuffer) return new Uint8Array(value);
+  return new Uint8Array(value.buffer, value.byteOffset, value.byteLength);
+}
+
+/**
+ * A recorded gift wrap copied out of wasm memory and deleted (hullkit.giftwrapTrace and
+ * delaunayGiftwrapTrace): {kinds, args, kindNames, triangles, dimension}, or its error thrown.
+ */
+export function takeTrace(trace, kindNames, where) {
+  try {
+    if (!trace.ok()) throw new HullkitError(`${where}: ${trace.error}`, { pointIndex: trace.errorPoint() });
+    return {
+      kinds: trace.kindsView().slice(),
+      args: trace.argsView().slice(),
+      kindNames,
+      triangles: trace.trianglesView().slice(),
+      dimension: trace.dimension,
+    };
+  } finally {
+    trace.delete();
+  }
+}

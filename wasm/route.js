@@ -3,20 +3,11 @@
 // The scene is the same object as the JSON that `hullkit route` reads. It crosses into wasm as
 // JSON text; meshes given as bytes (Uint8Array / ArrayBuffer) or through options.files go in as
 // named blobs; routes to re-check go in as a Float64Array. The report is the CLI's JSON, parsed.
-import { HullkitError, checkOptions, copyIn, toFloat64 } from './internal.js';
+import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, toFloat64 } from './internal.js';
 
 const CHECK_OPTIONS = ['samples', 'clearance'];
 const SCENE_OPTIONS = ['files'];
 const ONE_SHOT_OPTIONS = [...CHECK_OPTIONS, ...SCENE_OPTIONS];
-
-const isBytes = (value) => value instanceof ArrayBuffer || ArrayBuffer.isView(value);
-
-/** The bytes of a Uint8Array, any other typed array or DataView, or an ArrayBuffer. */
-function bytesOf(value) {
-  if (value instanceof Uint8Array) return value;
-  if (value instanceof ArrayBuffer) return new Uint8Array(value);
-  return new Uint8Array(value.buffer, value.byteOffset, value.byteLength);
-}
 
 /** [[x0, y0, z0], ...] from a flat typed array of triples (vertices, triangles, route). */
 function triples(flat, path, where) {
