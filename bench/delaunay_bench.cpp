@@ -1,12 +1,13 @@
 // hullkit_delaunay_bench: times one Delaunay implementation on one 2D input file, in its own
 // process, so that the first call is a user's first call and the peak memory is that run's.
 //
-//   hullkit_delaunay_bench --impl IMPL --input FILE.bin [--runs 5] [--budget 60] [--name NAME]
+//   hullkit_delaunay_bench --impl IMPL --input FILE.bin [--runs 5] [--budget 60] [--name NAME] [--threads N]
 //
 // IMPL is one of
 //   hullkit-ALGO  hullkit::delaunay() with the algorithm parse_delaunay_algorithm("ALGO") knows
 //                 (hullkit-incremental, hullkit-giftwrap); an unknown name gives a result line with
-//                 "error" (exit status 0), so a table can show the row as missing.
+//                 "error" (exit status 0), so a table can show the row as missing. --threads sets
+//                 DelaunayOptions::threads (default 0: the library's default, two for large inputs).
 //   cgal          CGAL::Delaunay_triangulation_2 (CGAL 5.x, Exact_predicates_inexact_constructions_
 //                 kernel): the range insert, which sorts the points along a Hilbert curve first.
 //
@@ -49,6 +50,7 @@ struct Args {
     std::string impl, input, name;
     int runs = 5;
     double budget = 60.0;
+    unsigned threads = 0;
 };
 
 /// Parses the command line with CLI11 (as the hullkit command does); exits 2 on a usage error.
@@ -59,6 +61,7 @@ Args parse_args(int argc, char** argv) {
     app.add_option("--input", args.input, "raw little-endian x y doubles")->required();
     app.add_option("--runs", args.runs, "timed runs, the first reported on its own")->check(CLI::PositiveNumber);
     app.add_option("--budget", args.budget, "no further run once the runs add up to this many seconds");
+    app.add_option("--threads", args.threads, "hullkit: DelaunayOptions::threads (0: the library's default, 1: one thread)");
     app.add_option("--name", args.name, "the input's name in the output (default: the file name without .bin)");
     try {
         app.parse(argc, argv);
@@ -126,6 +129,7 @@ int main(int argc, char** argv) {
     Runner run;
     if (args.impl.rfind("hullkit-", 0) == 0) {
         hullkit::DelaunayOptions options;
+        options.threads = args.threads;
         const std::string algorithm = args.impl.substr(8);
         if (!hullkit::parse_delaunay_algorithm(algorithm, &options.algorithm)) {
             print_error(args, "unknown algorithm \"" + algorithm + "\"");

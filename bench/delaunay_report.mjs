@@ -41,13 +41,15 @@ const inputs = [...new Set(results.map((r) => r.input))];
 const rows = inputs.map((input) => {
   const native = find('native', 'hullkit-incremental', input);
   const cgal = find('native', 'cgal', input);
+  const single = find('native-1thread', 'hullkit-incremental', input);
   const qhull = find('native', 'qdelaunay', input);
   const wasm = find('js', 'hullkit-incremental', input);
   const delaunator = find('js', 'delaunator', input);
   // Every triangulation of the same distinct points has the same number of triangles.
-  const counts = [native, cgal, qhull, wasm, delaunator].filter((r) => r && !r.error).map((r) => r.triangles);
+  const counts = [native, single, cgal, qhull, wasm, delaunator].filter((r) => r && !r.error).map((r) => r.triangles);
   const agree = counts.every((c) => c === counts[0]);
-  return `| ${input} | ${native?.n ?? '–'} | ${time(native)} | ${time(cgal)} | ${ratioText(ratio(native, cgal))} | ${time(qhull)} | ` +
+  return `| ${input} | ${native?.n ?? '–'} | ${time(native)} | ${time(cgal)} | ${ratioText(ratio(native, cgal))} | ` +
+    `${time(single)} | ${ratioText(ratio(single, cgal))} | ${time(qhull)} | ` +
     `${time(wasm)} | ${time(delaunator)} | ${ratioText(ratio(wasm, delaunator))} | ${agree ? counts[0] ?? '–' : `differ: ${counts.join(' / ')}`} |`;
 });
 
@@ -66,6 +68,7 @@ target(`native ${small} circle / ${small} uniform`, ratio(find('native', 'hullki
 target(`wasm ${small} circle / ${small} uniform`, ratio(find('js', 'hullkit-incremental', `circle-${small}`), find('js', 'hullkit-incremental', `uniform-${small}`)), 2.0, '×',
   'hullkit wasm, first calls (delaunator: ' +
   ratioText(ratio(find('js', 'delaunator', `circle-${small}`), find('js', 'delaunator', `uniform-${small}`))) + ')');
+const singleRatio = ratio(find('native-1thread', 'hullkit-incremental', uniformBig), find('native', 'cgal', uniformBig));
 const memory = find('native', 'hullkit-incremental', uniformBig);
 target(`peak memory, native ${big} uniform`, memory && !memory.error ? memory.peak_rss_mb : null, 250, ' MB',
   `whole process (input included; CGAL ${find('native', 'cgal', uniformBig)?.peak_rss_mb?.toFixed(0) ?? '–'} MB, ` +
@@ -82,18 +85,22 @@ const lines = [
   'calls in the same process (warm). Native: the triangulation alone on an in-memory array (CGAL: the range',
   'insert into `Delaunay_triangulation_2` with the exact-predicates kernel); qdelaunay: the whole `qdelaunay Qt i`',
   'command reading the same points as text. JS: Node, hullkit\'s wasm `delaunay()` with copies in and out,',
-  'delaunator on the same `Float64Array`. Ratios compare first calls.',
+  'delaunator on the same `Float64Array`. Ratios compare first calls. hullkit native uses a second thread for',
+  'its output stage on large inputs by default (`DelaunayOptions::threads`); "1 thread" is the same call with',
+  '`threads = 1`. CGAL\'s insert and the wasm build are single-threaded.',
   '',
-  '| input | points | hullkit native | CGAL | hullkit / CGAL | qdelaunay | hullkit wasm | delaunator | wasm / delaunator | triangles |',
-  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+  '| input | points | hullkit native | CGAL | hullkit / CGAL | hullkit native, 1 thread | 1 thread / CGAL | qdelaunay | hullkit wasm | delaunator | wasm / delaunator | triangles |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...rows,
   '',
   '## Targets',
   '',
   ...targets.map((t) => `- ${t.text}`),
+  `- for reference, not a target: native ${big} uniform with one thread (\`threads = 1\`), hullkit / CGAL: ${ratioText(singleRatio)}`,
   '',
 ];
 writeFileSync(join(here, 'results-delaunay.md'), lines.join('\n'));
 console.log(`delaunay bench targets${quick ? ' (QUICK mode: 1e4 points only)' : ''}:`);
 for (const t of targets) console.log(`  ${t.text}`);
 console.log(`(${targets.filter((t) => t.met).length} of ${targets.length} met; table in bench/results-delaunay.md)`);
+console.log(`  for reference: native ${big} uniform with one thread, hullkit / CGAL: ${ratioText(singleRatio)}`);

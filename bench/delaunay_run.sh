@@ -5,7 +5,8 @@
 #   2. writes the 2D inputs to bench/out/delaunay/ (bench/delaunay_inputs.mjs; kept when there);
 #   3. runs every implementation x input, one process each, one after the other (never two at once:
 #      the machine has 2 cores), collecting JSON lines in bench/out/delaunay/results.jsonl:
-#        native  hullkit-incremental, cgal (build/bench/hullkit_delaunay_bench: first call + warm median)
+#        native  hullkit-incremental, cgal (build/bench/hullkit_delaunay_bench: first call + warm median);
+#                hullkit-incremental again with --threads 1 (kind native-1thread)
 #                qdelaunay Qt i (Qhull's command, timed whole, reading the same points as text;
 #                each run is a fresh process, so every run is a first call)
 #        js      hullkit-incremental (wasm), delaunator (bench/delaunay_wasm_bench.mjs)
@@ -122,6 +123,9 @@ for input in "${inputs[@]}"; do
   for impl in hullkit-incremental cgal; do
     record native "$(run_line "$impl" "$input" "$native_bench" --impl "$impl" --input "$out/$input.bin" --runs "$(runs_for "$input")" --budget 60)"
   done
+  # The library's default takes a second thread for the output stage of large inputs; the same with
+  # one thread, for reference (CGAL's insert is single-threaded).
+  record native-1thread "$(run_line hullkit-incremental "$input" "$native_bench" --impl hullkit-incremental --threads 1 --input "$out/$input.bin" --runs "$(runs_for "$input")" --budget 60)"
   record native "$(qdelaunay_line "$input" "$(runs_for "$input" qdelaunay)")"
 done
 

@@ -232,7 +232,15 @@ TEST_CASE("delaunay: delaunator's orientation and half-edge conventions", "[dela
 
 TEST_CASE("delaunay: 1e5 uniform and 1e5 on a circle, checked by verify", "[delaunay][large]") {
     const std::vector<double> a = uniform_points(100000, 12);
-    check_delaunay(a, hullkit::delaunay(a));
+    const hullkit::Delaunay d = hullkit::delaunay(a);
+    check_delaunay(a, d);
+    // The output stage's second thread changes nothing: one thread gives identical arrays.
+    hullkit::DelaunayOptions one_thread;
+    one_thread.threads = 1;
+    const hullkit::Delaunay single = hullkit::delaunay(a, one_thread);
+    REQUIRE(single.triangles == d.triangles);
+    REQUIRE(single.halfedges == d.halfedges);
+    REQUIRE(single.hull == d.hull);
     const std::vector<double> b = circle_points(100000, 1.0, false);
     check_delaunay(b, hullkit::delaunay(b));
 }

@@ -1,4 +1,5 @@
 // incircle against GMP rationals on adversarial cocircular and near-cocircular inputs.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -148,4 +149,61 @@ TEST_CASE("compare_distance: agrees with GMP", "[incircle]") {
         const double cx = u(rng), cy = u(rng);
         REQUIRE(hullkit::compare_distance(ax, ay, cx, cy, x, y) == rational(ax, ay, cx, cy, x, y));
     }
+}
+
+TEST_CASE("static bounds: every decision they allow is the exact sign, and they cover stage A's bound", "[incircle]") {
+    // Points in boxes of several widths and offsets: uniform, nearly cocircular (on a circle,
+    // rounded), nearly collinear, and on the box's corners (the largest differences). Wherever the
+    // semi-static bound lets |det| decide, the sign must be GMP's; and the bound must be at least
+    // stage A's own error bound for the same points (the argument the filters rest on).
+    using namespace hullkit::detail;
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::size_t decided_incircle = 0, decided_orient = 0, cases = 0;
+    for (double offset : {0.0, -3.5, 1e7, 0x1p+60}) {
+        for (double width : {1.0, 1e-6, 3e5}) {
+            const double lo = offset, hi = offset + width;
+            const double span = hi - lo;  // as computed: every difference of points in [lo, hi] is at most this
+            const double circle_bound = incircle_static_bound(span);
+            const double line_bound = orient2d_static_bound(span);
+            auto in_box = [&](double t) { return std::min(hi, std::max(lo, lo + t * width)); };
+            for (int i = 0; i < 3000; ++i, ++cases) {
+                double v[8];
+                const int kind = i % 4;
+                for (int k = 0; k < 4; ++k) {
+                    double x, y;
+                    if (kind == 0) {
+                        x = in_box(u(rng)), y = in_box(u(rng));
+                    } else if (kind == 1) {  // on a circle inside the box, rounded
+                        const double angle = 6.283185307179586 * u(rng);
+                        x = in_box(0.5 + 0.5 * std::cos(angle)), y = in_box(0.5 + 0.5 * std::sin(angle));
+                    } else if (kind == 2) {  // on a line through the box, rounded
+                        const double t = u(rng);
+                        x = in_box(t), y = in_box(0.25 + 0.5 * t);
+                    } else {  // box corners, one of them moved by an ulp
+                        x = (rng() & 1) ? hi : lo, y = (rng() & 1) ? hi : lo;
+                        if (k == 3) x = x == hi ? std::nextafter(hi, lo) : std::nextafter(lo, hi);
+                    }
+                    v[2 * k] = x, v[2 * k + 1] = y;
+                }
+                const IncircleStageA a = incircle_stage_a(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+                REQUIRE(circle_bound >= kIncircleFilterBound * a.permanent);
+                if (a.det > circle_bound || -a.det > circle_bound) {
+                    ++decided_incircle;
+                    REQUIRE((a.det > 0 ? 1 : -1) == gmp_incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
+                }
+                const double left = (v[0] - v[4]) * (v[3] - v[5]);
+                const double right = (v[1] - v[5]) * (v[2] - v[4]);
+                const double det = left - right;
+                REQUIRE(line_bound >= kOrient2dFilterBound * (std::fabs(left) + std::fabs(right)));
+                if (det > line_bound || -det > line_bound) {
+                    ++decided_orient;
+                    REQUIRE((det > 0 ? 1 : -1) == delaunay_test::rational_orient2d(v[0], v[1], v[2], v[3], v[4], v[5]));
+                }
+            }
+        }
+    }
+    // The filters must decide most random cases, or they would be useless.
+    CHECK(decided_incircle > cases / 8);
+    CHECK(decided_orient > cases / 8);
 }

@@ -221,6 +221,20 @@ inline IncircleStageA incircle_stage_a(double ax, double ay, double bx, double b
     return {det, permanent};
 }
 
+/// Semi-static bounds for a whole point set (computed once): when every coordinate difference of
+/// the points, as computed in floating point, is at most `span` in magnitude (e.g. all points lie
+/// in a box whose computed width and height are at most span), the permanent stage A computes is
+/// below 12 span^4 (1 + 2^-49) for incircle and 2 span^2 (1 + 2^-50) for orient2d, so a stage A
+/// determinant larger in magnitude than these bounds has the exact sign (stage A itself would have
+/// decided the same). The factor 1 + 2^-40 covers the rounding of the bound's own products. Skips
+/// computing the permanent in hot loops; the caller falls back to the full predicate otherwise.
+inline double incircle_static_bound(double span) {
+    return kIncircleFilterBound * 12.0 * (span * span) * (span * span) * (1.0 + 0x1p-40);
+}
+inline double orient2d_static_bound(double span) {
+    return kOrient2dFilterBound * 2.0 * (span * span) * (1.0 + 0x1p-40);
+}
+
 /// incircle with stage A inline.
 inline int incircle_inline(double ax, double ay, double bx, double by, double cx, double cy,
                            double dx, double dy) {

@@ -16,8 +16,11 @@
 // The faces are unique, so every algorithm returns identical arrays.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
+#include <system_error>
+#include <thread>
 
 #include "delaunay_internal.hpp"
 #include "hullkit/predicates.hpp"
@@ -332,31 +335,46 @@ void write_canonical(const std::vector<std::uint32_t>& local, const std::vector<
     }
 }
 
-/// The fast path of the incremental algorithm, straight from its working mesh: when no interior
-/// edge of the mesh has an exactly cocircular neighbour (incircle != 0 across every interior
-/// edge), every Delaunay face is a triangle and the mesh's finite triangles are the faces. Then
-/// writes the same arrays as fan_faces + write_canonical would (each triangle from its lowest
-/// original index, clockwise, sorted by first then second local corner) and returns true.
-/// Returns false, writing nothing, as soon as a cocircular edge is found: the caller then merges
-/// the faces and takes the general path.
-bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
-                          const std::vector<std::uint32_t>& original, Delaunay& out) {
+/// Runs `first` on a second thread while `second` runs on this one when `parallel` is true and
+/// the platform has threads (not the single-threaded WebAssembly build), otherwise one after the
+/// other. `first` must not throw.
+template <class First, class Second>
+void run_both(bool parallel, First&& first, Second&& second) {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    parallel = false;
+#endif
+    std::thread helper;
+    if (parallel) {
+        try {
+            helper = std::thread(std::ref(first));
+        } catch (const std::system_error&) {  // no thread to be had: do it here
+        }
+    }
+    if (!helper.joinable()) {
+        first();
+        second();
+        return;
+    }
+    try {
+        second();
+    } catch (...) {
+        helper.join();
+        throw;
+    }
+    helper.join();
+}
+
+/// Whether an interior edge of the mesh has an exactly cocircular neighbour (incircle == 0 across
+/// it), i.e. whether some Delaunay face is not a triangle.
+bool has_cocircular_edge(PointSpan2 p, const delaunay_detail::Mesh& mesh) {
     const std::uint32_t* vertex = mesh.vertex.data();
     const std::uint32_t* twin = mesh.twin.data();
     const std::uint32_t ghost = mesh.ghost;
-    const std::size_t count = mesh.vertex.size() / 3;  // ghosts included
-    const std::size_t m = original.size();
-    constexpr std::uint8_t kGhostTriangle = 3;
-    // Pass 1: ghosts, the cocircularity check, the lowest corner, and the bucket sizes.
-    std::vector<std::uint8_t> low_of(count);
-    std::vector<std::uint32_t> start(m + 1, 0);
-    std::size_t finite = 0;
+    const std::size_t count = mesh.vertex.size() / 3;
+    const double bound = detail::incircle_static_bound(mesh.span);
     for (std::size_t t = 0; t < count; ++t) {
         const std::uint32_t* v = vertex + 3 * t;
-        if (v[0] == ghost || v[1] == ghost || v[2] == ghost) {
-            low_of[t] = kGhostTriangle;
-            continue;
-        }
+        if (v[0] == ghost || v[1] == ghost || v[2] == ghost) continue;
         const double* a = p[v[0]];
         const double* b = p[v[1]];
         const double* c = p[v[2]];
@@ -367,42 +385,80 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
             const std::uint32_t opposite = vertex[f % 3 == 0 ? f + 2 : f - 1];  // f's corner off the edge
             if (opposite == ghost) continue;
             const double* d = p[opposite];
-            if (detail::incircle_inline(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0) return false;
+            const double det = detail::incircle_stage_a(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]).det;
+            if (!(det > bound || -det > bound) && incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0)
+                return true;
         }
-        const std::uint32_t o0 = original[v[0]], o1 = original[v[1]], o2 = original[v[2]];
-        const std::uint8_t low = o0 < o1 ? (o0 < o2 ? 0 : 2) : (o1 < o2 ? 1 : 2);
-        low_of[t] = low;
-        ++start[v[low] + 1];
-        ++finite;
     }
-    for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
-    // Pass 2: counting sort by the first output corner (the lowest), then insertion sort of each
-    // small bucket by the second output corner (corner low + 2 of the counter-clockwise triangle).
-    std::vector<std::uint32_t> slot_of(finite);  // canonical slot -> mesh triangle
-    for (std::size_t t = 0; t < count; ++t) {
-        const std::uint8_t low = low_of[t];
-        if (low == kGhostTriangle) continue;
-        slot_of[start[vertex[3 * t + low]]++] = static_cast<std::uint32_t>(t);
-    }
-    auto second = [&](std::uint32_t t) {
-        const std::uint32_t low = low_of[t];
-        return vertex[3 * t + (low == 0 ? 2 : low - 1)];
-    };
-    std::uint32_t bucket_begin = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t bucket_end = start[i];
-        for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
-            const std::uint32_t moving = slot_of[q];
-            const std::uint32_t key = second(moving);
-            std::uint32_t s = q;
-            for (; s > bucket_begin && key < second(slot_of[s - 1]); --s) slot_of[s] = slot_of[s - 1];
-            slot_of[s] = moving;
-        }
-        bucket_begin = bucket_end;
-    }
-    start = std::vector<std::uint32_t>();
+    return false;
+}
+
+/// The fast path of the incremental algorithm, straight from its working mesh: when no interior
+/// edge of the mesh has an exactly cocircular neighbour, every Delaunay face is a triangle and the
+/// mesh's finite triangles are the faces. Then writes the same arrays as fan_faces +
+/// write_canonical would (each triangle from its lowest original index, clockwise, sorted by first
+/// then second local corner) and returns true. Otherwise returns false, leaving `out`'s triangles
+/// and half-edges empty: the caller then merges the faces and takes the general path. With
+/// `parallel`, the cocircularity check, and later the two output arrays, take two threads.
+bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
+                          const std::vector<std::uint32_t>& original, bool parallel, Delaunay& out) {
+    const std::uint32_t* vertex = mesh.vertex.data();
+    const std::uint32_t* twin = mesh.twin.data();
+    const std::uint32_t ghost = mesh.ghost;
+    const std::size_t count = mesh.vertex.size() / 3;  // ghosts included
+    const std::size_t m = original.size();
+    constexpr std::uint8_t kGhostTriangle = 3;
+    bool cocircular = false;
+    std::vector<std::uint8_t> low_of(count);
+    std::vector<std::uint32_t> slot_of;  // canonical slot -> mesh triangle
     std::vector<std::uint32_t> position(count);
-    for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
+    std::size_t finite = 0;
+    run_both(
+        parallel, [&] { cocircular = has_cocircular_edge(p, mesh); },
+        [&] {
+            // Pass 1: ghosts, the lowest corner, and the bucket sizes.
+            std::vector<std::uint32_t> start(m + 1, 0);
+            for (std::size_t t = 0; t < count; ++t) {
+                const std::uint32_t* v = vertex + 3 * t;
+                if (v[0] == ghost || v[1] == ghost || v[2] == ghost) {
+                    low_of[t] = kGhostTriangle;
+                    continue;
+                }
+                const std::uint32_t o0 = original[v[0]], o1 = original[v[1]], o2 = original[v[2]];
+                const std::uint8_t low = o0 < o1 ? (o0 < o2 ? 0 : 2) : (o1 < o2 ? 1 : 2);
+                low_of[t] = low;
+                ++start[v[low] + 1];
+                ++finite;
+            }
+            for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
+            // Pass 2: counting sort by the first output corner (the lowest), then insertion sort of
+            // each small bucket by the second output corner (corner low + 2 of the counter-clockwise
+            // triangle).
+            slot_of.resize(finite);
+            for (std::size_t t = 0; t < count; ++t) {
+                const std::uint8_t low = low_of[t];
+                if (low == kGhostTriangle) continue;
+                slot_of[start[vertex[3 * t + low]]++] = static_cast<std::uint32_t>(t);
+            }
+            auto second = [&](std::uint32_t t) {
+                const std::uint32_t low = low_of[t];
+                return vertex[3 * t + (low == 0 ? 2 : low - 1)];
+            };
+            std::uint32_t bucket_begin = 0;
+            for (std::size_t i = 0; i < m; ++i) {
+                const std::uint32_t bucket_end = start[i];
+                for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
+                    const std::uint32_t moving = slot_of[q];
+                    const std::uint32_t key = second(moving);
+                    std::uint32_t s = q;
+                    for (; s > bucket_begin && key < second(slot_of[s - 1]); --s) slot_of[s] = slot_of[s - 1];
+                    slot_of[s] = moving;
+                }
+                bucket_begin = bucket_end;
+            }
+            for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
+        });
+    if (cocircular) return false;
     // Pass 3: output corner j is mesh corner (low - j) mod 3 (clockwise from the lowest); output
     // half-edge j runs backwards along mesh half-edge (low + 2 - j) mod 3, so a mesh half-edge k of
     // triangle h is output half-edge (low_h + 5 - k) mod 3.
@@ -410,20 +466,30 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
     out.halfedges.resize(3 * finite);
     std::uint32_t* tri_out = out.triangles.data();
     std::int32_t* half_out = out.halfedges.data();
-    for (std::size_t q = 0; q < finite; ++q) {
-        const std::uint32_t t = slot_of[q];
-        const std::uint32_t low = low_of[t];
-        const std::uint32_t* v = vertex + 3 * t;
-        for (std::uint32_t j = 0; j < 3; ++j) {
-            tri_out[3 * q + j] = original[v[(low + 3 - j) % 3]];
-            const std::uint32_t g = twin[3 * t + (low + 2 - j) % 3];
-            const std::uint32_t h = g / 3;
-            const std::uint32_t low_h = low_of[h];
-            half_out[3 * q + j] = low_h == kGhostTriangle
-                                      ? -1
-                                      : static_cast<std::int32_t>(3 * position[h] + (low_h + 5 - g % 3) % 3);
-        }
-    }
+    run_both(
+        parallel,
+        [&] {
+            for (std::size_t q = 0; q < finite; ++q) {
+                const std::uint32_t t = slot_of[q];
+                const std::uint32_t low = low_of[t];
+                const std::uint32_t* v = vertex + 3 * t;
+                for (std::uint32_t j = 0; j < 3; ++j) tri_out[3 * q + j] = original[v[(low + 3 - j) % 3]];
+            }
+        },
+        [&] {
+            for (std::size_t q = 0; q < finite; ++q) {
+                const std::uint32_t t = slot_of[q];
+                const std::uint32_t low = low_of[t];
+                for (std::uint32_t j = 0; j < 3; ++j) {
+                    const std::uint32_t g = twin[3 * t + (low + 2 - j) % 3];
+                    const std::uint32_t h = g / 3;
+                    const std::uint32_t low_h = low_of[h];
+                    half_out[3 * q + j] = low_h == kGhostTriangle
+                                              ? -1
+                                              : static_cast<std::int32_t>(3 * position[h] + (low_h + 5 - g % 3) % 3);
+                }
+            }
+        });
     return true;
 }
 
@@ -579,7 +645,8 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
         faces = delaunay_detail::giftwrap_faces(in);
     } else {
         delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
-        if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, out)) {
+        const bool parallel = options.threads != 1 && m >= 50000;
+        if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, parallel, out)) {
             mesh = delaunay_detail::Mesh();
             out.hull = hull_cycle(out.triangles, out.halfedges);
             return out;

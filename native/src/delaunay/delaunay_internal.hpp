@@ -1,6 +1,7 @@
 // Private to native/src/delaunay: what the algorithms share with the driver in delaunay.cpp.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,18 @@ struct Input {
     std::vector<std::uint32_t> original;
 };
 
+/// The larger of the points' computed width and height: no coordinate difference of two of them,
+/// as computed in floating point, is larger (rounding is monotone). For the predicates' static
+/// bounds (detail::incircle_static_bound).
+inline double coordinate_span(PointSpan2 p) {
+    double xmin = p[0][0], xmax = xmin, ymin = p[0][1], ymax = ymin;
+    for (std::size_t i = 1; i < p.count; ++i) {
+        xmin = std::min(xmin, p[i][0]), xmax = std::max(xmax, p[i][0]);
+        ymin = std::min(ymin, p[i][1]), ymax = std::max(ymax, p[i][1]);
+    }
+    return std::max(xmax - xmin, ymax - ymin);
+}
+
 /// The incremental algorithm's working mesh: counter-clockwise triangles (3 vertices each) with
 /// their twin half-edges (twin[e] opposite half-edge of e = 3 * t + k, from corner k to k + 1),
 /// closed by "ghost" triangles on the outer side of every hull edge, which have the vertex `ghost`
@@ -41,6 +54,7 @@ struct Mesh {
     std::vector<std::uint32_t> vertex;
     std::vector<std::uint32_t> twin;
     std::uint32_t ghost = 0;
+    double span = 0;  ///< coordinate_span of the points
 };
 Mesh incremental_mesh(const Input& input);
 /// The Delaunay faces of an incremental mesh (finite triangles, then merge_cocircular_triangles).

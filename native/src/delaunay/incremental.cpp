@@ -9,7 +9,9 @@
 //    conflicts when p is strictly outside that edge, or exactly on the line strictly between x
 //    and y (the limit of a circle through x, y and a point far away).
 // The cavity is star-shaped from p, so the new triangles are never degenerate, and every
-// decision is an exact orient2d / incircle on the original coordinates. Points collinear with a
+// decision is an exact orient2d / incircle on the original coordinates (a semi-static filter with
+// one bound for the whole point set first, detail::incircle_static_bound; the adaptive predicate
+// when it cannot tell). Points collinear with a
 // hull edge become hull vertices. The result is a Delaunay triangulation; cocircular faces are
 // merged afterwards (merge_cocircular_triangles) so that the shared canonical rule applies.
 #include <algorithm>
@@ -25,7 +27,11 @@ inline std::uint32_t next_edge(std::uint32_t e) { return e % 3 == 2 ? e - 2 : e 
 
 class Triangulation {
 public:
-    explicit Triangulation(PointSpan2 points) : p_(points), ghost_(static_cast<std::uint32_t>(points.count)) {
+    Triangulation(PointSpan2 points, double span)
+        : p_(points),
+          ghost_(static_cast<std::uint32_t>(points.count)),
+          incircle_bound_(detail::incircle_static_bound(span)),
+          orient_bound_(detail::orient2d_static_bound(span)) {
         const std::size_t capacity = 2 * points.count + 4;  // finite + ghost triangles
         vertex_.reserve(3 * capacity);
         twin_.reserve(3 * capacity);
@@ -122,6 +128,9 @@ private:
     bool conflicts(std::uint32_t t, double px, double py) const {
         const std::uint32_t a = vertex_[3 * t], b = vertex_[3 * t + 1], c = vertex_[3 * t + 2];
         if (a != ghost_ && b != ghost_ && c != ghost_) {
+            const double det = detail::incircle_stage_a(p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0], p_[c][1], px, py).det;
+            if (det > incircle_bound_) return true;
+            if (-det > incircle_bound_) return false;
             return incircle(p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0], p_[c][1], px, py) > 0;
         }
         // Ghost (x, y, G) in cyclic order: the outside of hull edge x->y is on its left.
@@ -154,7 +163,7 @@ private:
                 const std::uint32_t e = 3 * t + (r + k) % 3;
                 const double* a = p_[vertex_[e]];
                 const double* b = p_[vertex_[next_edge(e)]];
-                if (orient2d(a[0], a[1], b[0], b[1], px, py) < 0) {
+                if (right_of(a, b, px, py)) {
                     t = twin_[e] / 3;
                     moved = true;
                     break;
@@ -165,8 +174,20 @@ private:
         }
     }
 
+    /// orient2d(a, b, p) < 0, the static filter first.
+    bool right_of(const double* a, const double* b, double px, double py) const {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+        const double det = (a[0] - px) * (b[1] - py) - (a[1] - py) * (b[0] - px);
+        if (det < -orient_bound_) return true;
+        if (det > orient_bound_) return false;
+        return orient2d(a[0], a[1], b[0], b[1], px, py) < 0;
+    }
+
     PointSpan2 p_;
     std::uint32_t ghost_;
+    double incircle_bound_, orient_bound_;  // semi-static filters for this point set
     std::vector<std::uint32_t> vertex_;
     std::vector<std::uint32_t> twin_;
     std::vector<std::uint32_t> mark_;
@@ -192,7 +213,8 @@ Mesh incremental_mesh(const Input& input) {
     while ((o = orient2d(p[0][0], p[0][1], p[1][0], p[1][1], p[k][0], p[k][1])) == 0) ++k;
     Mesh mesh;
     {
-        Triangulation tri(p);
+        mesh.span = coordinate_span(p);
+        Triangulation tri(p, mesh.span);
         if (o > 0)
             tri.start(0, 1, k);
         else
