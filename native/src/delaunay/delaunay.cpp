@@ -15,9 +15,11 @@
 //  * `hull` starts at its lowest index and follows the boundary half-edges' direction.
 // The faces are unique, so every algorithm returns identical arrays.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <system_error>
 #include <thread>
@@ -165,7 +167,10 @@ void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector
         local_xy[2 * k] = p[i][0];
         local_xy[2 * k + 1] = p[i][1];
     }
+    // Every point represents itself (a sequential fill) unless the loop below finds it a duplicate:
+    // writing each entry there would scatter a write per point across the input-ordered array.
     out.representative.resize(n);
+    std::iota(out.representative.begin(), out.representative.end(), 0u);
     original.clear();
     original.reserve(n);
     std::size_t distinct = 0;  // distinct points so far, at the front of local_xy
@@ -210,7 +215,6 @@ void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector
                 out.representative[i] = original[match];
                 ++out.duplicate_count;
             } else {
-                out.representative[i] = i;
                 local_xy[2 * distinct] = local_xy[2 * k];
                 local_xy[2 * distinct + 1] = local_xy[2 * k + 1];
                 original.push_back(i);
@@ -408,17 +412,19 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
     const std::size_t count = mesh.vertex.size() / 3;  // ghosts included
     const std::size_t m = original.size();
     constexpr std::uint8_t kGhostTriangle = 3;
-    bool cocircular = false;
+    // Set by the check as soon as it finds a cocircular edge; the other work then stops early.
+    std::atomic<bool> cocircular{false};
     std::vector<std::uint8_t> low_of(count);
     std::vector<std::uint32_t> slot_of;  // canonical slot -> mesh triangle
     std::vector<std::uint32_t> position(count);
     std::size_t finite = 0;
     run_both(
-        parallel, [&] { cocircular = has_cocircular_edge(p, mesh); },
+        parallel, [&] { cocircular.store(has_cocircular_edge(p, mesh)); },
         [&] {
             // Pass 1: ghosts, the lowest corner, and the bucket sizes.
             std::vector<std::uint32_t> start(m + 1, 0);
             for (std::size_t t = 0; t < count; ++t) {
+                if (t % 65536 == 0 && cocircular.load(std::memory_order_relaxed)) return;
                 const std::uint32_t* v = vertex + 3 * t;
                 if (v[0] == ghost || v[1] == ghost || v[2] == ghost) {
                     low_of[t] = kGhostTriangle;
@@ -458,7 +464,7 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
             }
             for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
         });
-    if (cocircular) return false;
+    if (cocircular.load()) return false;
     // Pass 3: output corner j is mesh corner (low - j) mod 3 (clockwise from the lowest); output
     // half-edge j runs backwards along mesh half-edge (low + 2 - j) mod 3, so a mesh half-edge k of
     // triangle h is output half-edge (low_h + 5 - k) mod 3.
@@ -493,21 +499,24 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
     return true;
 }
 
-/// The hull cycle: from the lowest hull index along the boundary half-edges.
+/// The hull cycle: from the lowest hull index along the boundary half-edges. Every hull vertex
+/// starts exactly one boundary half-edge, so `successor` (indexed by input point; only hull
+/// vertices' entries are written and read) is the cycle.
 std::vector<std::uint32_t> hull_cycle(const std::vector<std::uint32_t>& triangles,
-                                      const std::vector<std::int32_t>& halfedges) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary;
+                                      const std::vector<std::int32_t>& halfedges, std::size_t point_count) {
+    std::unique_ptr<std::uint32_t[]> successor(new std::uint32_t[point_count]);
+    std::uint32_t first = std::numeric_limits<std::uint32_t>::max();
+    std::size_t length = 0;
     for (std::size_t e = 0; e < triangles.size(); ++e) {
-        if (halfedges[e] == -1) boundary.emplace_back(triangles[e], triangles[e % 3 == 2 ? e - 2 : e + 1]);
+        if (halfedges[e] != -1) continue;
+        const std::uint32_t from = triangles[e];
+        successor[from] = triangles[e % 3 == 2 ? e - 2 : e + 1];
+        first = std::min(first, from);
+        ++length;
     }
-    std::sort(boundary.begin(), boundary.end());
-    std::vector<std::uint32_t> hull;
-    hull.reserve(boundary.size());
-    std::uint32_t v = boundary.front().first;
-    for (std::size_t k = 0; k < boundary.size(); ++k) {
-        hull.push_back(v);
-        v = std::lower_bound(boundary.begin(), boundary.end(), std::make_pair(v, 0u))->second;
-    }
+    std::vector<std::uint32_t> hull(length);
+    std::uint32_t v = first;
+    for (std::size_t k = 0; k < length; ++k, v = successor[v]) hull[k] = v;
     return hull;
 }
 
@@ -648,7 +657,7 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
         const bool parallel = options.threads != 1 && m >= 50000;
         if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, parallel, out)) {
             mesh = delaunay_detail::Mesh();
-            out.hull = hull_cycle(out.triangles, out.halfedges);
+            out.hull = hull_cycle(out.triangles, out.halfedges, input.count);
             return out;
         }
         faces = delaunay_detail::mesh_faces(p, std::move(mesh));
@@ -659,7 +668,7 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
         if (twins.empty()) twins = match_halfedges(m, local);
         write_canonical(local, twins, in.original, out);
     }
-    out.hull = hull_cycle(out.triangles, out.halfedges);
+    out.hull = hull_cycle(out.triangles, out.halfedges, input.count);
     if (options.merge_cocircular) fill_polygons(faces, in.original, out);
     return out;
 }

@@ -57,22 +57,27 @@ public:
     void insert(std::uint32_t i) {
         const double px = p_[i][0], py = p_[i][1];
         const std::uint32_t t0 = locate(px, py);
-        // Collect the cavity by a search from t0 over conflicting neighbours.
-        ++stamp_;
+        // Collect the cavity by a search from t0 over conflicting neighbours. Each triangle tested
+        // is marked with the verdict (stamp_: in the cavity, stamp_ + 1: not), so that one next
+        // to two cavity triangles is tested once.
+        stamp_ += 2;
+        const std::uint32_t inside = stamp_, outside = stamp_ + 1;
         cavity_.clear();
         boundary_.clear();
-        mark_[t0] = stamp_;
+        mark_[t0] = inside;
         cavity_.push_back(t0);
         for (std::size_t k = 0; k < cavity_.size(); ++k) {
             const std::uint32_t t = cavity_[k];
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const std::uint32_t f = twin_[e];
                 const std::uint32_t u = f / 3;
-                if (mark_[u] == stamp_) continue;
-                if (conflicts(u, px, py)) {
-                    mark_[u] = stamp_;
+                const std::uint32_t mark = mark_[u];
+                if (mark == inside) continue;
+                if (mark != outside && conflicts(u, px, py)) {
+                    mark_[u] = inside;
                     cavity_.push_back(u);
                 } else {
+                    mark_[u] = outside;
                     boundary_.push_back(e);
                 }
             }
