@@ -549,6 +549,80 @@ inline int product_diff(double u, double v, double w, double z, double* h) {
     return two_two_diff(hi1, lo1, hi2, lo2, h);
 }
 
+// ---- Double-double numbers for a cheap look at stage B ----
+// A value hi + lo with |lo| <= ulp(hi) / 2. The operations are the "accurate" algorithms analysed
+// by Joldes, Muller and Popescu (ACM TOMS 44(2), 2017): the sum has relative error below 3 eps^2
+// (their Algorithm 6) and the product below 7 eps^2 (Algorithm 10, no FMA needed); below they are
+// counted as 4 eps^2 and 8 eps^2.
+struct DoubleDouble {
+    double hi, lo;
+};
+
+inline DoubleDouble dd_product(double a, double b) {
+    DoubleDouble r;
+    two_product(a, b, r.hi, r.lo);
+    return r;
+}
+
+inline DoubleDouble dd_sum(DoubleDouble a, DoubleDouble b) {
+    double s_hi, s_lo, t_hi, t_lo;
+    two_sum(a.hi, b.hi, s_hi, s_lo);
+    two_sum(a.lo, b.lo, t_hi, t_lo);
+    double v_hi, v_lo;
+    fast_two_sum(s_hi, s_lo + t_hi, v_hi, v_lo);
+    DoubleDouble r;
+    fast_two_sum(v_hi, t_lo + v_lo, r.hi, r.lo);
+    return r;
+}
+
+inline DoubleDouble dd_negate(DoubleDouble a) { return {-a.hi, -a.lo}; }
+
+inline DoubleDouble dd_times(DoubleDouble a, DoubleDouble b) {
+    double c_hi, c_lo;
+    two_product(a.hi, b.hi, c_hi, c_lo);
+    const double cross = a.hi * b.lo + a.lo * b.hi;
+    DoubleDouble r;
+    fast_two_sum(c_hi, c_lo + cross, r.hi, r.lo);
+    return r;
+}
+
+/// The in-circle determinant of the rounded differences (stage B's value) in double-double.
+/// Error bound, with L = x^2 + y^2 of a row and P = |minor products| of that row (the row's
+/// share of the permanent is L * P): the lift is a sum of two exact products (error <= 4 eps^2 L),
+/// the minor a difference of two (<= 4 eps^2 P); their product errs by <= 8 eps^2 L P from the
+/// rounded factors plus 8 eps^2 L P from its own rounding (+ O(eps^4)); the two sums add
+/// 4 eps^2 of the permanent each. In all at most 24 eps^2 (1 + O(eps)) times the permanent.
+double incircle_double_double(double adx, double ady, double bdx, double bdy, double cdx, double cdy) {
+    auto row = [](double x, double y, double p, double q, double r, double t) {
+        const DoubleDouble lift = dd_sum(dd_product(x, x), dd_product(y, y));
+        const DoubleDouble minor = dd_sum(dd_product(p, q), dd_negate(dd_product(r, t)));
+        return dd_times(lift, minor);
+    };
+    const DoubleDouble a = row(adx, ady, bdx, cdy, cdx, bdy);
+    const DoubleDouble b = row(bdx, bdy, cdx, ady, adx, cdy);
+    const DoubleDouble c = row(cdx, cdy, adx, bdy, bdx, ady);
+    const DoubleDouble sum = dd_sum(dd_sum(a, b), c);
+    return sum.hi;
+}
+
+/// Stage B's bound plus room for incircle_double_double: its 24 eps^2 of the permanent, the
+/// neglected lo part (|lo| <= eps |hi|, about 4 eps^2 of the permanent near the bound), and the
+/// rounding of the bound times the computed permanent (a few eps^2 more), with room to spare.
+constexpr double kIncircleBoundBdd = kIncircleBoundB + 128.0 * kEpsilon * kEpsilon;
+/// When the differences are exact, stage B's value is the determinant: then incircle_double_double
+/// decides whenever it is clear of its own error (24 eps^2 of the permanent), with room to spare.
+constexpr double kIncircleExactDifferencesDd = 64.0 * kEpsilon * kEpsilon;
+
+/// h = minor * (x^2 + y^2) exactly, for a minor of at most 4 components (h: at most 32).
+int lift_times_minor(int mlen, const double* minor, double x, double y, double* h) {
+    double mx[8], mxx[16], my[8], myy[16];
+    const int mx_len = scale_expansion(mlen, minor, x, mx);
+    const int mxx_len = scale_expansion(mx_len, mx, x, mxx);
+    const int my_len = scale_expansion(mlen, minor, y, my);
+    const int myy_len = scale_expansion(my_len, my, y, myy);
+    return expansion_sum(mxx_len, mxx, myy_len, myy, h);
+}
+
 /// Stages B-D of incircle, entered when the filter could not decide.
 int incircle_adapt(double ax, double ay, double bx, double by, double cx, double cy, double dx,
                    double dy, double permanent, int* stage) {
@@ -561,39 +635,52 @@ int incircle_adapt(double ax, double ay, double bx, double by, double cx, double
     const double bdx = bx - dx, bdy = by - dy;
     const double cdx = cx - dx, cdy = cy - dy;
 
-    // Stage B: the exact determinant of the rounded differences.
-    double alift[4], blift[4], clift[4], m_bc[4], m_ca[4], m_ab[4];
-    const int al = product_diff(adx, adx, -ady, ady, alift);
-    const int bl = product_diff(bdx, bdx, -bdy, bdy, blift);
-    const int cl = product_diff(cdx, cdx, -cdy, cdy, clift);
+    // Stage B, first in double-double: when that value is clear of stage B's bound by more than
+    // its own error, the exact value (below) is clear of the bound too and has its sign.
+    const double det_dd = incircle_double_double(adx, ady, bdx, bdy, cdx, cdy);
+    if (std::fabs(det_dd) > kIncircleBoundBdd * permanent) {
+        if (stage) *stage = 1;
+        return sign_of(det_dd);
+    }
+
+    const double adx_t = diff_roundoff(ax, dx, adx), ady_t = diff_roundoff(ay, dy, ady);
+    const double bdx_t = diff_roundoff(bx, dx, bdx), bdy_t = diff_roundoff(by, dy, bdy);
+    const double cdx_t = diff_roundoff(cx, dx, cdx), cdy_t = diff_roundoff(cy, dy, cdy);
+    const bool exact_differences = adx_t == 0.0 && ady_t == 0.0 && bdx_t == 0.0 && bdy_t == 0.0 &&
+                                   cdx_t == 0.0 && cdy_t == 0.0;
+    if (exact_differences && std::fabs(det_dd) > kIncircleExactDifferencesDd * permanent) {
+        // The differences were exact, so det_dd is within 24 eps^2 of the permanent of the
+        // determinant itself.
+        if (stage) *stage = 1;
+        return sign_of(det_dd);
+    }
+
+    // Stage B: the exact determinant of the rounded differences, each row's term as
+    // minor * dx * dx + minor * dy * dy by repeated scaling (fewer and shorter merges than
+    // multiplying the lift and the minor as expansions).
+    double m_bc[4], m_ca[4], m_ab[4];
     const int bc = product_diff(bdx, cdy, cdx, bdy, m_bc);
     const int ca = product_diff(cdx, ady, adx, cdy, m_ca);
     const int ab = product_diff(adx, bdy, bdx, ady, m_ab);
-    double scratch[32], part[8];
     double ta[32], tb[32], tc[32];
-    const int ta_len = multiply_expansions(al, alift, bc, m_bc, ta, scratch, part);
-    const int tb_len = multiply_expansions(bl, blift, ca, m_ca, tb, scratch, part);
-    const int tc_len = multiply_expansions(cl, clift, ab, m_ab, tc, scratch, part);
+    const int ta_len = lift_times_minor(bc, m_bc, adx, ady, ta);
+    const int tb_len = lift_times_minor(ca, m_ca, bdx, bdy, tb);
+    const int tc_len = lift_times_minor(ab, m_ab, cdx, cdy, tc);
     double ab_sum[64];
     const int ab_sum_len = expansion_sum(ta_len, ta, tb_len, tb, ab_sum);
     double b_exp[96];
     const int b_len = expansion_sum(ab_sum_len, ab_sum, tc_len, tc, b_exp);
+    if (exact_differences) {
+        // The differences were exact, so the stage B expansion is the determinant itself.
+        if (stage) *stage = 1;
+        return expansion_sign(b_len, b_exp);
+    }
 
     double det = estimate(b_len, b_exp);
     double errbound = kIncircleBoundB * permanent;
     if (std::fabs(det) > errbound) {
         if (stage) *stage = 1;
         return sign_of(det);
-    }
-
-    const double adx_t = diff_roundoff(ax, dx, adx), ady_t = diff_roundoff(ay, dy, ady);
-    const double bdx_t = diff_roundoff(bx, dx, bdx), bdy_t = diff_roundoff(by, dy, bdy);
-    const double cdx_t = diff_roundoff(cx, dx, cdx), cdy_t = diff_roundoff(cy, dy, cdy);
-    if (adx_t == 0.0 && ady_t == 0.0 && bdx_t == 0.0 && bdy_t == 0.0 && cdx_t == 0.0 &&
-        cdy_t == 0.0) {
-        // The differences were exact, so the stage B expansion is the determinant itself.
-        if (stage) *stage = 1;
-        return expansion_sign(b_len, b_exp);
     }
 
     // Stage C: the terms linear in the tails (d/dt of lift * minor), in floating point.

@@ -207,3 +207,38 @@ TEST_CASE("static bounds: every decision they allow is the exact sign, and they 
     CHECK(decided_incircle > cases / 8);
     CHECK(decided_orient > cases / 8);
 }
+
+TEST_CASE("incircle: near-cocircular points with exact and inexact differences agree with GMP", "[incircle]") {
+    // Stage B first tries the determinant in double-double arithmetic. Nearby points on a circle
+    // far from the origin have exact differences (Sterbenz), the case where that value decides
+    // against a bound of eps^2 rather than eps; points across the origin have inexact ones. Both
+    // kinds, rounded onto a circle and moved by a few ulps, must agree with GMP, and the
+    // adaptive stages must be reached often.
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::uniform_int_distribution<int> wiggle(-2, 2);
+    int adaptive = 0, cases = 0;
+    for (double centre : {1.5, 1e6 + 0.25, 0.0}) {
+        for (double radius : {1e-3, 0.4, 3.0}) {
+            for (int i = 0; i < 1500; ++i, ++cases) {
+                double v[8];
+                const double base = 2 * M_PI * unit(rng), spread = (i % 3 == 0 ? 1.0 : 1e-4) * 2 * M_PI;
+                for (int k = 0; k < 4; ++k) {
+                    const double t = base + spread * unit(rng);
+                    v[2 * k] = centre + radius * std::cos(t);
+                    v[2 * k + 1] = centre + radius * std::sin(t);
+                    if (i % 2 == 0) {
+                        v[2 * k] = ulp_step(v[2 * k], wiggle(rng));
+                        v[2 * k + 1] = ulp_step(v[2 * k + 1], wiggle(rng));
+                    }
+                }
+                check_case(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+                int stage = -1;
+                hullkit::detail::incircle_traced(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], &stage);
+                adaptive += stage > 0;
+            }
+        }
+    }
+    INFO("cases past the filter: " << adaptive << " of " << cases);
+    REQUIRE(adaptive > cases / 10);
+}
