@@ -6,8 +6,12 @@
 // largest component. Here expansions are kept free of zero components; length 0 means the value 0.
 #include "hullkit/predicates.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 
 #if defined(__FAST_MATH__)
 #error "hullkit predicates need strict IEEE-754 arithmetic: do not build them with -ffast-math"
@@ -613,6 +617,20 @@ constexpr double kIncircleBoundBdd = kIncircleBoundB + 128.0 * kEpsilon * kEpsil
 /// decides whenever it is clear of its own error (24 eps^2 of the permanent), with room to spare.
 constexpr double kIncircleExactDifferencesDd = 64.0 * kEpsilon * kEpsilon;
 
+/// 2^(12 - e) for the e with 2^(e-1) <= x < 2^e (x > 0 normal), so that x times it is below 2^12;
+/// NaN when x is 0 or subnormal or the power is not a normal double (the caller's test then fails).
+inline double power_of_two_below_4096_over(double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);  // x in [2^(biased-1023), 2^(biased-1022))
+    const int result = 2057 - biased;                            // biased exponent of 2^(1034 - biased)
+    if (biased == 0 || result < 1 || result > 2046) return std::numeric_limits<double>::quiet_NaN();
+    const std::uint64_t out = static_cast<std::uint64_t>(result) << 52;
+    double scale;
+    std::memcpy(&scale, &out, sizeof scale);
+    return scale;
+}
+
 /// h = minor * (x^2 + y^2) exactly, for a minor of at most 4 components (h: at most 32).
 int lift_times_minor(int mlen, const double* minor, double x, double y, double* h) {
     double mx[8], mxx[16], my[8], myy[16];
@@ -635,6 +653,28 @@ int incircle_adapt(double ax, double ay, double bx, double by, double cx, double
     const double bdx = bx - dx, bdy = by - dy;
     const double cdx = cx - dx, cdy = cy - dy;
 
+    const double adx_t = diff_roundoff(ax, dx, adx), ady_t = diff_roundoff(ay, dy, ady);
+    const double bdx_t = diff_roundoff(bx, dx, bdx), bdy_t = diff_roundoff(by, dy, bdy);
+    const double cdx_t = diff_roundoff(cx, dx, cdx), cdy_t = diff_roundoff(cy, dy, cdy);
+    const bool exact_differences = adx_t == 0.0 && ady_t == 0.0 && bdx_t == 0.0 && bdy_t == 0.0 &&
+                                   cdx_t == 0.0 && cdy_t == 0.0;
+    if (exact_differences) {
+        // Differences that are small multiples of one power of two (grids, integer points): scaled
+        // to integers below 2^12, every product and sum of the plain formula is an integer below
+        // 2^53, so the double result is exact, zero included.
+        const double largest = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
+                                         std::fabs(cdx), std::fabs(cdy)});
+        const double scale = power_of_two_below_4096_over(largest);
+        const double d[6] = {adx * scale, ady * scale, bdx * scale, bdy * scale, cdx * scale, cdy * scale};
+        if (d[0] == std::trunc(d[0]) && d[1] == std::trunc(d[1]) && d[2] == std::trunc(d[2]) &&
+            d[3] == std::trunc(d[3]) && d[4] == std::trunc(d[4]) && d[5] == std::trunc(d[5])) {
+            if (stage) *stage = 1;
+            return sign_of((d[0] * d[0] + d[1] * d[1]) * (d[2] * d[5] - d[4] * d[3]) +
+                           (d[2] * d[2] + d[3] * d[3]) * (d[4] * d[1] - d[0] * d[5]) +
+                           (d[4] * d[4] + d[5] * d[5]) * (d[0] * d[3] - d[2] * d[1]));
+        }
+    }
+
     // Stage B, first in double-double: when that value is clear of stage B's bound by more than
     // its own error, the exact value (below) is clear of the bound too and has its sign.
     const double det_dd = incircle_double_double(adx, ady, bdx, bdy, cdx, cdy);
@@ -642,12 +682,6 @@ int incircle_adapt(double ax, double ay, double bx, double by, double cx, double
         if (stage) *stage = 1;
         return sign_of(det_dd);
     }
-
-    const double adx_t = diff_roundoff(ax, dx, adx), ady_t = diff_roundoff(ay, dy, ady);
-    const double bdx_t = diff_roundoff(bx, dx, bdx), bdy_t = diff_roundoff(by, dy, bdy);
-    const double cdx_t = diff_roundoff(cx, dx, cdx), cdy_t = diff_roundoff(cy, dy, cdy);
-    const bool exact_differences = adx_t == 0.0 && ady_t == 0.0 && bdx_t == 0.0 && bdy_t == 0.0 &&
-                                   cdx_t == 0.0 && cdy_t == 0.0;
     if (exact_differences && std::fabs(det_dd) > kIncircleExactDifferencesDd * permanent) {
         // The differences were exact, so det_dd is within 24 eps^2 of the permanent of the
         // determinant itself.

@@ -242,3 +242,31 @@ TEST_CASE("incircle: near-cocircular points with exact and inexact differences a
     INFO("cases past the filter: " << adaptive << " of " << cases);
     REQUIRE(adaptive > cases / 10);
 }
+
+TEST_CASE("incircle: small integer and dyadic grids, cocircular or not, agree with GMP", "[incircle]") {
+    // Differences that are small multiples of one power of two are decided by the plain formula
+    // on scaled integers (exact below 2^53). Rectangles and isosceles trapezoids are cocircular;
+    // random lattice points mostly are not. Coordinates up to 3000 units, in units of 2^-30, 1
+    // and 2^40, and offset so that the differences, not the coordinates, are small.
+    std::mt19937_64 rng(37);
+    std::uniform_int_distribution<int> coordinate(-3000, 3000);
+    int zeros = 0;
+    for (double unit : {0x1p-30, 1.0, 0x1p+40}) {
+        for (double offset : {0.0, 0x1p+20}) {
+            for (int i = 0; i < 2000; ++i) {
+                double v[8];
+                if (i % 2 == 0) {  // a rectangle or trapezoid: cocircular
+                    const int x0 = coordinate(rng), y0 = coordinate(rng), w = coordinate(rng) / 2, h = coordinate(rng) / 2;
+                    const int inset = i % 4 == 0 ? 0 : coordinate(rng) / 8;
+                    const int corners[8] = {x0, y0, x0 + w, y0, x0 + w - inset, y0 + h, x0 + inset, y0 + h};
+                    for (int k = 0; k < 8; ++k) v[k] = offset + unit * corners[k];
+                } else {
+                    for (double& c : v) c = offset + unit * coordinate(rng);
+                }
+                zeros += check_case(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) == 0;
+            }
+        }
+    }
+    INFO("zeros: " << zeros);
+    REQUIRE(zeros > 3000);
+}
