@@ -578,17 +578,18 @@ TEST_CASE("cli: hull matches qconvex for rbox 500 s D3") { check_against_qconvex
 
 TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
     TempDir dir("hullkit-cli");
-    const std::string stl = data_path("binary-two-triangles.stl");
-    RunResult result = run_cli(dir, {"hull", stl});
-    CHECK(single_error_line(result) == "hullkit: " + stl +
-                                           ": not a point file: binary STL is not supported by the point reader "
-                                           "(read: xyz, rbox, OBJ, OFF)");
-    CHECK(result.out.empty());
-    // Through standard input too, and for arbitrary binary data: printable ASCII only.
+    // Arbitrary binary data, from a file and through standard input: printable ASCII only.
     const std::string junk = dir.file("junk.bin");
     std::string bytes;
     for (int i = 0; i < 256; ++i) bytes += static_cast<char>(255 - i);
     write_text(junk, bytes);
+    RunResult result = run_cli(dir, {"hull", junk});
+    CHECK(single_error_line(result) == "hullkit: " + junk + ": not a point file: binary data (byte 0x7f at offset 128)");
+    CHECK(result.out.empty());
+    // A binary STL on standard input: only files are read as meshes.
+    RunResult stl_in = run_cli(dir, {"hull"}, data_path("binary-two-triangles.stl"));
+    CHECK(single_error_line(stl_in) == "hullkit: <stdin>: not a point file: binary STL is not supported by the point reader "
+                                       "(read: xyz, rbox, OBJ, OFF)");
     const std::string message = "hullkit: <stdin>: not a point file: binary data (byte 0x7f at offset 128)";  // bytes >= 0x80 may be UTF-8 text
     RunResult redirected = run_cli(dir, {"hull"}, junk);
     CHECK(single_error_line(redirected) == message);
@@ -608,15 +609,63 @@ TEST_CASE("cli: a PNG, a PLY and an ASCII STL are named as what they are, exit 2
     CHECK(result.out.empty());
     for (unsigned char c : result.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
 
+    // A PLY and an STL from standard input: refused as what they are (files are read as meshes,
+    // see the next test).
     const std::string ply = dir.file("mesh.ply");
     write_text(ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
                     "end_header\n0 0 0\n");
-    CHECK(single_error_line(run_cli(dir, {"hull", ply})) ==
-          "hullkit: " + ply + ": not a point file: PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    CHECK(single_error_line(run_cli(dir, {"hull"}, ply)) ==
+          "hullkit: <stdin>: not a point file: PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
 
     const std::string stl = dir.file("mesh.stl");
     write_text(stl, "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
                     "endfacet\nendsolid t\n");
-    CHECK(single_error_line(run_cli(dir, {"hull", stl})) ==
-          "hullkit: " + stl + ": not a point file: ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    CHECK(single_error_line(run_cli(dir, {"hull"}, stl)) ==
+          "hullkit: <stdin>: not a point file: ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+}
+
+TEST_CASE("cli: PLY point clouds and STL files give the hull of their vertices, by name or by content") {
+    TempDir dir("hullkit-cli");
+    // A point cloud as scanners write it: vertices, no face element; one point inside.
+    const std::string cloud = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.1 0.1 0.1\n";
+    for (const std::string name : {"cloud.ply", "cloud.dat"}) {
+        write_text(dir.file(name), cloud);
+        RunResult result = run_cli(dir, {"hull", dir.file(name), "--stats", "-o", dir.file("c.off")});
+        REQUIRE(result.exit_code == 0);
+        Json stats = parse_stats(result);
+        CHECK(stats.at("points").number == 5);
+        CHECK(stats.at("vertices").number == 4);
+        CHECK(stats.at("volume").number == Approx(1.0 / 6.0).epsilon(1e-12));
+    }
+    // A binary STL whose name says nothing (its size says STL): the cube's corners.
+    const std::string stl = dir.file("upload.bin");
+    {
+        std::string bytes(80, ' ');
+        const float corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+        const int triangles[4][3] = {{0, 1, 2}, {3, 5, 6}, {4, 7, 1}, {2, 7, 5}};  // every corner used
+        const std::uint32_t count = 4;
+        bytes.append(reinterpret_cast<const char*>(&count), 4);
+        for (const auto& t : triangles) {
+            const float normal[3] = {0, 0, 0};
+            bytes.append(reinterpret_cast<const char*>(normal), 12);
+            for (int k = 0; k < 3; ++k) bytes.append(reinterpret_cast<const char*>(corners[t[k]]), 12);
+            bytes.append(2, '\0');
+        }
+        write_text(stl, bytes);
+    }
+    RunResult result = run_cli(dir, {"hull", stl, "--stats", "-o", dir.file("s.off")});
+    REQUIRE(result.exit_code == 0);
+    CHECK(parse_stats(result).at("vertices").number == 8);
+    CHECK(parse_stats(result).at("volume").number == Approx(1.0).epsilon(1e-12));
+    // The Delaunay command takes the cloud's x and y.
+    write_text(dir.file("flat.ply"), "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                                     "property double z\nend_header\n0 0 5\n1 0 5\n0 1 5\n1 1.5 5\n");
+    RunResult tri = run_cli(dir, {"delaunay", dir.file("flat.ply"), "--stats", "-o", dir.file("t.off")});
+    REQUIRE(tri.exit_code == 0);
+    CHECK(tri.err.find("\"points\":4,\"triangles\":2,") != std::string::npos);
+    // A PLY without vertices is still an error naming the file.
+    write_text(dir.file("empty.ply"), "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", dir.file("empty.ply")})) ==
+          "hullkit: " + dir.file("empty.ply") + ": the PLY header declares no \"vertex\" element");
 }

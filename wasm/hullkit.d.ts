@@ -102,7 +102,8 @@ export interface Hullkit {
   /**
    * The 3D points in a file, read by the C++ readers `hullkit hull` uses: "x y z" text, qhull/rbox
    * text, OBJ and OFF (their vertices, faces not needed), and PLY and STL (ASCII or binary: the
-   * mesh's vertices; STL corners with equal coordinates merged). A ".ply"/".stl" name picks the mesh
+   * mesh's vertices; a PLY point cloud without faces too; STL corners with equal coordinates
+   * merged). A ".ply"/".stl" name picks the mesh
    * reader, ".obj"/".off" the point reader; otherwise the content decides (PLY, STL, else text).
    * Returns x0 y0 z0 x1 y1 z1 ...
    *

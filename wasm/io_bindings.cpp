@@ -5,7 +5,6 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <cctype>
 #include <cstdint>
 #include <string>
 
@@ -20,59 +19,17 @@ std::string bytes_at(std::uintptr_t address, std::uint32_t length) {
     return std::string(reinterpret_cast<const char*>(address), length);
 }
 
-/// The lower-case extension of `name` ("" if none).
-std::string extension(const std::string& name) {
-    const std::size_t dot = name.find_last_of('.');
-    const std::size_t slash = name.find_last_of("/\\");
-    if (dot == std::string::npos || (slash != std::string::npos && slash > dot)) return {};
-    std::string ext = name.substr(dot + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-/// Whether the bytes go to the mesh readers rather than the point-text reader: a .ply or .stl name,
-/// or else content that detect_mesh_format takes for PLY or STL. OBJ, OFF, rbox and "x y z" text go
-/// to parse_points as with `hullkit hull` (which reads an OBJ's or OFF's vertices, also without
-/// faces).
-bool read_as_mesh(const std::string& bytes, const std::string& name) {
-    const std::string ext = extension(name);
-    if (ext == "ply" || ext == "stl") return true;
-    if (ext == "obj" || ext == "off") return false;
-    const hullkit::MeshFormat format = hullkit::detect_mesh_format(bytes, "");
-    return format == hullkit::MeshFormat::Ply || format == hullkit::MeshFormat::StlAscii ||
-           format == hullkit::MeshFormat::StlBinary;
-}
-
-/// 3D points: the vertices of a PLY or STL mesh, else parse_points (xyz, rbox, OBJ, OFF).
+/// 3D points from any file hullkit reads (hullkit::read_points: PLY and STL vertices, xyz, rbox,
+/// OBJ, OFF).
 hullkit::PointsResult read_points_from_heap(std::uintptr_t address, std::uint32_t length, const std::string& name) {
-    const std::string bytes = bytes_at(address, length);
-    if (!read_as_mesh(bytes, name)) return hullkit::parse_points(bytes, name);
-    hullkit::MeshResult mesh = hullkit::read_mesh(bytes, name);
-    hullkit::PointsResult points;
-    points.error = std::move(mesh.error);
-    points.xyz = std::move(mesh.xyz);
-    return points;
+    return hullkit::read_points(bytes_at(address, length), name);
 }
 
-/// 2D points: parse_points_2d as `hullkit delaunay` reads them, or for a mesh file (OBJ, OFF, PLY,
-/// STL, by name or content) the x and y of its points as read_points_from_heap reads them.
+/// 2D points (hullkit::read_points_2d: x y text as `hullkit delaunay` reads it, or the x and y of a
+/// mesh file's points).
 hullkit::Points2Result read_points_2d_from_heap(std::uintptr_t address, std::uint32_t length,
                                                 const std::string& name) {
-    const std::string bytes = bytes_at(address, length);
-    const std::string ext = extension(name);
-    const hullkit::MeshFormat format = hullkit::detect_mesh_format(bytes, "");
-    const bool mesh_file = ext == "obj" || ext == "off" || ext == "ply" || ext == "stl" ||
-                           format != hullkit::MeshFormat::Unknown;
-    if (!mesh_file) return hullkit::parse_points_2d(bytes, name);
-    hullkit::PointsResult points = read_points_from_heap(address, length, name);
-    hullkit::Points2Result out;
-    out.error = std::move(points.error);
-    out.xy.reserve(2 * points.count());
-    for (std::size_t i = 0; i < points.count(); ++i) {
-        out.xy.push_back(points.xyz[3 * i]);
-        out.xy.push_back(points.xyz[3 * i + 1]);
-    }
-    return out;
+    return hullkit::read_points_2d(bytes_at(address, length), name);
 }
 
 hullkit::MeshResult read_mesh_from_heap(std::uintptr_t address, std::uint32_t length, const std::string& name) {

@@ -17,6 +17,7 @@
 #include "cli_io.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 
 namespace hullkit_cli {
 namespace {
@@ -36,6 +37,8 @@ Input ('#' starts a comment):
   x y             one point per line (x y z lines also work: z is ignored)
   qhull / rbox    the dimension (2, or 3 with z ignored), the point count, then
                   one point per line ('rbox 100 D2 | hullkit delaunay')
+  OBJ, OFF, PLY,  the x and y of the file's vertices (by name or content)
+  STL
 
 Options:
   -o, --output FILE   write to FILE instead of standard output
@@ -406,7 +409,7 @@ std::string source_name(const std::string& path) { return path == "-" ? "<stdin>
 
 hullkit::Points2Result load_points_2d(const std::string& path, std::string* text) {
     *text = read_input(path);
-    hullkit::Points2Result points = hullkit::parse_points_2d(*text, source_name(path));
+    hullkit::Points2Result points = hullkit::read_points_2d(*text, source_name(path));
     if (!points.ok()) throw UsageError(points.error);
     return points;
 }

@@ -4,11 +4,14 @@
 // memory). Every failure prints exactly one line "hullkit: ..." on stderr.
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 #include "delaunay_command.hpp"
 #include "route_command.hpp"
 #include "verify_command.hpp"
 
+#include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -59,6 +62,8 @@ Input formats, detected automatically ('#' starts a comment in all of them):
   qhull / rbox    the dimension (3), the point count, then one point per line
   OBJ             'v x y z' lines are the points; other records are ignored
   OFF             'OFF', 'vertices faces edges', vertex lines; faces ignored
+  PLY, STL        a file's vertices (PLY point clouds without faces too), by
+                  name or content; from a file, not standard input
 
 Options:
   -o, --output FILE   write the hull to FILE instead of standard output
@@ -250,10 +255,40 @@ void print_stats(std::size_t points, const hullkit::Hull& hull, hullkit::Algorit
 
 // ---- commands ----
 
-/// Reads the points of `input` (a path, or stdin for "-") in chunks, without a copy of the text.
+/// Whether the file at `path` is a PLY or STL file: by its name, its first bytes ("ply", "solid"),
+/// or a size of exactly 84 + 50 * (the triangle count a binary STL header gives). Such files are
+/// read whole by hullkit::read_points; text point files are streamed.
+bool is_mesh_file(const std::string& path) {
+    std::string extension = path.size() > 4 ? path.substr(path.size() - 4) : "";
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".ply" || extension == ".stl") return true;
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return false;  // read_points_file reports it
+    unsigned char head[84];
+    const std::size_t got = std::fread(head, 1, sizeof head, file);
+    long size = -1;
+    if (std::fseek(file, 0, SEEK_END) == 0) size = std::ftell(file);
+    std::fclose(file);
+    if (got >= 3 && std::memcmp(head, "ply", 3) == 0) return true;
+    if (got >= 5 && std::memcmp(head, "solid", 5) == 0) return true;
+    if (got < 84 || size < 84) return false;
+    const std::uint64_t count = head[80] | head[81] << 8 | head[82] << 16 | static_cast<std::uint64_t>(head[83]) << 24;
+    return static_cast<std::uint64_t>(size) == 84 + 50 * count;
+}
+
+/// Reads the points of `input` (a path, or stdin for "-"): text in chunks, without a copy of the
+/// text; a PLY or STL file whole, its vertices as the points.
 hullkit::PointsResult load_points(const std::string& input, const std::string& name) {
-    hullkit::PointsResult points =
-        is_stdio(input) ? hullkit::read_points_file(stdin, name) : hullkit::read_points_file(input);
+    hullkit::PointsResult points;
+    if (is_stdio(input)) {
+        points = hullkit::read_points_file(stdin, name);
+    } else if (is_mesh_file(input)) {
+        std::string bytes, error;
+        if (!hullkit::read_file(input, &bytes, &error)) throw CliError(error);
+        points = hullkit::read_points(bytes, name);
+    } else {
+        points = hullkit::read_points_file(input);
+    }
     if (!points.ok()) throw CliError(points.error);
     return points;
 }

@@ -59,9 +59,10 @@ TEST_CASE("points2d: hullkit delaunay names a binary file, exit 2, nothing echoe
     CHECK(run.exit_code == 2);
     CHECK(run.out.empty());
     CHECK(run.err == "hullkit: " + png + ": not a point file: binary data (byte 0x1a at offset 6)\n");
+    // A PLY file goes to the PLY reader (its vertices are the points), which names what is wrong.
     const std::string ply = dir.file("mesh.ply");
     hullkit_test::write_text(ply, "ply\nformat binary_little_endian 1.0\nelement vertex 0\nend_header\n");
     const hullkit_test::RunResult run_ply = hullkit_test::run_cli(dir, {"delaunay", ply});
     CHECK(run_ply.exit_code == 2);
-    CHECK(run_ply.err == "hullkit: " + ply + ": not a point file: PLY" + kNotSupported + "\n");
+    CHECK(run_ply.err == "hullkit: " + ply + ": the PLY vertex element has no scalar property \"x\"\n");
 }

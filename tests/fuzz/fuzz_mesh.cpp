@@ -1,5 +1,6 @@
 // libFuzzer target: every mesh reader (native/src/io: OBJ, OFF, PLY ascii and binary, STL ascii and
-// binary) on arbitrary bytes. Each reader runs directly, and read_mesh (format detection) runs under
+// binary) and the point readers built on them (read_ply_points, read_points, read_points_2d) on
+// arbitrary bytes. Each reader runs directly, and read_mesh (format detection) runs under
 // a file name whose extension the input's size picks. Checked for every result:
 //  - a mesh: whole xyz triples, whole index triples, every index in range, finite coordinates
 //    (read_off_mesh may keep non-finite ones; read_mesh refuses them), STL corners merged exactly
@@ -80,6 +81,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(hullkit::read_off_mesh(bytes, "fuzz.off"), "fuzz.off", false, false);
     const hullkit::MeshResult ply = hullkit::read_ply_mesh(bytes, "fuzz.ply");
     check(ply, "fuzz.ply", true, false);
+    // The point readers on the same bytes: a PLY point cloud reads as the mesh's vertices whenever
+    // the mesh reads; every result is whole triples (pairs) or a one-line error naming the file.
+    const hullkit::PointsResult ply_points = hullkit::read_ply_points(bytes, "fuzz.ply");
+    if (ply.ok() && (!ply_points.ok() || ply_points.xyz != ply.xyz)) std::abort();
+    for (const char* name : {"fuzz.ply", "fuzz.stl", "fuzz"}) {
+        const hullkit::PointsResult points = hullkit::read_points(bytes, name);
+        const hullkit::Points2Result points2 = hullkit::read_points_2d(bytes, name);
+        if (points.ok() ? points.xyz.size() % 3 != 0 : points.error.rfind(std::string(name) + ":", 0) != 0) std::abort();
+        if (points2.ok() ? points2.xy.size() % 2 != 0 : points2.error.rfind(std::string(name) + ":", 0) != 0) std::abort();
+    }
     check(hullkit::read_stl_mesh(bytes, "fuzz.stl"), "fuzz.stl", true, true);
 
     // Detection, under a name whose extension decides when the content does not.

@@ -61,6 +61,11 @@ test('readPoints: point text, rbox and the vertices of meshes', () => {
   assert.deepEqual(hullkit.readPoints(data('tetra.off'), 'tetra.off'), hullkit.readMesh(data('tetra.off'), 'tetra.off').vertices);
   assert.deepEqual(hullkit.readPoints(binaryPly(), 'b.ply'), hullkit.readMesh(binaryPly(), 'b.ply').vertices);
   assert.equal(hullkit.readPoints(data('route/load.stl'), 'load.stl').length, 24);
+  // A PLY point cloud (no face element), by name and by content.
+  const cloud = text('ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n4 5 6\n');
+  assert.deepEqual([...hullkit.readPoints(cloud, 'scan.ply')], [1, 2, 3, 4, 5, 6]);
+  assert.deepEqual([...hullkit.readPoints(cloud, 'upload')], [1, 2, 3, 4, 5, 6]);
+  assert.deepEqual([...hullkit.readPoints2d(cloud, 'scan.ply')], [1, 2, 4, 5]);
   assert.equal(hullkit.readPoints(data('binary-two-triangles.stl'), 'upload.bin').length, 12);  // by content
   const points = hullkit.readPoints(data('cube.obj'), 'cube.obj');
   assert.equal(hullkit.hull(points).volume, hullkit.hull(hullkit.readMesh(data('cube.obj'), 'cube.obj').vertices).volume);

@@ -435,4 +435,38 @@ TEST_CASE("mesh_read: regression inputs from fuzzing (tests/data/fuzz) give a cl
     INFO(empty_rows.error);
     CHECK(empty_rows.xyz == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
     CHECK(empty_rows.triangles == std::vector<std::uint32_t>{0, 1, 2});
+    // An element named with non-ASCII bytes was echoed in "truncated in NAME ROW".
+    const MeshResult named = read("ply-element-name-binary-bytes.ply");
+    INFO(named.error);
+    CHECK(named.error.rfind("ply-element-name-binary-bytes.ply: binary PLY is truncated in \"noe???", 0) == 0);
+    for (unsigned char c : named.error) CHECK((c >= 0x20 && c < 0x7f));
+}
+
+TEST_CASE("mesh_read: PLY point clouds and read_points / read_points_2d for every format", "[mesh_read]") {
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string cloud = header + "end_header\n0 0 0\n1 2 3\n4 5 6\n";
+    // Without a face element: a mesh reader refuses it, the point readers take the vertices.
+    CHECK(hullkit::read_ply_mesh(cloud, "c.ply").error == "c.ply: the PLY header declares no \"face\" element");
+    const hullkit::PointsResult points = hullkit::read_ply_points(cloud, "c.ply");
+    REQUIRE(points.ok());
+    CHECK(points.xyz == std::vector<double>{0, 0, 0, 1, 2, 3, 4, 5, 6});
+    CHECK(hullkit::read_points(cloud, "c.ply").xyz == points.xyz);
+    CHECK(hullkit::read_points(cloud, "upload").xyz == points.xyz);  // by content
+    CHECK(hullkit::read_points_2d(cloud, "c.ply").xy == std::vector<double>{0, 0, 1, 2, 4, 5});
+    // Faces that are there are still checked.
+    const std::string bad_face = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+    CHECK(hullkit::read_points(bad_face, "f.ply").error.find("index 7 out of range") != std::string::npos);
+    // Text formats as parse_points / parse_points_2d read them; STL through the mesh reader.
+    CHECK(hullkit::read_points("0 0 0\n1 1 1\n", "p.xyz").xyz == std::vector<double>{0, 0, 0, 1, 1, 1});
+    CHECK(hullkit::read_points("v 0 0 0\nv 1 0 0\n", "cloud.obj").xyz.size() == 6);  // OBJ vertices, no faces
+    CHECK(hullkit::read_points_2d("0 0\n1 0\n0 1\n", "p.txt").xy == std::vector<double>{0, 0, 1, 0, 0, 1});
+    const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                            "endloop\nendfacet\nendsolid t\n";
+    CHECK(hullkit::read_points(stl, "t.stl").xyz == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+    CHECK(hullkit::read_points_2d(stl, "t").xy == std::vector<double>{0, 0, 1, 0, 0, 1});
+    // Errors keep the reader's wording.
+    CHECK(hullkit::read_points("0 0\n", "p.xyz").error == "p.xyz:1: expected 3 coordinates, got 2");
+    CHECK_FALSE(hullkit::read_points_2d(header + "end_header\n0 0\n", "short.ply").ok());
 }

@@ -45,4 +45,19 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source);
 /// are merged into one vertex, in the order of first appearance.
 MeshResult read_stl_mesh(const std::string& bytes, const std::string& source);
 
+/// The vertices of a PLY file as points: as read_ply_mesh, but the "face" element may be missing
+/// (a point cloud, as scanners write them); faces that are there are read and checked, not
+/// returned.
+PointsResult read_ply_points(const std::string& bytes, const std::string& source);
+
+/// 3D points from the bytes of any file hullkit reads: PLY by read_ply_points, STL (the mesh's
+/// vertices) by read_stl_mesh, and xyz, rbox, OBJ and OFF text by parse_points (an OBJ's or OFF's
+/// vertices, faces not needed). A .ply or .stl name, or else content that detect_mesh_format takes
+/// for PLY or STL, picks the mesh readers; a .obj or .off name, or anything else, parse_points.
+PointsResult read_points(const std::string& bytes, const std::string& source);
+
+/// 2D points likewise: for a mesh file (OBJ, OFF, PLY or STL, by name or content) the x and y of
+/// what read_points reads; otherwise parse_points_2d (x y, x y z or rbox text).
+Points2Result read_points_2d(const std::string& bytes, const std::string& source);
+
 }  // namespace hullkit

@@ -192,4 +192,39 @@ MeshResult read_mesh(const std::string& bytes, const std::string& source) {
     return result;
 }
 
+PointsResult read_points(const std::string& bytes, const std::string& source) {
+    const std::string extension = io::extension_of(source);
+    MeshFormat format = MeshFormat::Unknown;
+    if (extension == "ply") {
+        format = MeshFormat::Ply;
+    } else if (extension == "stl") {
+        format = MeshFormat::StlBinary;
+    } else if (extension != "obj" && extension != "off") {
+        format = detect_mesh_format(bytes, "");
+    }
+    PointsResult points;
+    if (format == MeshFormat::Ply) return read_ply_points(bytes, source);
+    if (format != MeshFormat::StlAscii && format != MeshFormat::StlBinary) return parse_points(bytes, source);
+    MeshResult mesh = read_mesh(bytes, source);  // STL (ASCII or binary, by content)
+    points.error = std::move(mesh.error);
+    points.xyz = std::move(mesh.xyz);
+    return points;
+}
+
+Points2Result read_points_2d(const std::string& bytes, const std::string& source) {
+    const std::string extension = io::extension_of(source);
+    const bool mesh_file = extension == "obj" || extension == "off" || extension == "ply" || extension == "stl" ||
+                           detect_mesh_format(bytes, "") != MeshFormat::Unknown;
+    if (!mesh_file) return parse_points_2d(bytes, source);
+    const PointsResult points = read_points(bytes, source);
+    Points2Result out;
+    out.error = points.error;
+    out.xy.reserve(2 * points.count());
+    for (std::size_t i = 0; i < points.count(); ++i) {
+        out.xy.push_back(points.xyz[3 * i]);
+        out.xy.push_back(points.xyz[3 * i + 1]);
+    }
+    return out;
+}
+
 }  // namespace hullkit

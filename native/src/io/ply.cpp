@@ -3,6 +3,7 @@
 
 #include "mesh_read_internal.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -143,6 +144,13 @@ std::string read_header(const std::string& bytes, const std::string& source, Hea
     return source + ": the PLY header has no \"end_header\"";
 }
 
+/// An element's name for messages: as it is when it is short printable ASCII, otherwise quoted with
+/// every other byte shown as '?' (a header may name an element anything; no byte of it is echoed).
+std::string element_label(const std::string& name) {
+    if (name.size() <= 40 && std::all_of(name.begin(), name.end(), [](char c) { return c > 0x20 && c < 0x7f; })) return name;
+    return io::quote(name);
+}
+
 /// Hands out the values of the body one by one, as text fields or binary scalars.
 class BodyReader {
 public:
@@ -154,7 +162,7 @@ public:
 
     /// Starts row `row` of element `element` (for messages; ascii: moves to the next non-blank line).
     bool begin_row(const Element& element, std::uint64_t row) {
-        where_ = element.name + " " + std::to_string(row);
+        where_ = element_label(element.name) + " " + std::to_string(row);
         if (encoding_ != Encoding::Ascii) {
             row_offset_ = offset_;
             return true;
@@ -276,7 +284,10 @@ int find_property(const Element& element, std::initializer_list<const char*> nam
 
 }  // namespace
 
-MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
+namespace {
+
+/// The PLY reader; without `faces_required` a file with no "face" element is a point cloud.
+MeshResult read_ply(const std::string& bytes, const std::string& source, bool faces_required) {
     Header header;
     std::string error = read_header(bytes, source, &header);
     if (!error.empty()) return io::mesh_error(error);
@@ -306,7 +317,7 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
         }
     }
     if (!vertex) return io::mesh_error(source + ": the PLY header declares no \"vertex\" element");
-    if (!face) return io::mesh_error(source + ": the PLY header declares no \"face\" element");
+    if (!face && faces_required) return io::mesh_error(source + ": the PLY header declares no \"face\" element");
     if (vertex->count > 0xffffffffULL) return io::mesh_error(source + ": too many vertices for 32-bit indices");
 
     MeshResult mesh;
@@ -335,7 +346,7 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
                 if (!body.read(property.count_type, &count)) return io::mesh_error(body.error());
                 const bool is_face_list = &element == face && static_cast<int>(p) == index_property;
                 if (count < 0 || (is_face_list && count < 3)) {
-                    body.fail(element.name + " " + std::to_string(row) + ": " +
+                    body.fail(element_label(element.name) + " " + std::to_string(row) + ": " +
                               (count < 0 ? "a list count is negative: " : "a face needs at least 3 vertices, got ") +
                               integer_text(count));
                     return io::mesh_error(body.error());
@@ -360,6 +371,20 @@ MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
     }
     if (!body.finish()) return io::mesh_error(body.error());
     return mesh;
+}
+
+}  // namespace
+
+MeshResult read_ply_mesh(const std::string& bytes, const std::string& source) {
+    return read_ply(bytes, source, true);
+}
+
+PointsResult read_ply_points(const std::string& bytes, const std::string& source) {
+    MeshResult mesh = read_ply(bytes, source, false);
+    PointsResult points;
+    points.error = std::move(mesh.error);
+    points.xyz = std::move(mesh.xyz);
+    return points;
 }
 
 }  // namespace hullkit
