@@ -41,9 +41,10 @@ struct DelaunayOptions {
     /// Also report the Delaunay polygons (Delaunay::polygon_offsets / polygon_vertices): the lower
     /// faces of the lifted hull before triangulation (a square grid gives squares).
     bool merge_cocircular = false;
-    /// Threads for the output stage of large inputs: 0 (the default) for two where the platform
-    /// has threads (the WebAssembly build has not), 1 for the calling thread alone. The result is
-    /// the same either way.
+    /// Threads for the output stage of inputs of 50 000 points or more: 1 keeps everything on the
+    /// calling thread; any other value (0, the default) lets a second thread share the output
+    /// stage where the platform has threads (the WebAssembly build has not). The result is the
+    /// same either way.
     unsigned threads = 0;
 };
 
