@@ -450,11 +450,25 @@ struct Oracle {
 
 }  // namespace
 
+#if defined(__SANITIZE_ADDRESS__)  // GCC
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
 TEST_CASE("route: randomized oracle, 10 000 exact static samples per leg") {
     std::mt19937_64 rng(20261129);
     std::uniform_real_distribution<double> place(-2.0, 2.0), size(0.3, 0.9);
     int hits = 0, clears = 0, starts = 0, checked_clearances = 0;
-    const int scenes = 40;
+    // Under the sanitizers (about ten times slower) 10 of the 40 scenes: that run looks for memory
+    // errors and undefined behaviour; the plain build checks the answers on all 40.
+    const int scenes = kSanitized ? 10 : 40;
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
         std::vector<Mesh> parts, obstacles;
         const int part_count = 1 + static_cast<int>(rng() % 2);
@@ -511,7 +525,7 @@ TEST_CASE("route: randomized oracle, 10 000 exact static samples per leg") {
     }
     // The scenes must exercise every outcome for the oracle to mean something.
     CAPTURE(hits, clears, starts, checked_clearances);
-    CHECK(hits >= 5);
-    CHECK(clears >= 5);
-    CHECK(checked_clearances >= 8);
+    CHECK(hits >= 5 * scenes / 40);
+    CHECK(clears >= 5 * scenes / 40);
+    CHECK(checked_clearances >= 8 * scenes / 40);
 }
