@@ -316,13 +316,12 @@ int orient2d_adapt(double ax, double ay, double bx, double by, double cx, double
 /// Stage A; falls through to orient2d_adapt.
 inline int orient2d_impl(double ax, double ay, double bx, double by, double cx, double cy,
                          int* stage) {
-    const double left = (ax - cx) * (by - cy);
-    const double right = (ay - cy) * (bx - cx);
-    const double det = left - right;
+    // Stage A (detail::orient2d_stage_a, shared with the header's inline and semi-static tests).
     // No early exit on opposite signs of left and right (Shewchuk's shortcut): on random input
     // that branch is unpredictable and costs more than it saves. With opposite signs there is no
     // cancellation and |det| exceeds the bound anyway.
-    const double detsum = std::fabs(left) + std::fabs(right);
+    const detail::Orient2dStageA a = detail::orient2d_stage_a(ax, ay, bx, by, cx, cy);
+    const double det = a.det, detsum = a.permanent;
     const double errbound = kOrient2dBoundA * detsum;
     if (stage) *stage = 0;
     if (std::fabs(det) > errbound) return sign_of(det);

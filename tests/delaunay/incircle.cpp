@@ -154,12 +154,13 @@ TEST_CASE("compare_distance: agrees with GMP", "[incircle]") {
 TEST_CASE("static bounds: every decision they allow is the exact sign, and they cover stage A's bound", "[incircle]") {
     // Points in boxes of several widths and offsets: uniform, nearly cocircular (on a circle,
     // rounded), nearly collinear, and on the box's corners (the largest differences). Wherever the
-    // semi-static bound lets |det| decide, the sign must be GMP's; and the bound must be at least
-    // stage A's own error bound for the same points (the argument the filters rest on).
+    // semi-static bound lets |det| decide, the sign must be GMP's; the bound must be at least
+    // stage A's own error bound for the same points (the argument the filters rest on); and
+    // orient2d_semi_static / incircle_semi_static must give GMP's sign.
     using namespace hullkit::detail;
     std::mt19937_64 rng(29);
     std::uniform_real_distribution<double> u(0, 1);
-    std::size_t decided_incircle = 0, decided_orient = 0, cases = 0;
+    std::size_t decided_incircle = 0, decided_orient = 0, cases = 0, in_range_cases = 0;
     for (double offset : {0.0, -3.5, 1e7, 0x1p+60}) {
         for (double width : {1.0, 1e-6, 3e5}) {
             const double lo = offset, hi = offset + width;
@@ -192,19 +193,36 @@ TEST_CASE("static bounds: every decision they allow is the exact sign, and they 
                     ++decided_incircle;
                     REQUIRE((a.det > 0 ? 1 : -1) == gmp_incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
                 }
-                const double left = (v[0] - v[4]) * (v[3] - v[5]);
-                const double right = (v[1] - v[5]) * (v[2] - v[4]);
-                const double det = left - right;
-                REQUIRE(line_bound >= kOrient2dFilterBound * (std::fabs(left) + std::fabs(right)));
+                // The full answer, where the coordinates are in the predicates' exact range (a corner
+                // moved off 0 by an ulp is subnormal, outside it).
+                double largest = 0, smallest = INFINITY;
+                for (double c : v) {
+                    largest = std::max(largest, std::fabs(c));
+                    if (c != 0) smallest = std::min(smallest, std::fabs(c));
+                }
+                const bool in_range = hullkit::incircle_range_ok(largest, smallest);
+                in_range_cases += in_range;
+                if (in_range) {
+                    REQUIRE(incircle_semi_static(circle_bound, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]) ==
+                            gmp_incircle(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]));
+                }
+                const Orient2dStageA o = orient2d_stage_a(v[0], v[1], v[2], v[3], v[4], v[5]);
+                const double det = o.det;
+                REQUIRE(line_bound >= kOrient2dFilterBound * o.permanent);
                 if (det > line_bound || -det > line_bound) {
                     ++decided_orient;
                     REQUIRE((det > 0 ? 1 : -1) == delaunay_test::rational_orient2d(v[0], v[1], v[2], v[3], v[4], v[5]));
+                }
+                if (in_range) {
+                    REQUIRE(orient2d_semi_static(line_bound, v[0], v[1], v[2], v[3], v[4], v[5]) ==
+                            delaunay_test::rational_orient2d(v[0], v[1], v[2], v[3], v[4], v[5]));
                 }
             }
         }
     }
     // The filters must decide most random cases, or they would be useless.
     CHECK(decided_incircle > cases / 8);
+    CHECK(in_range_cases > cases / 2);
     CHECK(decided_orient > cases / 8);
 }
 

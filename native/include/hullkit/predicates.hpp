@@ -177,19 +177,28 @@ int orient2d_adapt_entry(double ax, double ay, double bx, double by, double cx, 
 int incircle_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
                          double dx, double dy, double permanent);
 
-/// orient2d with stage A inline.
-inline int orient2d_inline(double ax, double ay, double bx, double by, double cx, double cy) {
+/// orient2d's stage A: the determinant in floating point and its permanent, |left| + |right|
+/// (the bound on its rounding error is kOrient2dFilterBound times the permanent).
+struct Orient2dStageA {
+    double det;
+    double permanent;
+};
+inline Orient2dStageA orient2d_stage_a(double ax, double ay, double bx, double by, double cx, double cy) {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
     const double left = (ax - cx) * (by - cy);
     const double right = (ay - cy) * (bx - cx);
-    const double det = left - right;
-    const double detsum = (left < 0 ? -left : left) + (right < 0 ? -right : right);
-    const double errbound = kOrient2dFilterBound * detsum;
-    if (det > errbound) return 1;
-    if (-det > errbound) return -1;
-    return orient2d_adapt_entry(ax, ay, bx, by, cx, cy, detsum);
+    return {left - right, (left < 0 ? -left : left) + (right < 0 ? -right : right)};
+}
+
+/// orient2d with stage A inline.
+inline int orient2d_inline(double ax, double ay, double bx, double by, double cx, double cy) {
+    const Orient2dStageA a = orient2d_stage_a(ax, ay, bx, by, cx, cy);
+    const double errbound = kOrient2dFilterBound * a.permanent;
+    if (a.det > errbound) return 1;
+    if (-a.det > errbound) return -1;
+    return orient2d_adapt_entry(ax, ay, bx, by, cx, cy, a.permanent);
 }
 
 /// incircle's stage A: the determinant in floating point and its permanent (the bound on its
@@ -233,6 +242,23 @@ inline double incircle_static_bound(double span) {
 }
 inline double orient2d_static_bound(double span) {
     return kOrient2dFilterBound * 2.0 * (span * span) * (1.0 + 0x1p-40);
+}
+
+/// orient2d and incircle that first try a semi-static bound for the whole point set
+/// (orient2d_static_bound / incircle_static_bound): the stage A determinant alone, without its
+/// permanent; the full predicate when the bound cannot tell. Always the exact sign.
+inline int orient2d_semi_static(double bound, double ax, double ay, double bx, double by, double cx, double cy) {
+    const double det = orient2d_stage_a(ax, ay, bx, by, cx, cy).det;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return orient2d(ax, ay, bx, by, cx, cy);
+}
+inline int incircle_semi_static(double bound, double ax, double ay, double bx, double by, double cx, double cy,
+                                double dx, double dy) {
+    const double det = incircle_stage_a(ax, ay, bx, by, cx, cy, dx, dy).det;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return incircle(ax, ay, bx, by, cx, cy, dx, dy);
 }
 
 /// incircle with stage A inline.

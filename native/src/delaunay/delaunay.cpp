@@ -389,9 +389,7 @@ bool has_cocircular_edge(PointSpan2 p, const delaunay_detail::Mesh& mesh) {
             const std::uint32_t opposite = vertex[f % 3 == 0 ? f + 2 : f - 1];  // f's corner off the edge
             if (opposite == ghost) continue;
             const double* d = p[opposite];
-            const double det = detail::incircle_stage_a(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]).det;
-            if (!(det > bound || -det > bound) && incircle(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0)
-                return true;
+            if (detail::incircle_semi_static(bound, a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0) return true;
         }
     }
     return false;

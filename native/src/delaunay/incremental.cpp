@@ -133,10 +133,8 @@ private:
     bool conflicts(std::uint32_t t, double px, double py) const {
         const std::uint32_t a = vertex_[3 * t], b = vertex_[3 * t + 1], c = vertex_[3 * t + 2];
         if (a != ghost_ && b != ghost_ && c != ghost_) {
-            const double det = detail::incircle_stage_a(p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0], p_[c][1], px, py).det;
-            if (det > incircle_bound_) return true;
-            if (-det > incircle_bound_) return false;
-            return incircle(p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0], p_[c][1], px, py) > 0;
+            return detail::incircle_semi_static(incircle_bound_, p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0],
+                                                p_[c][1], px, py) > 0;
         }
         // Ghost (x, y, G) in cyclic order: the outside of hull edge x->y is on its left.
         const std::uint32_t x = a == ghost_ ? b : (b == ghost_ ? c : a);
@@ -168,7 +166,7 @@ private:
                 const std::uint32_t e = 3 * t + (r + k) % 3;
                 const double* a = p_[vertex_[e]];
                 const double* b = p_[vertex_[next_edge(e)]];
-                if (right_of(a, b, px, py)) {
+                if (detail::orient2d_semi_static(orient_bound_, a[0], a[1], b[0], b[1], px, py) < 0) {
                     t = twin_[e] / 3;
                     moved = true;
                     break;
@@ -177,17 +175,6 @@ private:
             if (!moved) return t;
             if (is_ghost(t)) return t;
         }
-    }
-
-    /// orient2d(a, b, p) < 0, the static filter first.
-    bool right_of(const double* a, const double* b, double px, double py) const {
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#endif
-        const double det = (a[0] - px) * (b[1] - py) - (a[1] - py) * (b[0] - px);
-        if (det < -orient_bound_) return true;
-        if (det > orient_bound_) return false;
-        return orient2d(a[0], a[1], b[0], b[1], px, py) < 0;
     }
 
     PointSpan2 p_;
