@@ -9,7 +9,6 @@
 #include "route_command.hpp"
 #include "verify_command.hpp"
 
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <chrono>
@@ -255,25 +254,18 @@ void print_stats(std::size_t points, const hullkit::Hull& hull, hullkit::Algorit
 
 // ---- commands ----
 
-/// Whether the file at `path` is a PLY or STL file: by its name, its first bytes ("ply", "solid"),
-/// or a size of exactly 84 + 50 * (the triangle count a binary STL header gives). Such files are
-/// read whole by hullkit::read_points; text point files are streamed.
+/// Whether the file at `path` goes to the mesh readers (hullkit::starts_like_mesh_file on its first
+/// 84 bytes and its size). Such files are read whole by hullkit::read_points; text point files
+/// are streamed.
 bool is_mesh_file(const std::string& path) {
-    std::string extension = path.size() > 4 ? path.substr(path.size() - 4) : "";
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".ply" || extension == ".stl") return true;
     std::FILE* file = std::fopen(path.c_str(), "rb");
     if (!file) return false;  // read_points_file reports it
-    unsigned char head[84];
+    char head[84];
     const std::size_t got = std::fread(head, 1, sizeof head, file);
     long size = -1;
     if (std::fseek(file, 0, SEEK_END) == 0) size = std::ftell(file);
     std::fclose(file);
-    if (got >= 3 && std::memcmp(head, "ply", 3) == 0) return true;
-    if (got >= 5 && std::memcmp(head, "solid", 5) == 0) return true;
-    if (got < 84 || size < 84) return false;
-    const std::uint64_t count = head[80] | head[81] << 8 | head[82] << 16 | static_cast<std::uint64_t>(head[83]) << 24;
-    return static_cast<std::uint64_t>(size) == 84 + 50 * count;
+    return hullkit::starts_like_mesh_file(std::string(head, got), size < 0 ? 0 : static_cast<std::uint64_t>(size), path);
 }
 
 /// Reads the points of `input` (a path, or stdin for "-"): text in chunks, without a copy of the

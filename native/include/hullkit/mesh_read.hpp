@@ -10,6 +10,7 @@
 
 #include "hullkit/mesh_io.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace hullkit {
@@ -55,6 +56,12 @@ PointsResult read_ply_points(const std::string& bytes, const std::string& source
 /// vertices, faces not needed). A .ply or .stl name, or else content that detect_mesh_format takes
 /// for PLY or STL, picks the mesh readers; a .obj or .off name, or anything else, parse_points.
 PointsResult read_points(const std::string& bytes, const std::string& source);
+
+/// Whether read_points would read a file with the mesh readers, judged from its first bytes
+/// (`head`, at least 84 when the file is that long) and its `size`: a .ply or .stl name (not .obj
+/// or .off), "ply" or "solid" first, or exactly the size of a binary STL with the triangle count
+/// its header gives. For callers that stream point text and read mesh files whole.
+bool starts_like_mesh_file(const std::string& head, std::uint64_t size, const std::string& source);
 
 /// 2D points likewise: for a mesh file (OBJ, OFF, PLY or STL, by name or content) the x and y of
 /// what read_points reads; otherwise parse_points_2d (x y, x y z or rbox text).

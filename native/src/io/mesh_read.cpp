@@ -95,12 +95,14 @@ bool starts_with_word(std::string_view text, std::string_view word) {
 }
 
 /// A binary STL's size is exactly 84 + 50 * the count stored at byte 80.
-bool has_binary_stl_size(const std::string& bytes) {
-    if (bytes.size() < 84) return false;
-    const auto* b = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
+bool has_binary_stl_size(std::string_view head, std::uint64_t size) {
+    if (head.size() < 84 || size < 84) return false;
+    const auto* b = reinterpret_cast<const unsigned char*>(head.data()) + 80;
     std::uint64_t count = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint64_t{b[3]} << 24);
-    return bytes.size() == 84 + 50 * count;
+    return size == 84 + 50 * count;
 }
+
+bool has_binary_stl_size(const std::string& bytes) { return has_binary_stl_size(bytes, bytes.size()); }
 
 /// ASCII STL starts with "solid"; binary STL headers sometimes do too, so also look for "facet"
 /// or "endsolid" and for the absence of NUL bytes near the start.
@@ -190,6 +192,13 @@ MeshResult read_mesh(const std::string& bytes, const std::string& source) {
     }
     if (result.triangles.empty()) return io::mesh_error(source + ": the mesh has no triangles");
     return result;
+}
+
+bool starts_like_mesh_file(const std::string& head, std::uint64_t size, const std::string& source) {
+    const std::string extension = io::extension_of(source);
+    if (extension == "ply" || extension == "stl") return true;
+    if (extension == "obj" || extension == "off") return false;
+    return starts_with_word(head, "ply") || starts_with_word(head, "solid") || io::has_binary_stl_size(head, size);
 }
 
 PointsResult read_points(const std::string& bytes, const std::string& source) {

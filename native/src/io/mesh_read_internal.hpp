@@ -64,6 +64,8 @@ std::string at_line(const std::string& source, std::size_t line, const std::stri
 bool starts_with_word(std::string_view text, std::string_view word);
 /// A binary STL's size is exactly 84 + 50 * the triangle count stored at byte 80.
 bool has_binary_stl_size(const std::string& bytes);
+/// The same test for a file of `size` bytes of which `head` holds the first (at least 84 of them).
+bool has_binary_stl_size(std::string_view head, std::uint64_t size);
 /// ASCII STL starts with "solid"; binary STL headers sometimes do too, so this also wants "facet"
 /// or "endsolid" and no NUL byte in the first kilobyte.
 bool looks_like_ascii_stl(const std::string& bytes);
