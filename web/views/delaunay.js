@@ -230,18 +230,25 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
 
   // ------------------------------------------------------------ drawing
 
+  /** The points as drawn: lifted onto the paraboloid (z = LIFT (x² + y²)) and in the plane (z = 0). */
+  function liftedAndPlanePositions(coords) {
+    const n = coords.length / 2;
+    const liftedPos = new Float32Array(3 * n);
+    const planePos = new Float32Array(3 * n);
+    for (let i = 0; i < n; i++) {
+      const x = coords[2 * i], y = coords[2 * i + 1];
+      liftedPos.set([x, y, LIFT * (x * x + y * y)], 3 * i);
+      planePos.set([x, y, 0], 3 * i);
+    }
+    return { liftedPos, planePos };
+  }
+
   function drawTriangulation() {
     clearGroup(lifted);
     clearGroup(plane);
     clearGroup(planeIn3d);
     const n = xy.length / 2;
-    const liftedPos = new Float32Array(3 * n);
-    const planePos = new Float32Array(3 * n);
-    for (let i = 0; i < n; i++) {
-      const x = xy[2 * i], y = xy[2 * i + 1];
-      liftedPos.set([x, y, LIFT * (x * x + y * y)], 3 * i);
-      planePos.set([x, y, 0], 3 * i);
-    }
+    const { liftedPos, planePos } = liftedAndPlanePositions(xy);
     const liftedAttr = new THREE.BufferAttribute(liftedPos, 3);
     const planeAttr = new THREE.BufferAttribute(planePos, 3);
     const edges = triangleEdges(tri.triangles, tri.halfedges);
@@ -673,15 +680,8 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   const liftStepper = createGiftwrapStepper({
     worker, requestRender, prefix: 'dl-step', hook: 'hullkitLiftStepper', lifted: true, limit: LIFT_STEP_MAX,
     targets: (coords) => {
-      const n = coords.length / 2;
-      const up = new Float32Array(3 * n);
-      const flat = new Float32Array(3 * n);
-      for (let i = 0; i < n; i++) {
-        const x = coords[2 * i], y = coords[2 * i + 1];
-        up.set([x, y, LIFT * (x * x + y * y)], 3 * i);
-        flat.set([x, y, 0], 3 * i);
-      }
-      return [{ scene: scene3d, positions: up }, { scene: scene2d, positions: flat }];
+      const { liftedPos, planePos } = liftedAndPlanePositions(coords);
+      return [{ scene: scene3d, positions: liftedPos }, { scene: scene2d, positions: planePos }];
     },
     request: (coords) => ({ type: 'trace', xy: coords, lifted: true }),
     hideResult: (hidden) => {
