@@ -1,9 +1,15 @@
 // hullkit_route_bench: hullkit's route check against FCL 0.7 on the same scene and route.
 //
 //   hullkit_route_bench --scene SCENE.json --route ROUTE.json [--runs N] [--reference-poses P]
+//   hullkit_route_bench --scene SCENE.json --route A.json [--route B.json ...] --legs L --threads T
+//                       [--no-clearance] [--runs N] [--dump FILE]
 //
 // SCENE is a `hullkit route` scene (its own route is ignored); ROUTE a JSON array of waypoints.
-// Prints one JSON line per method to stdout:
+// With --threads (RouteOptions::threads) it times hullkit alone on L legs: the waypoints of the
+// routes given, in turn and over again, as one route. It prints one JSON line: the first check
+// in this process ("first_seconds": run it in a fresh process) and the median of N more
+// ("warm_seconds"); --dump writes the report with every double as its bits, for `cmp` against
+// another thread count's. Otherwise it prints one JSON line per method to stdout:
 //   hullkit            RouteChecker: build (hulls + BVH), check with clearance off (verdict and
 //                      first contact) and on
 //   fcl-100            fcl::collide (BVHModel<OBBRSS>) at 100 evenly spaced poses per leg, stopping
@@ -26,10 +32,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -121,33 +130,134 @@ nlohmann::json line(const char* impl, const std::string& route_name, std::size_t
     return {{"impl", impl}, {"route", route_name}, {"legs", legs}};
 }
 
+/// The route's waypoints (flat x y z) from its JSON file.
+std::vector<double> read_route(const std::string& path) {
+    std::string text, error;
+    if (!hullkit::read_file(path, &text, &error)) die(error);
+    std::vector<double> route;
+    for (const auto& point : nlohmann::json::parse(text)) {
+        for (int axis = 0; axis < 3; ++axis) route.push_back(point.at(axis).get<double>());
+    }
+    return route;
+}
+
+/// "route-hit" for ".../route-hit.json".
+std::string route_name_of(const std::string& path) {
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    return name.substr(0, name.rfind('.'));
+}
+
+/// The report with every double as its bits (hex), one leg per line: equal files are equal
+/// reports, field by field and bit by bit (the timings left out).
+std::string canonical_report(const hullkit::RouteReport& report) {
+    auto bits = [](double x) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        char text[20];
+        std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(b));
+        return std::string(text);
+    };
+    std::string out = "clear " + std::to_string(report.clear) + " min_clearance " + bits(report.min_clearance) + "\n";
+    for (const hullkit::LegReport& leg : report.legs) {
+        out += std::string(hullkit::leg_status_name(leg.status)) + " " + std::to_string(leg.obstacle) + " " +
+               std::to_string(leg.triangle) + " " + std::to_string(leg.part) + " " + std::to_string(leg.sampled_hit);
+        for (double x : {leg.fraction_lo, leg.fraction_hi, leg.position[0], leg.position[1], leg.position[2],
+                         leg.clearance, leg.sampled_fraction}) {
+            out += " " + bits(x);
+        }
+        out += "\n";
+    }
+    return out;
+}
+
+/// The --threads mode: hullkit alone on `legs` legs cycling through `waypoints`, on `threads`
+/// threads.
+int run_threads(const hullkit::Scene& scene, const std::vector<double>& waypoints, const std::string& route_name,
+                std::size_t legs, unsigned threads, bool clearance, int runs, const std::string& dump_path) {
+    const std::size_t count = waypoints.size() / 3;
+    if (count < 2) die("the routes have fewer than 2 waypoints");
+    std::vector<double> route;
+    for (std::size_t k = 0; k <= legs; ++k) route.insert(route.end(), &waypoints[3 * (k % count)], &waypoints[3 * (k % count) + 3]);
+    const hullkit::RouteChecker checker(scene);
+    if (!checker.error().empty()) die(checker.error());
+    hullkit::RouteOptions options;
+    options.clearance = clearance;
+    options.threads = threads;
+    // The first check in this process: nothing of the check path is warm yet.
+    Clock::time_point start = Clock::now();
+    hullkit::RouteReport report = checker.check(route.data(), legs + 1, options);
+    const double first = seconds_since(start);
+    if (!report.ok()) die(report.error);
+    const std::string canonical = canonical_report(report);
+    hullkit::RouteReport warm_report;
+    const double warm = timed<hullkit::RouteReport>(runs, [&] { return checker.check(route.data(), legs + 1, options); }, &warm_report);
+    if (canonical_report(warm_report) != canonical) die("two checks in one process gave different reports");
+    if (!dump_path.empty()) {
+        std::FILE* file = std::fopen(dump_path.c_str(), "wb");
+        if (!file || std::fwrite(canonical.data(), 1, canonical.size(), file) != canonical.size() || std::fclose(file) != 0) {
+            die(dump_path + ": cannot write");
+        }
+    }
+    std::size_t hit = 0;
+    for (const hullkit::LegReport& leg : report.legs) hit += leg.status != hullkit::LegStatus::Clear;
+    nlohmann::json out = line("hullkit-threads", route_name, legs);
+    out["threads"] = threads;
+    out["hardware_threads"] = std::thread::hardware_concurrency();
+    out["clearance"] = clearance;
+    out["legs_not_clear"] = hit;
+    out["build_seconds"] = checker.build_seconds();
+    out["first_seconds"] = first;
+    out["warm_seconds"] = warm;
+    out["runs"] = runs;
+    std::printf("%s\n", out.dump().c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string scene_path, route_path;
-    int runs = 5, reference_poses = 2000;
+    std::string scene_path, dump_path;
+    std::vector<std::string> route_paths;
+    int runs = 5, reference_poses = 2000, threads = -1;
+    long threads_legs = 10000;
+    bool clearance = true;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        if (arg == "--no-clearance") {
+            clearance = false;
+            continue;
+        }
         if (i + 1 >= argc) die("option " + arg + " needs a value");
         if (arg == "--scene") scene_path = argv[++i];
-        else if (arg == "--route") route_path = argv[++i];
+        else if (arg == "--route") route_paths.push_back(argv[++i]);
         else if (arg == "--runs") runs = std::max(1, std::atoi(argv[++i]));
         else if (arg == "--reference-poses") reference_poses = std::max(2, std::atoi(argv[++i]));
+        else if (arg == "--threads") threads = std::max(0, std::atoi(argv[++i]));
+        else if (arg == "--legs") threads_legs = std::max(1L, std::atol(argv[++i]));
+        else if (arg == "--dump") dump_path = argv[++i];
         else die("unknown option " + arg);
     }
-    if (scene_path.empty() || route_path.empty()) die("usage: hullkit_route_bench --scene SCENE.json --route ROUTE.json [--runs N]");
+    if (scene_path.empty() || route_paths.empty()) die("usage: hullkit_route_bench --scene SCENE.json --route ROUTE.json [--runs N]");
 
     hullkit::SceneResult scene = hullkit::read_scene_file(scene_path);
     if (!scene.ok()) die(scene.error);
-    std::string route_text, error;
-    if (!hullkit::read_file(route_path, &route_text, &error)) die(error);
-    std::vector<double> route;
-    for (const auto& point : nlohmann::json::parse(route_text)) {
-        for (int axis = 0; axis < 3; ++axis) route.push_back(point.at(axis).get<double>());
+    if (threads >= 0) {
+        std::vector<double> waypoints;
+        std::string names;
+        for (const std::string& path : route_paths) {
+            const std::vector<double> more = read_route(path);
+            waypoints.insert(waypoints.end(), more.begin(), more.end());
+            names += (names.empty() ? "" : "+") + route_name_of(path);
+        }
+        return run_threads(scene.scene, waypoints, names, static_cast<std::size_t>(threads_legs),
+                           static_cast<unsigned>(threads), clearance, runs, dump_path);
     }
+    if (route_paths.size() != 1 || !clearance || !dump_path.empty()) {
+        die("one --route; --no-clearance, --dump and more routes go with --threads");
+    }
+    const std::vector<double> route = read_route(route_paths[0]);
     const std::size_t legs = route.size() / 3 - 1;
-    std::string route_name = route_path.substr(route_path.find_last_of('/') + 1);
-    route_name = route_name.substr(0, route_name.rfind('.'));
+    const std::string route_name = route_name_of(route_paths[0]);
     std::size_t obstacle_triangles = 0, traverse_vertices = 0;
     for (const auto& mesh : scene.scene.obstacles) obstacle_triangles += mesh.triangles.size() / 3;
     for (const auto& mesh : scene.scene.parts) traverse_vertices += mesh.xyz.size() / 3;

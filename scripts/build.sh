@@ -2,7 +2,8 @@
 # Builds hullkit. With no arguments: the native library, CLI and tests (build/native) and the wasm
 # module (build/wasm). Arguments pick among: native, cli (the library and the hullkit command
 # alone, in build/native), wasm, asan (the C++ tests under AddressSanitizer +
-# UndefinedBehaviorSanitizer, in build/asan).
+# UndefinedBehaviorSanitizer, in build/asan), tsan (the C++ test executables under ThreadSanitizer,
+# in build/tsan; scripts/test.sh runs their "[threads]" tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=("$@")
@@ -37,8 +38,16 @@ for target in "${targets[@]}"; do
         -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" >/dev/null
       cmake --build build/asan -j "$jobs"
       ;;
+    tsan)
+      # clang's ThreadSanitizer on the test executables (the threaded tests run from them).
+      tsan="-fsanitize=thread -fno-omit-frame-pointer"
+      cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF \
+        -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+        -DCMAKE_CXX_FLAGS="$tsan" -DCMAKE_EXE_LINKER_FLAGS="$tsan" >/dev/null
+      cmake --build build/tsan -j "$jobs" --target hullkit_tests hullkit_route_tests hullkit_delaunay_tests
+      ;;
     *)
-      echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, asan)" >&2
+      echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, asan, tsan)" >&2
       exit 2
       ;;
   esac

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs every suite against what `scripts/build.sh native wasm asan` built: ctest (release and
-# sanitized), a short libFuzzer run of every fuzz target (HULLKIT_FUZZ_SECONDS each, default 20),
+# Runs every suite against what `scripts/build.sh native wasm asan tsan` built: ctest (release and
+# sanitized), the threaded tests under ThreadSanitizer, a short libFuzzer run of every fuzz
+# target (HULLKIT_FUZZ_SECONDS each, default 20),
 # node:test (the wasm module), and the browser tests of the page.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,6 +16,14 @@ took "ctest"
 echo "== C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (ctest)"
 ctest --test-dir build/asan --output-on-failure -j "$(nproc)"
 took "ctest under sanitizers"
+
+echo "== Threaded tests under ThreadSanitizer (the \"[threads]\" tests of each test executable)"
+# halt_on_error: the first data race fails the run, with both stacks. [heavy] cases repeat the
+# light ones on large inputs, too slow under the sanitizer.
+for tests in build/tsan/tests/hullkit_tests build/tsan/tests/hullkit_route_tests build/tsan/tests/hullkit_delaunay_tests; do
+  TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" "$tests" "[threads]~[heavy]" --reporter compact
+done
+took "ThreadSanitizer"
 
 echo "== Fuzzing, ${HULLKIT_FUZZ_SECONDS:-20} s per target (scripts/fuzz.sh)"
 bash scripts/fuzz.sh "${HULLKIT_FUZZ_SECONDS:-20}"

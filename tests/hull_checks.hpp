@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <set>
@@ -159,5 +160,72 @@ inline std::vector<double> random_cloud(Cloud kind, std::size_t n, std::uint64_t
     }
     return xyz;
 }
+
+
+/// The files of the degenerate corpus, tests/data/degenerate/*.txt, sorted.
+inline std::vector<std::filesystem::path> degenerate_corpus() {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(HULLKIT_TEST_DATA) / "degenerate")) {
+        if (entry.path().extension() == ".txt") files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// Small random inputs where degeneracies are the rule: points from tiny integer grids (many
+/// coplanar, collinear and repeated points), all-coplanar and all-collinear draws on tilted
+/// integer lattices, a plane plus a few points off it, and rounded (inexact) versions.
+inline std::vector<double> random_degenerate(std::mt19937_64& rng, int* kind_out) {
+    std::uniform_int_distribution<int> count_of(4, 30);
+    const int count = count_of(rng);
+    const int kind = std::uniform_int_distribution<int>(0, 6)(rng);
+    *kind_out = kind;
+    auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    auto vector_of = [&](int range) {
+        return std::vector<int>{integer(-range, range), integer(-range, range), integer(-range, range)};
+    };
+    std::vector<double> xyz;
+    const int side = integer(1, 3);
+    const auto base = vector_of(5), u = vector_of(3), v = vector_of(3), w = vector_of(3);
+    for (int i = 0; i < count; ++i) {
+        double p[3];
+        switch (kind) {
+            case 0:  // a tiny grid: side + 1 values per axis
+            case 1:
+                for (double& c : p) c = integer(0, side);
+                break;
+            case 2: {  // all coplanar (or less, when u and v happen to be parallel)
+                const int a = integer(-3, 3), b = integer(-3, 3);
+                for (int k = 0; k < 3; ++k) p[k] = base[k] + a * u[k] + b * v[k];
+                break;
+            }
+            case 3: {  // all collinear
+                const int a = integer(-6, 6);
+                for (int k = 0; k < 3; ++k) p[k] = base[k] + a * u[k];
+                break;
+            }
+            case 4: {  // a plane and a few points off it
+                const int a = integer(-3, 3), b = integer(-3, 3), c = i % 7 == 6 ? integer(-1, 1) : 0;
+                for (int k = 0; k < 3; ++k) p[k] = base[k] + a * u[k] + b * v[k] + c * w[k];
+                break;
+            }
+            case 5: {  // a tiny grid scaled by 0.1 (rounded: nearly, not exactly, degenerate)
+                for (double& c : p) c = integer(0, side) * 0.1;
+                break;
+            }
+            default: {  // a repeated handful of points
+                if (i < 4 || integer(0, 2) == 0) {
+                    for (double& c : p) c = integer(-2, 2);
+                } else {
+                    const std::size_t j = static_cast<std::size_t>(integer(0, static_cast<int>(xyz.size() / 3) - 1));
+                    std::copy(&xyz[3 * j], &xyz[3 * j] + 3, p);
+                }
+            }
+        }
+        xyz.insert(xyz.end(), p, p + 3);
+    }
+    return xyz;
+}
+
 
 }  // namespace hullkit_test

@@ -27,7 +27,8 @@ constexpr int kExitNotDelaunay = 1;
 
 const char* const kDelaunayUsage =
     R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format off|json|svg] [--algorithm NAME]
-                        [--merge-cocircular] [--voronoi] [--stats]
+                        [--merge-cocircular] [--voronoi] [--stats] [--threads N]
+                        [--quiet]
 
 Computes the Delaunay triangulation of the 2D points in INPUT (standard input if
 INPUT is missing or '-'): the lower convex hull of the points lifted to the
@@ -58,6 +59,12 @@ Options:
   --stats             print one JSON line to standard error: points,
                       triangles, hull, algorithm, seconds (the triangulation
                       alone)
+  --threads N         1: everything on this thread; 0 (default) or more: the
+                      insertion is serial, and for 50 000 points or more the
+                      output stage takes a second thread. The output is the
+                      same for every N
+  --quiet             no progress line on standard error (accepted; delaunay
+                      draws none yet)
   -h, --help          show this help
 
 Triangles are clockwise with the y axis pointing up (as delaunator's, which
@@ -155,6 +162,7 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     CLI::App app{"hullkit delaunay", "hullkit delaunay"};
     app.set_help_flag();  // our own help text, in the style of the other commands
     bool help = false, merge = false;
+    bool quiet = false;  // accepted as by `hullkit route`; the triangulation draws no progress line
     std::string format_name, algorithm_name;
     app.add_flag("-h,--help", help);
     // As with `hullkit hull`, an option given twice takes its last value.
@@ -166,6 +174,9 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     app.add_flag("--merge-cocircular", merge);
     app.add_flag("--voronoi", args->voronoi);
     app.add_flag("--stats", args->stats);
+    // Bounded as in `hullkit route`; the triangulation uses at most two threads anyway.
+    app.add_option("--threads", args->options.threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    app.add_flag("--quiet", quiet);
     parse_or_throw(app, argv, "delaunay");
     if (help) {
         std::string usage = kDelaunayUsage;

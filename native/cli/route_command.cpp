@@ -3,6 +3,7 @@
 #include "route_command.hpp"
 
 #include "cli_io.hpp"
+#include "progress.hpp"
 
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/route.hpp"
@@ -10,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -39,7 +41,9 @@ int run_route(const std::vector<std::string>& args) {
     std::string scene_path;
     std::string output;
     std::uint32_t samples = 0;
+    unsigned threads = 0;
     bool no_clearance = false;
+    bool quiet = false;
     app.add_option("SCENE", scene_path, "the scene (JSON); '-' reads standard input")->required()->type_name("");
     app.add_option("--samples", samples,
                    "also report per leg what checking N+1 evenly spaced poses would find (\"sampled\"), "
@@ -47,6 +51,14 @@ int run_route(const std::vector<std::string>& args) {
         ->type_name("N")
         ->check(CLI::Range(0u, 1000000u));
     app.add_flag("--no-clearance", no_clearance, "do not compute the clearance of clear legs (faster)");
+    app.add_option("--threads", threads,
+                   "check legs on N threads: 0 (default) every hardware thread, 1 this thread only; "
+                   "the report is the same for every N")
+        ->type_name("N")
+        ->check(CLI::Range(0u, 1024u));  // bounded: a mistyped huge N would start a thread per block
+    app.add_flag("--quiet", quiet,
+                 "no progress line (otherwise shown on a terminal's standard error when the check "
+                 "takes more than about a second)");
     app.add_option("-o,--output", output, "write the report to FILE instead of standard output")->type_name("FILE");
 
     // CLI11 wants argv order reversed for its vector overload.
@@ -66,9 +78,19 @@ int run_route(const std::vector<std::string>& args) {
     hullkit::RouteOptions options;
     options.clearance = !no_clearance;
     options.samples = samples;
+    options.threads = threads;
     hullkit::RouteChecker checker(std::move(scene.scene));
     if (!checker.error().empty()) return print_usage_error(scene_path + ": " + checker.error());
-    hullkit::RouteReport report = checker.check(options);
+    hullkit::RouteReport report;
+    {
+        // Progress::update is thread-safe, as RouteOptions::progress requires; the line is
+        // cleared when `progress` goes, before the report is written.
+        const std::size_t waypoints = checker.scene().route.size() / 3;
+        Progress progress("legs", waypoints > 0 ? waypoints - 1 : 0, quiet);
+        options.progress = [&progress](std::size_t legs_done) { progress.update(legs_done); };
+        report = checker.check(options);
+        options.progress = nullptr;  // it refers to `progress`
+    }
     if (!report.ok()) return print_usage_error(scene_path + ": " + report.error);
 
     try {

@@ -1,8 +1,10 @@
 // Planar faces from the triangles of a convex surface.
 #include <algorithm>
+#include <utility>
 #include <numeric>
 
 #include "hull_internal.hpp"
+#include "parallel.hpp"
 #include "hullkit/predicates.hpp"
 #include "planar.hpp"
 #include "sides.hpp"
@@ -74,25 +76,120 @@ Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> t
     return faces;
 }
 
-void measure(PointSpan points, const Polygons& faces, double* volume, double* area) {
+void measure(PointSpan points, const Polygons& faces, double* volume, double* area, unsigned threads) {
     // Tetrahedra from one corner to every fan triangle: faces through that corner add zero, and by
     // convexity no tetrahedron has a negative volume, so a rounded one below zero counts as zero.
+    // Summed per block of faces, the blocks' sums then added in order: the same bits for every
+    // thread count.
     const glm::dvec3 origin = faces.vertices.empty() ? glm::dvec3(0.0) : vec3(points[faces.vertices.front()]);
-    double six_volume = 0.0;
-    double twice_area = 0.0;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
-        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-        const glm::dvec3 a = vec3(points[corners[0]]) - origin;
-        for (std::size_t k = 1; k + 1 < m; ++k) {
-            const glm::dvec3 b = vec3(points[corners[k]]) - origin;
-            const glm::dvec3 c = vec3(points[corners[k + 1]]) - origin;
-            six_volume += std::max(0.0, glm::dot(a, glm::cross(b, c)));
-            twice_area += glm::length(glm::cross(b - a, c - a));
+    constexpr std::size_t kBlock = 4096;
+    const std::size_t blocks = (faces.size() + kBlock - 1) / kBlock;
+    std::vector<double> six_volume(blocks, 0.0), twice_area(blocks, 0.0);
+    parallel_for(threads, blocks, [&](std::size_t block) {
+        double v = 0.0, s = 0.0;
+        const std::size_t end = std::min(faces.size(), (block + 1) * kBlock);
+        for (std::size_t f = block * kBlock; f < end; ++f) {
+            const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
+            const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
+            const glm::dvec3 a = vec3(points[corners[0]]) - origin;
+            for (std::size_t k = 1; k + 1 < m; ++k) {
+                const glm::dvec3 b = vec3(points[corners[k]]) - origin;
+                const glm::dvec3 c = vec3(points[corners[k + 1]]) - origin;
+                v += std::max(0.0, glm::dot(a, glm::cross(b, c)));
+                s += glm::length(glm::cross(b - a, c - a));
+            }
+        }
+        six_volume[block] = v;
+        twice_area[block] = s;
+    });
+    double v = 0.0, s = 0.0;
+    for (std::size_t block = 0; block < blocks; ++block) v += six_volume[block], s += twice_area[block];
+    *volume = v / 6.0;
+    *area = s / 2.0;
+}
+
+}  // namespace hullkit::detail
+
+namespace hullkit::detail {
+
+void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original, unsigned threads) {
+    const std::size_t count = faces.size();
+    auto id = [&](std::uint32_t v) { return original.empty() ? v : original[v]; };
+    // Rotate each polygon to its lowest index; its key is (first, second) corner, unique because
+    // each directed edge of a closed surface belongs to one face.
+    struct Keyed {
+        std::uint64_t key;
+        std::uint32_t face;
+    };
+    std::vector<Keyed> keyed(count);
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    const std::size_t blocks = (count + kBlock - 1) / kBlock;
+    std::vector<std::uint64_t> block_bits(blocks, 0);
+    parallel_for(threads, blocks, [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * kBlock);
+        for (std::size_t f = block * kBlock; f < end; ++f) {
+            const auto first = faces.vertices.begin() + faces.offsets[f];
+            const auto last = faces.vertices.begin() + faces.offsets[f + 1];
+            auto lowest = first;
+            for (auto it = first + 1; it != last; ++it) {
+                if (id(*it) < id(*lowest)) lowest = it;
+            }
+            std::rotate(first, lowest, last);
+            keyed[f] = {std::uint64_t{id(first[0])} << 32 | id(first[1]), static_cast<std::uint32_t>(f)};
+            block_bits[block] |= keyed[f].key;
+        }
+    });
+    std::uint64_t all_bits = 0;
+    for (std::uint64_t bits : block_bits) all_bits |= bits;
+    if (count < 512) {
+        std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+    } else {
+        // LSD radix sort, 11-bit digits, skipping digits no key uses (indices are usually far
+        // below 2^32, so most of the high digits of both halves are zero). Each pass counts and
+        // scatters per block of keys on threads; stable, so the order is the same for any split.
+        constexpr int kDigits = 2048;
+        std::vector<Keyed> buffer(count);
+        std::vector<std::size_t> start(blocks * kDigits);
+        for (int shift = 0; shift < 64; shift += 11) {
+            if (((all_bits >> shift) & (kDigits - 1)) == 0) continue;
+            std::fill(start.begin(), start.end(), 0);
+            parallel_for(threads, blocks, [&](std::size_t block) {
+                std::size_t* counts = &start[block * kDigits];
+                const std::size_t end = std::min(count, (block + 1) * kBlock);
+                for (std::size_t k = block * kBlock; k < end; ++k) ++counts[(keyed[k].key >> shift) & (kDigits - 1)];
+            });
+            std::size_t sum = 0;  // digit-major, then block: where each block's keys of a digit go
+            for (int d = 0; d < kDigits; ++d) {
+                for (std::size_t block = 0; block < blocks; ++block) sum += std::exchange(start[block * kDigits + d], sum);
+            }
+            parallel_for(threads, blocks, [&](std::size_t block) {
+                std::size_t* next = &start[block * kDigits];
+                const std::size_t end = std::min(count, (block + 1) * kBlock);
+                for (std::size_t k = block * kBlock; k < end; ++k) buffer[next[(keyed[k].key >> shift) & (kDigits - 1)]++] = keyed[k];
+            });
+            keyed.swap(buffer);
         }
     }
-    *volume = six_volume / 6.0;
-    *area = twice_area / 2.0;
+    bool sorted = true;
+    for (std::size_t f = 0; f < count && sorted; ++f) sorted = keyed[f].face == f;
+    if (sorted) return;
+    Polygons ordered;
+    ordered.offsets.resize(count + 1);
+    ordered.offsets[0] = 0;
+    for (std::size_t f = 0; f < count; ++f) {
+        const std::uint32_t face = keyed[f].face;
+        ordered.offsets[f + 1] = ordered.offsets[f] + (faces.offsets[face + 1] - faces.offsets[face]);
+    }
+    ordered.vertices.resize(faces.vertices.size());
+    parallel_for(threads, blocks, [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * kBlock);
+        for (std::size_t f = block * kBlock; f < end; ++f) {
+            const std::uint32_t face = keyed[f].face;
+            std::copy(faces.vertices.begin() + faces.offsets[face], faces.vertices.begin() + faces.offsets[face + 1],
+                      ordered.vertices.begin() + ordered.offsets[f]);
+        }
+    });
+    faces = std::move(ordered);
 }
 
 }  // namespace hullkit::detail

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 #include <glm/glm.hpp>
 
 #include "hull_internal.hpp"
+#include "parallel.hpp"
 #include "hullkit/giftwrap.hpp"
 #include "hullkit/predicates.hpp"
 #include "planar.hpp"
@@ -135,6 +137,60 @@ Simplex find_simplex(PointSpan points) {
     return s;
 }
 
+
+Hull scan_magnitudes(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices, unsigned threads,
+                     Magnitudes* range) {
+    // Blocks of points scanned in parallel; the first bad point in input order is reported, as a
+    // serial scan would.
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    const std::size_t blocks = (points.count + kBlock - 1) / kBlock;
+    std::vector<Magnitudes> found(blocks);
+    std::vector<std::size_t> bad(blocks, ~std::size_t{0});
+    parallel_for(threads, blocks, [&](std::size_t block) {
+        Magnitudes& m = found[block];
+        const std::size_t end = std::min(points.count, (block + 1) * kBlock);
+        for (std::size_t i = block * kBlock; i < end; ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const double magnitude = std::fabs(points[i][axis]);
+                if (!(magnitude <= std::numeric_limits<double>::max())) {  // inf or nan
+                    bad[block] = i;
+                    return;
+                }
+                m.largest = std::max(m.largest, magnitude);
+                if (magnitude != 0.0) m.smallest = std::min(m.smallest, magnitude);
+            }
+        }
+    });
+    for (std::size_t block = 0; block < blocks; ++block) {
+        if (const std::size_t i = bad[block]; i != ~std::size_t{0}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const double value = points[i][axis];
+                if (std::fabs(value) <= std::numeric_limits<double>::max()) continue;
+                static const char* const kAxis[] = {"x", "y", "z"};
+                const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+                const std::uint64_t index = indices ? indices[i] : first_index + i;
+                return failure("point " + std::to_string(index) + " has a non-finite " + kAxis[axis] +
+                                   " coordinate (" + what + ")",
+                               static_cast<std::int64_t>(index));
+            }
+        }
+        range->largest = std::max(range->largest, found[block].largest);
+        range->smallest = std::min(range->smallest, found[block].smallest);
+    }
+    return Hull{};
+}
+
+Hull scale_exponent(const Magnitudes& range, int* exponent) {
+    *exponent = 0;
+    if (!predicates_range_ok(range.largest, range.smallest) &&
+        !predicates_scale_exponent(range.largest, range.smallest, exponent)) {
+        return failure(
+            "coordinates span too many orders of magnitude: the nonzero |coordinates| must fit within "
+            "a factor of 2^585 (about 1e176) of each other for exact predicates");
+    }
+    return Hull{};
+}
+
 }  // namespace detail
 
 namespace {
@@ -142,38 +198,14 @@ namespace {
 using detail::Polygons;
 using detail::Simplex;
 
-/// Non-finite coordinates and too many points; else an ok() Hull and, in *exponent, the power of
-/// two that brings the coordinates into the predicates' exact range (0 if they are in it). Fails
-/// when no single power of two can.
-Hull check_input(PointSpan points, int* exponent) {
+/// Too many points; else an ok() Hull. Non-finite coordinates and the magnitudes are scanned by
+/// detail::scan_magnitudes.
+Hull check_input(PointSpan points, unsigned threads, detail::Magnitudes* range) {
     if (points.count > std::numeric_limits<std::uint32_t>::max()) {
         return detail::failure("too many points: " + std::to_string(points.count) +
                                " (at most 4294967295 fit 32-bit indices)");
     }
-    double largest = 0.0;
-    double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < points.count; ++i) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const double value = points[i][axis];
-            const double magnitude = std::fabs(value);
-            if (!(magnitude <= std::numeric_limits<double>::max())) {  // inf or nan
-                static const char* const kAxis[] = {"x", "y", "z"};
-                const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
-                return detail::failure("point " + std::to_string(i) + " has a non-finite " + kAxis[axis] +
-                                           " coordinate (" + what + ")",
-                                       static_cast<std::int64_t>(i));
-            }
-            largest = std::max(largest, magnitude);
-            if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
-        }
-    }
-    *exponent = 0;
-    if (!predicates_range_ok(largest, smallest) && !predicates_scale_exponent(largest, smallest, exponent)) {
-        return detail::failure(
-            "coordinates span too many orders of magnitude: the nonzero |coordinates| must fit within "
-            "a factor of 2^585 (about 1e176) of each other for exact predicates");
-    }
-    return Hull{};
+    return detail::scan_magnitudes(points, 0, nullptr, threads, range);
 }
 
 /// Rotates each polygon to start at its lowest index.
@@ -236,51 +268,63 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
         hull.vertices = {std::min(lo, hi), std::max(lo, hi)};
         return hull;
     }
-    // A convex polygon in the plane of the simplex's first three points, seen from the side where
-    // the normal's largest component is positive (so the orientation does not depend on which
-    // three points span the plane): the sign of that component is an exact orient2d.
+    // The convex polygon of the points in the plane of the simplex's first three points.
     std::uint32_t a = s.p[0], b = s.p[1], c = s.p[2];
-    int i = 0, j = 0;
-    if (detail::plane_projection(detail::ExactSides{}, points[a], points[b], points[c], &i, &j) < 0) std::swap(b, c);
     std::vector<std::uint32_t> all(points.count), polygon;
     std::iota(all.begin(), all.end(), 0u);
     detail::convex_polygon(points, detail::ExactSides{}, std::move(all), a, b, c, polygon);
+    // Its orientation and normal from the polygon alone (its lowest corner and that corner's two
+    // neighbours), so that they do not depend on which three points spanned the plane: seen from
+    // the side where the normal's largest component (x before y before z on ties) is positive,
+    // the corners run counter-clockwise. Reversing the polygon negates the rounded cross product
+    // exactly, so the axis chosen is the same either way; the exact orient2d decides the side.
+    std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+    auto normal = [&] {
+        const glm::dvec3 corner = detail::vec3(points[polygon[0]]);
+        return glm::cross(detail::vec3(points[polygon[1]]) - corner, detail::vec3(points[polygon.back()]) - corner);
+    };
+    {
+        int i = 0, j = 0;
+        if (detail::plane_projection(detail::ExactSides{}, points[polygon[0]], points[polygon[1]], points[polygon.back()],
+                                     &i, &j) < 0) {
+            std::reverse(polygon.begin() + 1, polygon.end());
+        }
+    }
     Polygons faces;
     faces.add(polygon.begin(), polygon.end());
-    rotate_to_lowest(faces);
     fill_from_polygons(points.count, faces, hull);
     hull.vertices = faces.vertices;  // in order around the polygon
     double volume = 0.0, area = 0.0;
     detail::measure(points, faces, &volume, &area);
     unscale(exponent, 0.0, area, hull);  // flat: no volume, the area of one side
-    const glm::dvec3 origin = detail::vec3(points[a]);
-    const glm::dvec3 normal = glm::cross(detail::vec3(points[b]) - origin, detail::vec3(points[c]) - origin);
-    const glm::dvec3 unit = glm::normalize(normal);
+    const glm::dvec3 unit = glm::normalize(normal());
     std::copy(&unit.x, &unit.x + 3, hull.normal);
     return hull;
 }
 
-}  // namespace
 
-Hull hull(PointSpan input, const HullOptions& options) {
-    int exponent = 0;
-    if (Hull invalid = check_input(input, &exponent); !invalid.ok()) return invalid;
-    const bool seed = options.side_test == SideTest::Seed;
-    if (seed && options.algorithm != Algorithm::Giftwrap)
-        return detail::failure("the seed's epsilon side tests exist for gift wrapping only");
-
-    std::vector<double> scaled;
-    PointSpan points = input;
-    if (exponent != 0) {  // multiplying by a power of two is exact
-        scaled.resize(3 * input.count);
-        for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = std::ldexp(input.xyz[i], exponent);
-        points = PointSpan(scaled.data(), input.count);
+/// A hull with volume from its faces (counter-clockwise seen from outside) and their measures on
+/// points scaled by 2^exponent.
+Hull polytope(std::size_t point_count, Polygons faces, double volume, double area, int exponent, bool merge_coplanar) {
+    Hull result;
+    result.dimension = 3;
+    rotate_to_lowest(faces);
+    fill_from_polygons(point_count, faces, result);
+    unscale(exponent, volume, area, result);
+    if (merge_coplanar) {
+        result.face_offsets = std::move(faces.offsets);
+        result.face_vertices = std::move(faces.vertices);
     }
+    return result;
+}
 
+/// The hull of points already in the predicates' range (scaled by 2^exponent from the caller's),
+/// on the calling thread.
+Hull hull_serial(PointSpan points, const HullOptions& options, int exponent) {
     Polygons faces;
     double volume = 0.0, area = 0.0;
     std::string error;
-    if (seed) {
+    if (options.side_test == SideTest::Seed) {
         // The seed's own behaviour, for comparison: its epsilon also judges degeneracy.
         if (points.count < 4) return detail::failure("a 3D hull needs at least 4 points, got " + std::to_string(points.count));
         if (!detail::giftwrap_faces(points, options.giftwrap_scan, true, faces, error)) return detail::failure(error);
@@ -303,16 +347,114 @@ Hull hull(PointSpan input, const HullOptions& options) {
         }
     }
 
-    Hull result;
-    result.dimension = 3;
-    rotate_to_lowest(faces);
-    fill_from_polygons(points.count, faces, result);
-    unscale(exponent, volume, area, result);
-    if (options.merge_coplanar) {
-        result.face_offsets = std::move(faces.offsets);
-        result.face_vertices = std::move(faces.vertices);
+    return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar);
+}
+
+/// Below this many points per thread, threads do not pay for themselves.
+constexpr std::size_t kPointsPerThread = std::size_t{1} << 14;
+
+}  // namespace
+
+namespace detail {
+
+/// For a large cloud with few hull vertices (a ball, a cube, a scan of a solid): the candidates
+/// for the hull's vertices, found as the extreme points of chunks of the input hulled on
+/// threads (every extreme point of the whole is extreme in its chunk, and of identical points
+/// each chunk keeps its lowest index, so the lowest of all is among them). Ascending. Empty when
+/// chunking would not pay: a small input, or one whose points are mostly on the hull (a sphere),
+/// judged from the hull of every 64th point.
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads) {
+    const std::size_t n = points.count;
+    if (threads < 2 || n < 2 * kPointsPerThread) return {};
+    {
+        std::vector<double> sample;
+        sample.reserve(3 * (n / 64 + 1));
+        for (std::size_t i = 0; i < n; i += 64) sample.insert(sample.end(), points[i], points[i] + 3);
+        const std::size_t sampled = sample.size() / 3;
+        if (8 * detail::extreme_points(PointSpan(sample.data(), sampled)).size() > sampled) return {};
+    }
+    // Two chunks per thread, so that a thread that finishes early takes another.
+    const std::size_t chunks = 2 * std::size_t{threads};
+    std::vector<std::vector<std::uint32_t>> found(chunks);
+    detail::parallel_for(threads, chunks, [&](std::size_t chunk) {
+        const std::size_t begin = n * chunk / chunks, end = n * (chunk + 1) / chunks;
+        found[chunk] = detail::extreme_points(PointSpan(points[begin], end - begin));
+        for (std::uint32_t& v : found[chunk]) v += static_cast<std::uint32_t>(begin);
+    });
+    std::vector<std::uint32_t> candidates;
+    for (const auto& part : found) candidates.insert(candidates.end(), part.begin(), part.end());
+    return candidates;
+}
+
+
+std::vector<std::uint32_t> extreme_points(PointSpan points) {
+    const Simplex simplex = find_simplex(points);
+    std::vector<std::uint32_t> vertices;
+    if (simplex.dimension < 3) {
+        vertices = lower_dimensional(points, simplex, 0).vertices;
+    } else {
+        Polygons faces;
+        double volume = 0.0, area = 0.0;
+        std::string error;
+        if (!quickhull_faces(points, simplex, faces, &volume, &area, error)) throw std::logic_error(error);
+        vertices = std::move(faces.vertices);
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
+
+Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
+    const bool seed = options.side_test == SideTest::Seed;
+    if (seed && options.algorithm != Algorithm::Giftwrap)
+        return failure("the seed's epsilon side tests exist for gift wrapping only");
+    const unsigned threads = resolve_threads(options.threads, input.count / kPointsPerThread);
+
+    std::vector<double> scaled;
+    PointSpan points = input;
+    if (exponent != 0) {  // multiplying by a power of two is exact
+        scaled.resize(3 * input.count);
+        constexpr std::size_t kBlock = std::size_t{1} << 18;
+        parallel_for(threads, (scaled.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+            const std::size_t end = std::min(scaled.size(), (block + 1) * kBlock);
+            for (std::size_t i = block * kBlock; i < end; ++i) scaled[i] = std::ldexp(input.xyz[i], exponent);
+        });
+        points = PointSpan(scaled.data(), input.count);
+    }
+    if (seed || options.algorithm != Algorithm::Quickhull) return hull_serial(points, options, exponent);
+
+    const std::vector<std::uint32_t> candidates = chunk_candidates(points, threads);
+    if (candidates.empty()) {
+        // Few points inside the hull (or a small cloud): quickhull split across the threads.
+        Polygons faces;
+        double volume = 0.0, area = 0.0;
+        if (threads >= 2 && points.count >= 2 * kPointsPerThread &&
+            quickhull_split_faces(points, threads, faces, &volume, &area)) {
+            return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar);
+        }
+        return hull_serial(points, options, exponent);
+    }
+    // The hull of the candidates, in ascending index order, so that every tie-break (lowest
+    // index) and the canonical order come out as for the whole cloud.
+    std::vector<double> xyz(3 * candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k) std::copy(points[candidates[k]], points[candidates[k]] + 3, &xyz[3 * k]);
+    scaled = {};
+    Hull result = hull_serial(PointSpan(xyz.data(), candidates.size()), options, exponent);
+    for (auto* list : {&result.triangles, &result.vertices, &result.face_vertices}) {
+        for (std::uint32_t& v : *list) v = candidates[v];
     }
     return result;
+}
+
+}  // namespace detail
+
+Hull hull(PointSpan input, const HullOptions& options) {
+    detail::Magnitudes range;
+    const unsigned threads = detail::resolve_threads(options.threads, input.count / kPointsPerThread);
+    if (Hull invalid = check_input(input, threads, &range); !invalid.ok()) return invalid;
+    int exponent = 0;
+    if (Hull invalid = detail::scale_exponent(range, &exponent); !invalid.ok()) return invalid;
+    return detail::hull_in_range(input, options, exponent);
 }
 
 Hull giftwrap(PointSpan points, GiftwrapScan scan) {

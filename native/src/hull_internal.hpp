@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,37 @@ struct Simplex {
     double hi[3] = {0.0, 0.0, 0.0};
 };
 
+/// The largest and the smallest nonzero |coordinate| of a point set (0 and infinity when empty).
+struct Magnitudes {
+    double largest = 0.0;
+    double smallest = std::numeric_limits<double>::infinity();
+};
+
+/// Adds the magnitudes of `points` to *range (on up to `threads` threads). Fails on the first
+/// point, in input order, with a non-finite coordinate: "point I has a non-finite y coordinate
+/// (nan)", I being indices[i] for point i, or first_index + i when `indices` is null.
+Hull scan_magnitudes(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices, unsigned threads,
+                     Magnitudes* range);
+
+/// The power of two that brings coordinates in `range` into the predicates' exact range (0 when
+/// they are in it), or a failure when no single power of two can.
+Hull scale_exponent(const Magnitudes& range, int* exponent);
+
+/// The hull of points that passed the checks, scaled by 2^exponent while deciding (the exponent
+/// comes from scale_exponent of a range that covers them; the result's volume and area are
+/// given back in the caller's units). With threads > 1, large clouds are hulled in chunks on
+/// threads and the hull of the chunks' vertices taken last; the result is the same bits.
+Hull hull_in_range(PointSpan points, const HullOptions& options, int exponent);
+
+/// The candidates for the vertices of the hull of `points` (in range), ascending: for a large
+/// cloud the extreme points of chunks of it hulled on up to `threads` threads, when that pays
+/// (see hull.cpp); otherwise empty, and every point is a candidate.
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads);
+
+/// The extreme points of `points` (the vertices of their hull, whatever its dimension; of
+/// identical points the lowest index), ascending. `points` must be in the predicates' range.
+std::vector<std::uint32_t> extreme_points(PointSpan points);
+
 /// A failed Hull carrying `message` (and the index of the point to blame, if any).
 Hull failure(std::string message, std::int64_t point = -1);
 
@@ -62,6 +94,13 @@ bool giftwrap_faces(PointSpan points, GiftwrapScan scan, bool seed_epsilon, Poly
 bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
                      std::string& error);
 
+/// Quickhull on threads for a cloud with volume whose points mostly lie on its hull: split in two
+/// halves hulled on their own threads (recursively), joined along their seam (quickhull.cpp).
+/// The faces as quickhull_faces gives them (the same polygons, in the canonical order, with the
+/// same volume and area). False when the split does not apply; the caller then runs
+/// quickhull_faces.
+bool quickhull_split_faces(PointSpan points, unsigned threads, Polygons& faces, double* volume, double* area);
+
 /// Two edge-adjacent triangles (indices into a triangle list) that lie in one plane.
 struct CoplanarPair {
     std::uint32_t first, second;
@@ -73,7 +112,15 @@ struct CoplanarPair {
 Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> triangles,
                                   const std::vector<CoplanarPair>& coplanar);
 
-/// Volume and area enclosed by closed polygons, counter-clockwise seen from outside.
-void measure(PointSpan points, const Polygons& faces, double* volume, double* area);
+/// Brings polygons into the one order every schedule agrees on: each polygon rotated to start at
+/// its lowest index, the polygons sorted by their first two corners. `original` maps the
+/// polygons' indices to the indices that decide (empty: the indices themselves); any order of the
+/// same polygons comes out the same, so the result depends only on the hull, not on how it was
+/// found (thread count, chunks, streaming).
+void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original = {}, unsigned threads = 1);
+
+/// Volume and area enclosed by closed polygons, counter-clockwise seen from outside, summed in an
+/// order fixed by the faces alone (the same bits for any `threads`).
+void measure(PointSpan points, const Polygons& faces, double* volume, double* area, unsigned threads = 1);
 
 }  // namespace hullkit::detail

@@ -244,3 +244,24 @@ TEST_CASE("delaunay: 1e5 uniform and 1e5 on a circle, checked by verify", "[dela
     const std::vector<double> b = circle_points(100000, 1.0, false);
     check_delaunay(b, hullkit::delaunay(b));
 }
+
+TEST_CASE("delaunay: the output stage's second thread gives the same arrays (1 thread, 2, every)", "[threads]") {
+    // Above the 50 000 points where the output stage takes a second thread; a grid also takes the
+    // cocircular path (run beside the counting sort, stopped early).
+    std::vector<double> grid;
+    for (int x = 0; x < 250; ++x)
+        for (int y = 0; y < 240; ++y) grid.insert(grid.end(), {double(x), double(y)});
+    for (const std::vector<double>& xy : {uniform_points(60000, 5), grid}) {
+        hullkit::DelaunayOptions one;
+        one.threads = 1;
+        const hullkit::Delaunay reference = hullkit::delaunay(xy, one);
+        for (unsigned threads : {0u, 2u, 8u}) {
+            hullkit::DelaunayOptions options;
+            options.threads = threads;
+            const hullkit::Delaunay d = hullkit::delaunay(xy, options);
+            REQUIRE(d.triangles == reference.triangles);
+            REQUIRE(d.halfedges == reference.halfedges);
+            REQUIRE(d.hull == reference.hull);
+        }
+    }
+}

@@ -1,12 +1,15 @@
 // `hullkit route` (native/cli/route_command.cpp) run as a process: scenes whose answers are
 // worked out by hand, the exit status, the report on stdout or in a file, --samples and
-// --no-clearance, and every malformed scene of the issue giving exit 2 and its one-line message.
+// --no-clearance, --threads (the same report for every thread count) and --quiet, and every
+// malformed scene of the issue giving exit 2 and its one-line message.
 #include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -45,6 +48,19 @@ void require_bracket(const json& leg, double exact) {
     CHECK(lo <= exact);
     CHECK(exact <= hi);
     CHECK(hi - lo <= 1e-9);
+}
+
+/// The report text without its timings: everything before "build_seconds", which the last line
+/// holds together with "seconds" and nothing else.
+std::string without_timings(const RunResult& run) {
+    INFO(run.err);
+    REQUIRE(run.err.empty());
+    const std::size_t at = run.out.rfind("\"build_seconds\": ");
+    REQUIRE(at != std::string::npos);
+    const std::string tail = run.out.substr(at);
+    INFO(tail);
+    REQUIRE(std::regex_match(tail, std::regex(R"("build_seconds": [-+.e0-9]+, "seconds": [-+.e0-9]+\}\n)")));
+    return run.out.substr(0, at);
 }
 
 std::string one_error_line(const RunResult& run) {
@@ -169,6 +185,48 @@ TEST_CASE("cli route: the issue's crane scene (meshes from STL, OBJ, OFF)", "[cl
     CHECK(report["legs"][2]["obstacle"] == "vessel");
 }
 
+TEST_CASE("cli route: --threads 1 and --threads 3 print the same report; --quiet", "[cli_route][threads]") {
+    TempDir dir("hullkit-route");
+    // 300 legs zigzagging through the wall and beside it (hits, clear legs, start overlaps), so
+    // that three threads share the legs; and the crane scene.
+    std::string route = "[[0,0,0]";
+    for (int k = 1; k <= 300; ++k) {
+        route += ",[" + std::to_string(k % 7 - 1) + "," + std::to_string((13 * k) % 11 - 5) + "," +
+                 std::to_string(k % 3) + "]";
+    }
+    route += "]";
+    hullkit_test::write_text(dir.file("zigzag.json"), cube_scene(route, 0.25));
+    for (const std::string& scene : {dir.file("zigzag.json"), hullkit_test::data_path("route/crane.json")}) {
+        for (const std::vector<std::string>& extra : {std::vector<std::string>{}, {"--samples", "4", "--no-clearance"}}) {
+            std::vector<std::string> args = {"route", scene};
+            args.insert(args.end(), extra.begin(), extra.end());
+            auto with = [&](std::vector<std::string> more) {
+                std::vector<std::string> all = args;
+                all.insert(all.end(), more.begin(), more.end());
+                return hullkit_test::run_cli(dir, all);
+            };
+            CAPTURE(scene, extra);
+            const RunResult one = with({"--threads", "1"});
+            CHECK(one.exit_code == 1);
+            const std::string expected = without_timings(one);
+            const RunResult three = with({"--threads", "3"});
+            CHECK(three.exit_code == one.exit_code);
+            CHECK(without_timings(three) == expected);
+            const RunResult all = with({"--threads=0"});
+            CHECK(without_timings(all) == expected);
+            // --quiet: accepted, the same report (the progress line only ever goes to a terminal).
+            const RunResult quiet = with({"--quiet", "--threads", "2"});
+            CHECK(quiet.exit_code == one.exit_code);
+            CHECK(without_timings(quiet) == expected);
+        }
+    }
+    // The zigzag has every kind of leg.
+    const json report = report_of(hullkit_test::run_cli(dir, {"route", dir.file("zigzag.json"), "--quiet"}));
+    std::set<std::string> statuses;
+    for (const json& leg : report["legs"]) statuses.insert(leg["status"].get<std::string>());
+    CHECK(statuses == std::set<std::string>{"clear", "hit", "start-overlap"});
+}
+
 TEST_CASE("cli route: output file, standard input, help", "[cli_route]") {
     TempDir dir("hullkit-route");
     const std::string scene = cube_scene("[[0,0,0],[0,5,0]]");
@@ -187,6 +245,8 @@ TEST_CASE("cli route: output file, standard input, help", "[cli_route]") {
     RunResult help = hullkit_test::run_cli(dir, {"route", "--help"});
     CHECK(help.exit_code == 0);
     CHECK(help.out.find("--samples N") != std::string::npos);
+    CHECK(help.out.find("--threads N") != std::string::npos);
+    CHECK(help.out.find("--quiet") != std::string::npos);
     CHECK(help.out.find("Exit status: 0 every leg clear, 1 some leg not clear, 2") != std::string::npos);
 }
 
@@ -197,6 +257,10 @@ TEST_CASE("cli route: usage problems give exit 2 and one line", "[cli_route]") {
           "hullkit: route: The following argument was not expected: --bogus (try 'hullkit route --help')");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--samples", "-3"})) ==
           "hullkit: route: --samples: Value -3 not in range 0 to 1000000 (try 'hullkit route --help')");
+    CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--threads", "-1"})) ==
+          "hullkit: route: --threads: Value -1 not in range 0 to 1024 (try 'hullkit route --help')");
+    CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--threads", "x"})) ==
+          "hullkit: route: --threads: Value x not in range 0 to 1024 (try 'hullkit route --help')");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", dir.file("none.json")})) ==
           "hullkit: " + dir.file("none.json") + ": cannot open: No such file or directory");
     hullkit_test::write_text(dir.file("scene.json"), cube_scene("[[0,0,0],[0,5,0]]"));

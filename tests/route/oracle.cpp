@@ -16,8 +16,8 @@
 #include <random>
 #include <vector>
 
-#include "hullkit/hull.hpp"
 #include "hullkit/route.hpp"
+#include "random_scenes.hpp"
 
 using namespace hullkit;
 
@@ -25,7 +25,8 @@ namespace {
 
 constexpr int kSamples = 10000;
 
-using D3 = std::array<double, 3>;
+using route_test::D3;
+using route_test::Mesh;
 using Q3 = std::array<mpq_class, 3>;
 
 D3 dsub(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -154,89 +155,6 @@ long double triangle_triangle(const L3* p, const L3* q) {
         }
     }
     return best;
-}
-
-// ---- random scenes ----
-
-struct Mesh {
-    std::vector<D3> points;
-    std::vector<std::array<std::uint32_t, 3>> tris;
-    bool closed = false;
-};
-
-TriangleMesh to_mesh(const Mesh& m, const char* name) {
-    TriangleMesh t;
-    t.name = name;
-    for (const D3& p : m.points) t.xyz.insert(t.xyz.end(), p.begin(), p.end());
-    for (const auto& f : m.tris) t.triangles.insert(t.triangles.end(), f.begin(), f.end());
-    return t;
-}
-
-Mesh convex_blob(std::mt19937_64& rng, const D3& center, double size) {
-    std::uniform_real_distribution<double> u(-size, size);
-    for (;;) {
-        std::vector<double> xyz;
-        for (int i = 0; i < 8; ++i) {
-            for (int k = 0; k < 3; ++k) xyz.push_back(center[k] + u(rng));
-        }
-        const Hull h = hull(PointSpan(xyz));
-        if (h.dimension != 3) continue;
-        Mesh m;
-        m.closed = true;
-        for (std::size_t i = 0; i < xyz.size(); i += 3) m.points.push_back({xyz[i], xyz[i + 1], xyz[i + 2]});
-        for (std::size_t f = 0; f < h.triangles.size(); f += 3) {
-            m.tris.push_back({h.triangles[f], h.triangles[f + 1], h.triangles[f + 2]});
-        }
-        return m;
-    }
-}
-
-/// A closed prism over a star-shaped polygon around `center` (non-convex in general), caps fanned
-/// from their centres.
-Mesh star_prism(std::mt19937_64& rng, const D3& center, double size) {
-    std::uniform_real_distribution<double> r(0.3 * size, size);
-    const std::uint32_t n = 5 + static_cast<std::uint32_t>(rng() % 3);
-    Mesh m;
-    m.closed = true;
-    const double h = r(rng);
-    for (double z : {-h, h}) {
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const double angle = 2 * M_PI * (i + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng)) / n;
-            const double radius = r(rng);
-            m.points.push_back({center[0] + radius * std::cos(angle),
-                                center[1] + radius * std::sin(angle), center[2] + z});
-        }
-    }
-    m.points.push_back({center[0], center[1], center[2] - h});
-    m.points.push_back({center[0], center[1], center[2] + h});
-    const std::uint32_t cb = 2 * n, ct = 2 * n + 1;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t j = (i + 1) % n;
-        m.tris.push_back({cb, j, i});
-        m.tris.push_back({ct, n + i, n + j});
-        m.tris.push_back({i, j, n + j});
-        m.tris.push_back({i, n + j, n + i});
-    }
-    return m;
-}
-
-Mesh soup(std::mt19937_64& rng, const D3& center, double size, int count) {
-    std::uniform_real_distribution<double> u(-size, size);
-    Mesh m;
-    for (int t = 0; t < count; ++t) {
-        for (int k = 0; k < 3; ++k) m.points.push_back({center[0] + u(rng), center[1] + u(rng), center[2] + u(rng)});
-        const auto b = static_cast<std::uint32_t>(3 * t);
-        m.tris.push_back({b, b + 1, b + 2});
-    }
-    return m;
-}
-
-Mesh random_mesh(std::mt19937_64& rng, const D3& center, double size) {
-    switch (rng() % 3) {
-        case 0: return convex_blob(rng, center, size);
-        case 1: return star_prism(rng, center, size);
-        default: return soup(rng, center, size, 1 + static_cast<int>(rng() % 3));
-    }
 }
 
 // ---- the sampled oracle ----
@@ -463,34 +381,20 @@ constexpr bool kSanitized = false;
 #endif
 
 TEST_CASE("route: randomized oracle, 10 000 exact static samples per leg") {
-    std::mt19937_64 rng(20261129);
-    std::uniform_real_distribution<double> place(-2.0, 2.0), size(0.3, 0.9);
+    std::mt19937_64 rng(route_test::kRandomSceneSeed);
     int hits = 0, clears = 0, starts = 0, checked_clearances = 0;
     // Under the sanitizers (about ten times slower) 10 of the 40 scenes: that run looks for memory
     // errors and undefined behaviour; the plain build checks the answers on all 40.
     const int scenes = kSanitized ? 10 : 40;
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
-        std::vector<Mesh> parts, obstacles;
-        const int part_count = 1 + static_cast<int>(rng() % 2);
-        for (int i = 0; i < part_count; ++i) {
-            parts.push_back(random_mesh(rng, {0.8 * i, 0, 0}, size(rng) * 0.6));
-        }
-        const int obstacle_count = 2 + static_cast<int>(rng() % 3);
-        for (int i = 0; i < obstacle_count; ++i) {
-            obstacles.push_back(random_mesh(rng, {0.7 * place(rng), 0.7 * place(rng), 0.7 * place(rng)}, size(rng)));
-        }
-        Scene scene;
-        for (const Mesh& m : parts) scene.parts.push_back(to_mesh(m, "part"));
-        for (const Mesh& m : obstacles) scene.obstacles.push_back(to_mesh(m, "obstacle"));
-        std::vector<D3> waypoints;
-        for (int i = 0; i < 3; ++i) {
-            waypoints.push_back({place(rng), place(rng), place(rng)});
-            scene.route.insert(scene.route.end(), waypoints.back().begin(), waypoints.back().end());
-        }
-        scene.margin = scene_index % 2 ? 0.0 : 0.1 * size(rng);
+        // The oracle draws its rays from the same generator, so each scene follows the oracle's
+        // run on the one before.
+        const route_test::RandomScene random = route_test::random_scene(rng, scene_index);
+        const Scene& scene = random.scene;
+        const std::vector<D3>& waypoints = random.waypoints;
         const RouteReport report = check_route(scene);
         REQUIRE(report.ok());
-        const Oracle oracle{parts, obstacles, scene.margin};
+        const Oracle oracle{random.parts, random.obstacles, scene.margin};
         for (std::size_t leg_index = 0; leg_index + 1 < waypoints.size(); ++leg_index) {
             const D3& a = waypoints[leg_index];
             const D3& b = waypoints[leg_index + 1];

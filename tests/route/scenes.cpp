@@ -9,17 +9,13 @@
 #include "route_support.hpp"
 
 using namespace hullkit;
-using route_test::box_mesh;
 using route_test::offset_scene;
 using route_test::plate_x;
+using route_test::slot_scene;
+using route_test::unit_cube_scene;
+using route_test::wall_scene;
 
 namespace {
-
-Scene unit_cube_scene() {
-    Scene s;
-    s.parts.push_back(box_mesh("cube", 0, 0, 0, 1, 1, 1));
-    return s;
-}
 
 /// The bracket holds `t` (widened by `slack` for the rounding of offset coordinates) and is
 /// at most 1e-9 wide.
@@ -42,12 +38,7 @@ void both_offsets(const Scene& scene, Check&& check) {
 
 TEST_CASE("route: box through a slot wider than itself is clear with the side gap as clearance") {
     // Cube [0,1]^3 moves 10 along x through a slot y in (-0.25, 1.25) between walls x in [5,6].
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("low", 5, -10, -10, 6, -0.25, 10));
-    s.obstacles.push_back(box_mesh("high", 5, 1.25, -10, 6, 10, 10));
-    s.route = {0, 0, 0, 10, 0, 0};
-    s.margin = 0.125;
-    both_offsets(s, [](const RouteReport& r, double) {
+    both_offsets(slot_scene(-0.25, 1.25, 0.125), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         REQUIRE(r.legs.size() == 1);
         CHECK(r.clear);
@@ -63,12 +54,8 @@ TEST_CASE("route: box through a slot wider than itself is clear with the side ga
 TEST_CASE("route: box through a slot narrower than itself hits the wall's face") {
     // The high wall now starts at y = 0.75, inside the cube's y range: the front face x = 1 + 10t
     // reaches x = 5 at t = 0.4 (margin 0), or comes within the margin m at t = (4 - m) / 10.
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("low", 5, -10, -10, 6, -0.25, 10));
-    s.obstacles.push_back(box_mesh("high", 5, 0.75, -10, 6, 10, 10));
-    s.route = {0, 0, 0, 10, 0, 0};
     SECTION("margin 0") {
-        both_offsets(s, [](const RouteReport& r, double slack) {
+        both_offsets(slot_scene(-0.25, 0.75, 0.0), [](const RouteReport& r, double slack) {
             REQUIRE(r.ok());
             CHECK_FALSE(r.clear);
             const LegReport& leg = r.legs[0];
@@ -80,8 +67,7 @@ TEST_CASE("route: box through a slot narrower than itself hits the wall's face")
         });
     }
     SECTION("margin 0.5") {
-        s.margin = 0.5;
-        both_offsets(s, [](const RouteReport& r, double slack) {
+        both_offsets(slot_scene(-0.25, 0.75, 0.5), [](const RouteReport& r, double slack) {
             REQUIRE(r.ok());
             const LegReport& leg = r.legs[0];
             REQUIRE(leg.status == LegStatus::Hit);
@@ -94,13 +80,9 @@ TEST_CASE("route: box through a slot narrower than itself hits the wall's face")
 }
 
 TEST_CASE("route: grazing at exactly the margin is a hit, and touching at margin 0 is a hit") {
-    Scene s = unit_cube_scene();
-    s.route = {0, 0, 0, 10, 0, 0};
     SECTION("side gap 0.25 with margin 0.25: within the margin from t = 0.4") {
         // Before x = 5 the nearest wall point is its edge (5, 1.25): sqrt((4 - 10t)^2 + 1/16).
-        s.obstacles.push_back(box_mesh("high", 5, 1.25, -10, 6, 10, 10));
-        s.margin = 0.25;
-        both_offsets(s, [](const RouteReport& r, double slack) {
+        both_offsets(wall_scene(1.25, 0.25), [](const RouteReport& r, double slack) {
             REQUIRE(r.ok());
             REQUIRE(r.legs[0].status == LegStatus::Hit);
             // A tangential approach: the squared distance exceeds 1/16 by 100 dt^2, which double
@@ -110,9 +92,7 @@ TEST_CASE("route: grazing at exactly the margin is a hit, and touching at margin
         });
     }
     SECTION("a slot exactly as wide as the cube, margin 0: the faces slide along each other") {
-        s.obstacles.push_back(box_mesh("low", 5, -10, -10, 6, 0, 10));
-        s.obstacles.push_back(box_mesh("high", 5, 1, -10, 6, 10, 10));
-        both_offsets(s, [](const RouteReport& r, double slack) {
+        both_offsets(slot_scene(0.0, 1.0, 0.0), [](const RouteReport& r, double slack) {
             REQUIRE(r.ok());
             REQUIRE(r.legs[0].status == LegStatus::Hit);
             require_bracket(r.legs[0], 0.4, slack);
@@ -120,9 +100,7 @@ TEST_CASE("route: grazing at exactly the margin is a hit, and touching at margin
     }
     SECTION("a slot wider by 2^-40 on each side is clear, clearance 2^-40") {
         const double g = std::ldexp(1.0, -40);
-        s.obstacles.push_back(box_mesh("low", 5, -10, -10, 6, -g, 10));
-        s.obstacles.push_back(box_mesh("high", 5, 1 + g, -10, 6, 10, 10));
-        const RouteReport r = check_route(s);  // at the origin only: 2^-40 is below 1e6's ulp
+        const RouteReport r = check_route(slot_scene(-g, 1 + g, 0.0));  // at the origin only: 2^-40 is below 1e6's ulp
         REQUIRE(r.ok());
         REQUIRE(r.legs[0].status == LegStatus::Clear);
         CHECK(r.legs[0].clearance == Approx(g).epsilon(1e-9));
@@ -133,11 +111,7 @@ TEST_CASE("route: a zero-thickness plate that 100-step sampling misses, with its
     // A cube of side 2^-10 moves 1 along x; the plate x = 0.5 + 2^-8 is inside the cube only for
     // t in [0.5 + 2^-8 - 2^-10, 0.5 + 2^-8] = [0.5029296875, 0.50390625], between samples 0.50
     // and 0.51.
-    Scene s;
-    const double side = std::ldexp(1.0, -10);
-    s.parts.push_back(box_mesh("cube", 0, 0, 0, side, side, side));
-    s.obstacles.push_back(plate_x("plate", 0.50390625, -1, 1));
-    s.route = {0, 0, 0, 1, 0, 0};
+    const Scene s = route_test::thin_plate_scene();
     RouteOptions options;
     options.samples = 100;
     SECTION("at the origin") {
@@ -164,10 +138,8 @@ TEST_CASE("route: a zero-thickness plate that 100-step sampling misses, with its
 }
 
 TEST_CASE("route: starting in contact is a start overlap, the next leg starts clear") {
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("touching", 1, 0.5, 0.5, 2, 2, 2));  // shares the face x = 1
-    s.route = {0, 0, 0, 0, 0, -5, 5, 0, -5};
-    both_offsets(s, [](const RouteReport& r, double) {
+    // The cube [0,1]^3 shares its face x = 1 with the obstacle, then moves down 5 and away.
+    both_offsets(route_test::touching_start_scene(), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         REQUIRE(r.legs.size() == 2);
         CHECK(r.legs[0].status == LegStatus::StartOverlap);
@@ -181,22 +153,12 @@ TEST_CASE("route: starting in contact is a start overlap, the next leg starts cl
 TEST_CASE("route: an obstacle entirely inside the swept hull is a hit") {
     // A small closed box and a lone triangle in the cube's path: the front face reaches x = 5 at
     // t = 0.4 and x = 7 at t = 0.6.
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("bead", 5, 0.4, 0.4, 5.1, 0.6, 0.6));
-    s.route = {0, 0, 0, 10, 0, 0};
-    both_offsets(s, [](const RouteReport& r, double slack) {
+    both_offsets(route_test::bead_scene(), [](const RouteReport& r, double slack) {
         REQUIRE(r.ok());
         REQUIRE(r.legs[0].status == LegStatus::Hit);
         require_bracket(r.legs[0], 0.4, slack);
     });
-    Scene t = unit_cube_scene();
-    TriangleMesh tri;
-    tri.name = "chip";
-    tri.xyz = {7, 0.2, 0.2, 7.05, 0.8, 0.3, 7.02, 0.5, 0.9};
-    tri.triangles = {0, 1, 2};
-    t.obstacles.push_back(tri);
-    t.route = {0, 0, 0, 10, 0, 0};
-    both_offsets(t, [](const RouteReport& r, double slack) {
+    both_offsets(route_test::chip_scene(), [](const RouteReport& r, double slack) {
         REQUIRE(r.ok());
         REQUIRE(r.legs[0].status == LegStatus::Hit);
         require_bracket(r.legs[0], 0.6, slack);
@@ -204,17 +166,14 @@ TEST_CASE("route: an obstacle entirely inside the swept hull is a hit") {
 }
 
 TEST_CASE("route: the traverse inside a closed vessel starts overlapping; an open one is clear") {
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("vessel", -5, -5, -5, 6, 6, 6));
-    s.route = {0, 0, 0, 1, 1, 1};
-    both_offsets(s, [](const RouteReport& r, double) {
+    // The cube [0,1]^3 inside the vessel [-5,6]^3 moves by (1, 1, 1).
+    both_offsets(route_test::vessel_scene(true), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         CHECK(r.legs[0].status == LegStatus::StartOverlap);
         CHECK(r.legs[0].obstacle == 0);
     });
     // Without its top (two triangles) the vessel is an open surface with no inside.
-    s.obstacles[0].triangles.resize(s.obstacles[0].triangles.size() - 6);
-    both_offsets(s, [](const RouteReport& r, double) {
+    both_offsets(route_test::vessel_scene(false), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         CHECK(r.legs[0].status == LegStatus::Clear);
         CHECK(r.legs[0].clearance == Approx(4.0).epsilon(1e-9));  // from x = 2 to the wall at 6
@@ -222,10 +181,8 @@ TEST_CASE("route: the traverse inside a closed vessel starts overlapping; an ope
 }
 
 TEST_CASE("route: an obstacle inside a closed part starts overlapping") {
-    Scene s = unit_cube_scene();
-    s.obstacles.push_back(box_mesh("inside", 0.25, 0.25, 0.25, 0.75, 0.75, 0.75));
-    s.route = {0, 0, 0, 0, 0, 0.1};
-    both_offsets(s, [](const RouteReport& r, double) {
+    // The box [0.25,0.75]^3 inside the cube [0,1]^3, which moves 0.1 along z.
+    both_offsets(route_test::obstacle_inside_part_scene(), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         CHECK(r.legs[0].status == LegStatus::StartOverlap);
     });
@@ -235,11 +192,7 @@ TEST_CASE("route: an L-shaped part passes around a post its hull would hit") {
     // The L [0,3]x[0,1] u [0,1]x[0,3] (z in [0,1]) around the post [1.5,1.7]^2 (z in [-5,5]): the
     // post is inside the L's hull but 0.5 from the L. Moving by (0.25, 0.25, 2) brings the L's
     // inner faces to 0.25 from the post at the end of the leg.
-    Scene s;
-    s.parts.push_back(route_test::l_part());
-    s.obstacles.push_back(box_mesh("post", 1.5, 1.5, -5, 1.7, 1.7, 5));
-    s.route = {0, 0, 0, 0.25, 0.25, 2};
-    both_offsets(s, [](const RouteReport& r, double) {
+    both_offsets(route_test::l_post_scene(0.25, 0.25, 2), [](const RouteReport& r, double) {
         REQUIRE(r.ok());
         REQUIRE(r.legs[0].status == LegStatus::Clear);
         CHECK(r.legs[0].clearance == Approx(0.25).epsilon(1e-9));
@@ -247,8 +200,7 @@ TEST_CASE("route: an L-shaped part passes around a post its hull would hit") {
         CHECK(r.legs[0].obstacle == 0);
     });
     // Further, the inner corner of the L meets the post's corner (1.5, 1.5) at t = 0.5/0.75.
-    s.route = {0, 0, 0, 0.75, 0.75, 0};
-    both_offsets(s, [](const RouteReport& r, double slack) {
+    both_offsets(route_test::l_post_scene(0.75, 0.75, 0), [](const RouteReport& r, double slack) {
         REQUIRE(r.ok());
         REQUIRE(r.legs[0].status == LegStatus::Hit);
         require_bracket(r.legs[0], 0.5 / 0.75, slack + 1e-15);

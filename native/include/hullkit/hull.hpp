@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,13 @@ struct HullOptions {
     /// Also report the faces as planar convex polygons (Hull::face_offsets / face_vertices):
     /// a cube gives 6 quads. The triangles are reported either way.
     bool merge_coplanar = false;
+    /// Threads for quickhull: 0 (the default) uses every hardware thread when the input is large enough to gain
+    /// from them (tens of thousands of points), enough to gain from them (over 100 000 points), 1 keeps all work on the calling thread.
+    /// The result is the same bits for every value: large clouds with few hull vertices are cut
+    /// into chunks hulled on threads, and the hull of the chunks' vertices is taken last; the
+    /// answer depends only on the points, not on the chunks (see Hull's canonical order). Gift
+    /// wrapping runs on the calling thread; so does the WebAssembly build, which has no threads.
+    unsigned threads = 0;
 };
 
 /// The result of a hull computation. On failure `error` says what is wrong and, where one point
@@ -68,6 +76,13 @@ struct HullOptions {
 ///  -1   no points at all.
 /// Among identical points the lowest index represents them all. A point strictly inside a face or
 /// an edge is never a vertex, and no triangle has zero area.
+///
+/// Quickhull's results are in one canonical order that depends only on the points: each face
+/// (polygon, before it is fanned into triangles) starts at its lowest index, and the faces are
+/// sorted by their first two corners; volume and area are summed in that order. So the thread
+/// count, and hulling a cloud whole or streamed in chunks (HullBuilder), give the same arrays
+/// and the same volume and area bits. Gift wrapping reports its faces in the order it wraps them
+/// (the order giftwrap_trace records).
 struct Hull {
     int dimension = -1;
     /// 3 indices per triangle into the input points, counter-clockwise seen from outside.
@@ -97,6 +112,59 @@ struct Hull {
 /// nonzero |coordinates| span more than 2^585 (no common power-of-two scale brings them into the
 /// predicates' exact range, see predicates.hpp), or an option combination that does not exist.
 Hull hull(PointSpan points, const HullOptions& options = {});
+
+/// The hull of a cloud given in pieces (HullBuilder::finish). `hull` indexes `points`, the points
+/// the builder kept (the hull's vertices and nothing else: points not on the hull are gone), and
+/// `index` gives the caller's 64-bit index of each: the hull of the whole cloud has triangle
+/// corners index[hull.triangles[k]], vertices index[hull.vertices[k]], and so on. These are the
+/// same arrays, volume and area as hull() gives for the whole cloud where it fits in memory.
+struct StreamedHull {
+    Hull hull;
+    std::vector<double> points;        ///< x y z of the kept points, in ascending `index`
+    std::vector<std::uint64_t> index;  ///< the caller's index of each kept point
+    std::uint64_t point_count = 0;     ///< points added in all
+
+    bool ok() const { return hull.ok(); }
+};
+
+/// Streaming hull: add() the cloud in pieces of any size, in any order, then finish(). Holds only
+/// the running hull's vertices between calls (plus, during add(), the candidates of the piece),
+/// so clouds far larger than memory can be hulled one piece at a time; hulls compose, so the same
+/// class merges the hulls of files hulled on other machines (add their vertices with their
+/// indices). Quickhull with exact side tests only; HullOptions::threads applies to each add()
+/// and to finish(). Indices must be distinct (a repeat among the kept points is an error).
+class HullBuilder {
+public:
+    explicit HullBuilder(const HullOptions& options = {});
+
+    /// Adds `points`, point i having the index first_index + i. Returns false, and finish()
+    /// reports the error, on a non-finite coordinate ("point I has a non-finite x coordinate
+    /// (nan)", I the global index), on magnitudes no power of two brings into the predicates'
+    /// range, or once an earlier add() failed.
+    bool add(PointSpan points, std::uint64_t first_index);
+    /// Adds `points`, point i having the index indices[i] (e.g. hull vertices read back).
+    bool add_indexed(PointSpan points, const std::uint64_t* indices);
+
+    /// The hull of everything added so far (the builder can take more points afterwards).
+    StreamedHull finish() const;
+
+    std::uint64_t points_added() const { return added_; }
+    /// How many points the builder holds now: the vertices of the hull so far.
+    std::size_t points_kept() const { return ids_.size(); }
+    const std::string& error() const { return error_; }
+
+private:
+    bool add_points(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices);
+
+    HullOptions options_;
+    std::vector<double> xyz_;           // the kept points, ascending global index
+    std::vector<std::uint64_t> ids_;    // their global indices
+    double largest_ = 0.0;              // magnitudes of every point added, kept or not
+    double smallest_ = std::numeric_limits<double>::infinity();
+    std::uint64_t added_ = 0;
+    std::string error_;
+    std::int64_t error_point_ = -1;
+};
 
 /// "quickhull", "giftwrap"
 const char* algorithm_name(Algorithm algorithm);

@@ -36,6 +36,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -101,6 +102,17 @@ struct RouteOptions {
     bool clearance = true;
     /// Also run N-step discrete sampling per leg, for comparison (0: off).
     std::uint32_t samples = 0;
+    /// Threads checking legs: 0 every hardware thread, 1 the calling thread only, N at most N
+    /// (never more than there are legs). Legs are independent, so the report (every field of every
+    /// leg, `clear`, `min_clearance`; not the timings) is bit for bit the same for every value.
+    /// The WebAssembly build is single-threaded and ignores it.
+    unsigned threads = 0;
+    /// Optional: called as legs finish with the number of legs done so far. It may be called from
+    /// any of the worker threads, and calls are not guaranteed never to overlap: the receiver must
+    /// be thread-safe. The counts passed increase, and the last call, before check() returns,
+    /// passes the leg count (exactly once). Not called when the check fails before its first leg.
+    /// An exception thrown by it stops the check and leaves check().
+    std::function<void(std::size_t legs_done)> progress;
 };
 
 struct RouteReport {

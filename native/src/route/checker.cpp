@@ -10,14 +10,17 @@
 // too: a closed part or obstacle cannot start to contain the other without their surfaces meeting
 // first, so containment is only tested at the leg's start (exact ray parity).
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "../parallel.hpp"
 #include "bvh.hpp"
 #include "geometry.hpp"
 #include "hullkit/hull.hpp"
@@ -421,6 +424,8 @@ struct RouteChecker::Impl {
 
     bool check_offsets(const double* xyz, std::size_t count, std::string* error) const;
     LegReport check_leg(const Vec& a, const Vec& b, const RouteOptions& options) const;
+    void check_legs(const double* xyz, std::size_t count, const RouteOptions& options,
+                    LegReport* legs) const;
     StaticContact contact_at(const Vec& w, bool want_distance) const;
 };
 
@@ -1054,6 +1059,52 @@ LegReport RouteChecker::Impl::check_leg(const Vec& a, const Vec& b,
     return leg;
 }
 
+void RouteChecker::Impl::check_legs(const double* xyz, std::size_t count,
+                                    const RouteOptions& options, LegReport* legs) const {
+    // Each leg's report is a function of its two waypoints, the options and this Impl, which
+    // check() never modifies (every scratch buffer of the check path is local to check_leg and
+    // what it calls), and goes to its own slot: how legs are spread over threads cannot change a
+    // bit of it. New threads inherit the caller's floating-point environment (POSIX), so the
+    // rounding is the same on every thread.
+    const unsigned threads = detail::resolve_threads(options.threads, count);
+    // Blocks of consecutive legs: a clear verdict takes a few microseconds, so handing out legs
+    // one by one would be mostly overhead; about 8 blocks per thread (at most 64 legs each) keep
+    // uneven legs balanced (a leg with clearance can cost 100 times a clear verdict) and the
+    // progress reports frequent. The split depends on the leg and thread counts only.
+    const std::size_t per_block =
+        std::clamp<std::size_t>((count + 8 * std::size_t{threads} - 1) / (8 * std::size_t{threads}), 1, 64);
+    const std::size_t blocks = (count + per_block - 1) / per_block;
+
+    std::atomic<std::size_t> done{0};
+    std::mutex progress_mutex;
+    std::size_t reported = 0;  // guarded by progress_mutex
+    auto legs_finished = [&](std::size_t finished) {
+        const std::size_t total = done.fetch_add(finished, std::memory_order_acq_rel) + finished;
+        if (!options.progress) return;
+        // One report at a time, so that the counts arrive in increasing order. A thread that finds
+        // another one reporting skips its turn (its legs are in the count the next report reads),
+        // except the one finishing the last legs: the final count must be reported.
+        std::unique_lock<std::mutex> lock(progress_mutex, std::defer_lock);
+        if (total == count) {
+            lock.lock();
+        } else if (!lock.try_lock()) {
+            return;
+        }
+        const std::size_t latest = done.load(std::memory_order_acquire);
+        if (latest <= reported) return;  // a later report already covered these legs
+        reported = latest;
+        options.progress(latest);
+    };
+    detail::parallel_for(threads, blocks, [&](std::size_t block) {
+        const std::size_t first = block * per_block, last = std::min(count, first + per_block);
+        for (std::size_t k = first; k < last; ++k) {
+            const double* p = xyz + 3 * k;
+            legs[k] = check_leg(Vec(p[0], p[1], p[2]), Vec(p[3], p[4], p[5]), options);
+        }
+        legs_finished(last - first);
+    });
+}
+
 StaticContact RouteChecker::Impl::contact_at(const Vec& w, bool want_distance) const {
     StaticContact result;
     Found found;
@@ -1135,12 +1186,12 @@ RouteReport RouteChecker::check(const double* route_xyz, std::size_t waypoint_co
     }
     if (!impl_->check_offsets(route_xyz, waypoint_count, &report.error)) return report;
     const auto start = std::chrono::steady_clock::now();
+    report.legs.resize(waypoint_count - 1);
+    impl_->check_legs(route_xyz, report.legs.size(), options, report.legs.data());
+    // The aggregates in leg order, after the parallel loop: the same operations in the same order
+    // for every thread count.
     report.clear = true;
-    for (std::size_t k = 0; k + 1 < waypoint_count; ++k) {
-        const double* p = route_xyz + 3 * k;
-        const Vec a(p[0], p[1], p[2]), b(p[3], p[4], p[5]);
-        report.legs.push_back(impl_->check_leg(a, b, options));
-        const LegReport& leg = report.legs.back();
+    for (const LegReport& leg : report.legs) {
         report.clear = report.clear && leg.status == LegStatus::Clear;
         if (!std::isnan(leg.clearance)) report.min_clearance = std::min(report.min_clearance, leg.clearance);
     }

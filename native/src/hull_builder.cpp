@@ -1,0 +1,137 @@
+// hullkit::HullBuilder: the hull of a cloud given in pieces, holding only the running hull's
+// vertices. Hulls compose, hull(A u B) = hull(vertices of hull(A) u B), and quickhull's results
+// are in a canonical order that depends only on the points (hull.hpp), so the result is the one
+// hull() gives for the whole cloud, bit for bit.
+//
+// Ties among identical points go to the lowest index: the kept points are held in ascending
+// global index, and the hull of each union is taken in that order, so "lowest local index" is
+// "lowest global index" at every step. The coordinates are checked as they arrive (the first
+// non-finite one is reported with its global index), and the range of magnitudes of every point
+// seen, kept or not, decides the power-of-two scaling of the last hull, as it would for the whole.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hull_internal.hpp"
+#include "hullkit/hull.hpp"
+#include "parallel.hpp"
+
+namespace hullkit {
+
+HullBuilder::HullBuilder(const HullOptions& options) : options_(options) {
+    if (options_.side_test != SideTest::Exact || options_.algorithm != Algorithm::Quickhull) {
+        error_ = "HullBuilder runs quickhull with exact side tests only";
+    }
+}
+
+bool HullBuilder::add(PointSpan points, std::uint64_t first_index) { return add_points(points, first_index, nullptr); }
+
+bool HullBuilder::add_indexed(PointSpan points, const std::uint64_t* indices) { return add_points(points, 0, indices); }
+
+bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices) {
+    if (!error_.empty()) return false;
+    if (points.count == 0) return true;
+    const unsigned threads = detail::resolve_threads(options_.threads);
+    detail::Magnitudes range{largest_, smallest_};
+    Hull check = detail::scan_magnitudes(points, first_index, indices, threads, &range);
+    int exponent = 0;
+    if (check.ok()) check = detail::scale_exponent(range, &exponent);
+    if (!check.ok()) {
+        error_ = std::move(check.error);
+        error_point_ = check.error_point;
+        return false;
+    }
+    largest_ = range.largest;
+    smallest_ = range.smallest;
+    added_ += points.count;
+
+    // The piece's own candidates (on threads, for a large piece with few hull vertices), scaled
+    // into the predicates' range when it has to be (a copy only then).
+    std::vector<double> scaled;
+    PointSpan piece = points;
+    if (exponent != 0) {
+        scaled.assign(points.xyz, points.xyz + 3 * points.count);
+        for (double& c : scaled) c = std::ldexp(c, exponent);
+        piece = PointSpan(scaled.data(), points.count);
+    }
+    std::vector<std::uint32_t> candidates = detail::chunk_candidates(piece, threads);
+    const bool all = candidates.empty();
+    const std::size_t count = all ? points.count : candidates.size();
+    auto local = [&](std::size_t k) { return all ? k : std::size_t{candidates[k]}; };
+    auto global = [&](std::size_t i) { return indices ? indices[i] : first_index + i; };
+
+    // Candidates and kept points merged in ascending global index (kept points first on a tie,
+    // which is an error reported below).
+    std::vector<std::size_t> order(count);
+    for (std::size_t k = 0; k < count; ++k) order[k] = local(k);
+    if (indices) std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return indices[a] < indices[b]; });
+    std::vector<double> xyz;
+    std::vector<std::uint64_t> ids;
+    xyz.reserve(3 * (ids_.size() + count));
+    ids.reserve(ids_.size() + count);
+    std::size_t kept = 0, next = 0;
+    while (kept < ids_.size() || next < count) {
+        if (next == count || (kept < ids_.size() && ids_[kept] <= global(order[next]))) {
+            if (next < count && ids_[kept] == global(order[next])) {
+                error_ = "point index " + std::to_string(ids_[kept]) + " was added twice";
+                error_point_ = static_cast<std::int64_t>(ids_[kept]);
+                return false;
+            }
+            ids.push_back(ids_[kept]);
+            xyz.insert(xyz.end(), &xyz_[3 * kept], &xyz_[3 * kept] + 3);
+            ++kept;
+        } else {
+            if (!ids.empty() && ids.back() == global(order[next])) {
+                error_ = "point index " + std::to_string(ids.back()) + " was added twice";
+                error_point_ = static_cast<std::int64_t>(ids.back());
+                return false;
+            }
+            ids.push_back(global(order[next]));
+            xyz.insert(xyz.end(), points[order[next]], points[order[next]] + 3);
+            ++next;
+        }
+    }
+    scaled = {};
+    candidates = {};
+
+    // Keep the extreme points of the union (decided on scaled copies when scaling is needed).
+    std::vector<std::uint32_t> extreme;
+    if (exponent != 0) {
+        std::vector<double> copy(xyz);
+        for (double& c : copy) c = std::ldexp(c, exponent);
+        extreme = detail::extreme_points(PointSpan(copy.data(), ids.size()));
+    } else {
+        extreme = detail::extreme_points(PointSpan(xyz.data(), ids.size()));
+    }
+    xyz_.clear();
+    ids_.clear();
+    xyz_.reserve(3 * extreme.size());
+    ids_.reserve(extreme.size());
+    for (std::uint32_t v : extreme) {
+        xyz_.insert(xyz_.end(), &xyz[3 * std::size_t{v}], &xyz[3 * std::size_t{v}] + 3);
+        ids_.push_back(ids[v]);
+    }
+    return true;
+}
+
+StreamedHull HullBuilder::finish() const {
+    StreamedHull result;
+    result.point_count = added_;
+    if (!error_.empty()) {
+        result.hull = detail::failure(error_, error_point_);
+        return result;
+    }
+    int exponent = 0;
+    if (Hull invalid = detail::scale_exponent(detail::Magnitudes{largest_, smallest_}, &exponent); !invalid.ok()) {
+        result.hull = std::move(invalid);
+        return result;
+    }
+    result.hull = detail::hull_in_range(PointSpan(xyz_.data(), ids_.size()), options_, exponent);
+    result.points = xyz_;
+    result.index = ids_;
+    return result;
+}
+
+}  // namespace hullkit
