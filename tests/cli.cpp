@@ -192,7 +192,7 @@ Json parse_stats(const RunResult& result) {
     Json stats = parse_json(lines[0]);
     REQUIRE(stats.kind == Json::Kind::Object);
     CHECK(stats.keys() == std::vector<std::string>{"points", "vertices", "faces", "volume", "area",
-                                                   "algorithm", "seconds"});
+                                                   "algorithm", "seconds", "streamed", "threads"});
     return stats;
 }
 
@@ -228,7 +228,7 @@ TEST_CASE("cli: --help, hull --help and --version") {
 
     RunResult hull_help = run_cli(dir, {"hull", "--help"});
     CHECK(hull_help.exit_code == 0);
-    CHECK(hull_help.out.rfind("Usage: hullkit hull [INPUT|-]", 0) == 0);
+    CHECK(hull_help.out.rfind("Usage: hullkit hull [INPUT...|-]", 0) == 0);
     CHECK(hull_help.out.find("--algorithm NAME    hull algorithm: quickhull (default), giftwrap\n") !=
           std::string::npos);
 
@@ -260,10 +260,10 @@ TEST_CASE("cli: usage problems exit 2 with one line") {
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--algorithm=nope"})) ==
           "hullkit: unknown algorithm \"nope\" (known: quickhull, giftwrap)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--format", "ply"})) ==
-          "hullkit: unknown format \"ply\" (known: off, obj, json)");
+          "hullkit: unknown format \"ply\" (known: off, obj, json, xyz)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "-o"})) == "hullkit: option -o needs a value");
-    CHECK(single_error_line(run_cli(dir, {"hull", tetra, tetra})) ==
-          "hullkit: unexpected argument \"" + tetra + "\" (only one INPUT is allowed)");
+    // Several INPUTs are one cloud: the tetrahedron twice is the tetrahedron (repeats: lowest index).
+    CHECK(run_cli(dir, {"hull", tetra, tetra}).out == run_cli(dir, {"hull", tetra}).out);
     CHECK(single_error_line(run_cli(dir, {"frobnicate"})) ==
           "hullkit: unknown command \"frobnicate\" (try 'hullkit --help')");
     CHECK(single_error_line(run_cli(dir, {"--frobnicate"})) ==
@@ -586,10 +586,10 @@ TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
     RunResult result = run_cli(dir, {"hull", junk});
     CHECK(single_error_line(result) == "hullkit: " + junk + ": not a point file: binary data (byte 0x7f at offset 128)");
     CHECK(result.out.empty());
-    // A binary STL on standard input: only files are read as meshes.
+    // A binary STL on standard input is read as a mesh (its vertices), as from a file.
     RunResult stl_in = run_cli(dir, {"hull"}, data_path("binary-two-triangles.stl"));
-    CHECK(single_error_line(stl_in) == "hullkit: <stdin>: not a point file: binary STL is not supported by the point reader "
-                                       "(read: xyz, rbox, OBJ, OFF)");
+    CHECK(stl_in.exit_code == 0);
+    CHECK(stl_in.out == run_cli(dir, {"hull", data_path("binary-two-triangles.stl")}).out);
     const std::string message = "hullkit: <stdin>: not a point file: binary data (byte 0x7f at offset 128)";  // bytes >= 0x80 may be UTF-8 text
     RunResult redirected = run_cli(dir, {"hull"}, junk);
     CHECK(single_error_line(redirected) == message);
@@ -598,7 +598,7 @@ TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
     for (unsigned char c : piped.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
 }
 
-TEST_CASE("cli: a PNG, a PLY and an ASCII STL are named as what they are, exit 2, no bytes echoed") {
+TEST_CASE("cli: a PNG is named as what it is, exit 2, no bytes echoed; a PLY and an ASCII STL on stdin are read") {
     TempDir dir("hullkit-cli");
     // A PNG's signature and the start of its IHDR chunk.
     const std::string png = dir.file("picture.png");
@@ -609,19 +609,21 @@ TEST_CASE("cli: a PNG, a PLY and an ASCII STL are named as what they are, exit 2
     CHECK(result.out.empty());
     for (unsigned char c : result.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
 
-    // A PLY and an STL from standard input: refused as what they are (files are read as meshes,
-    // see the next test).
+    // A PLY and an STL from standard input are read by their content, as files are (see the
+    // next test): the hull of their vertices.
     const std::string ply = dir.file("mesh.ply");
     write_text(ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
                     "end_header\n0 0 0\n");
-    CHECK(single_error_line(run_cli(dir, {"hull"}, ply)) ==
-          "hullkit: <stdin>: not a point file: PLY is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    RunResult ply_in = run_cli(dir, {"hull", "--format", "json"}, ply);
+    CHECK(ply_in.exit_code == 0);
+    CHECK_THAT(ply_in.out, Catch::Contains("\"dimension\":0"));
 
     const std::string stl = dir.file("mesh.stl");
     write_text(stl, "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
                     "endfacet\nendsolid t\n");
-    CHECK(single_error_line(run_cli(dir, {"hull"}, stl)) ==
-          "hullkit: <stdin>: not a point file: ASCII STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)");
+    RunResult stl_in = run_cli(dir, {"hull", "--format", "json"}, stl);
+    CHECK(stl_in.exit_code == 0);
+    CHECK_THAT(stl_in.out, Catch::Contains("\"dimension\":2"));
 }
 
 TEST_CASE("cli: PLY point clouds and STL files give the hull of their vertices, by name or by content") {

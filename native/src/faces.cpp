@@ -141,7 +141,28 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
     });
     std::uint64_t all_bits = 0;
     for (std::uint64_t bits : block_bits) all_bits |= bits;
-    if (count < 512) {
+    const std::uint64_t first_ids = (all_bits >> 32) + 1;  // a bound on the first corners' ids
+    if (count >= 512 && first_ids <= 4 * std::uint64_t{count}) {
+        // Dense ids (a hull with most points as vertices, a sphere): counting sort by the first
+        // corner, then each group (the faces starting at one vertex: a few) by the second.
+        std::vector<std::uint32_t> start(static_cast<std::size_t>(first_ids) + 1, 0);
+        for (const Keyed& k : keyed) ++start[(k.key >> 32) + 1];
+        for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+        std::vector<Keyed> buffer(count);
+        for (const Keyed& k : keyed) buffer[start[k.key >> 32]++] = k;
+        for (std::size_t begin = 0; begin < count;) {
+            std::size_t end = begin + 1;
+            while (end < count && buffer[end].key >> 32 == buffer[begin].key >> 32) ++end;
+            for (std::size_t i = begin + 1; i < end; ++i) {  // insertion sort of a handful
+                const Keyed k = buffer[i];
+                std::size_t j = i;
+                for (; j > begin && buffer[j - 1].key > k.key; --j) buffer[j] = buffer[j - 1];
+                buffer[j] = k;
+            }
+            begin = end;
+        }
+        keyed.swap(buffer);
+    } else if (count < 512) {
         std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
     } else {
         // LSD radix sort, 11-bit digits, skipping digits no key uses (indices are usually far

@@ -59,22 +59,28 @@ Simplex find_simplex(PointSpan points) {
     if (n == 0) return s;
     auto at = [&](std::uint32_t i) { return vec3(points[i]); };
 
-    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box.
+    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box, kept
+    // in locals (stores into `s` could alias the points, so the compiler would keep them in memory).
     double best_value[14];
+    std::uint32_t extreme_of[14] = {};
+    double lo[3], hi[3];
     for (int k = 0; k < 14; ++k) best_value[k] = -std::numeric_limits<double>::infinity();
-    for (int axis = 0; axis < 3; ++axis) s.lo[axis] = s.hi[axis] = points[0][axis];
+    for (int axis = 0; axis < 3; ++axis) lo[axis] = hi[axis] = points[0][axis];
     for (std::uint32_t i = 0; i < n; ++i) {
         const double* p = points[i];
         const double value[7] = {p[0], p[1], p[2], p[0] + p[1] + p[2], p[0] + p[1] - p[2], p[0] - p[1] + p[2], p[0] - p[1] - p[2]};
         for (int k = 0; k < 7; ++k) {
-            if (value[k] > best_value[2 * k]) best_value[2 * k] = value[k], s.extreme[2 * k] = i;
-            if (-value[k] > best_value[2 * k + 1]) best_value[2 * k + 1] = -value[k], s.extreme[2 * k + 1] = i;
+            if (value[k] > best_value[2 * k]) best_value[2 * k] = value[k], extreme_of[2 * k] = i;
+            if (-value[k] > best_value[2 * k + 1]) best_value[2 * k + 1] = -value[k], extreme_of[2 * k + 1] = i;
         }
         for (int axis = 0; axis < 3; ++axis) {
-            s.lo[axis] = std::min(s.lo[axis], p[axis]);
-            s.hi[axis] = std::max(s.hi[axis], p[axis]);
+            lo[axis] = std::min(lo[axis], p[axis]);
+            hi[axis] = std::max(hi[axis], p[axis]);
         }
     }
+    std::copy(extreme_of, extreme_of + 14, s.extreme);
+    std::copy(lo, lo + 3, s.lo);
+    std::copy(hi, hi + 3, s.hi);
     const std::uint32_t* extreme = s.extreme;
 
     // The farthest pair of extremes (rounded distances choose; equality of points is exact).
@@ -147,7 +153,7 @@ Hull scan_magnitudes(PointSpan points, std::uint64_t first_index, const std::uin
     std::vector<Magnitudes> found(blocks);
     std::vector<std::size_t> bad(blocks, ~std::size_t{0});
     parallel_for(threads, blocks, [&](std::size_t block) {
-        Magnitudes& m = found[block];
+        Magnitudes m;  // a local, written back once: neighbouring blocks' slots share cache lines
         const std::size_t end = std::min(points.count, (block + 1) * kBlock);
         for (std::size_t i = block * kBlock; i < end; ++i) {
             for (int axis = 0; axis < 3; ++axis) {
@@ -160,6 +166,7 @@ Hull scan_magnitudes(PointSpan points, std::uint64_t first_index, const std::uin
                 if (magnitude != 0.0) m.smallest = std::min(m.smallest, magnitude);
             }
         }
+        found[block] = m;
     });
     for (std::size_t block = 0; block < blocks; ++block) {
         if (const std::size_t i = bad[block]; i != ~std::size_t{0}) {
@@ -373,8 +380,9 @@ std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads) 
         const std::size_t sampled = sample.size() / 3;
         if (8 * detail::extreme_points(PointSpan(sample.data(), sampled)).size() > sampled) return {};
     }
-    // Two chunks per thread, so that a thread that finishes early takes another.
-    const std::size_t chunks = 2 * std::size_t{threads};
+    // One chunk per thread: each chunk's hull has costs that do not shrink with the chunk (its
+    // culling hull, sorting buffers, fresh pages), so more, smaller chunks were measured slower.
+    const std::size_t chunks = std::size_t{threads};
     std::vector<std::vector<std::uint32_t>> found(chunks);
     detail::parallel_for(threads, chunks, [&](std::size_t chunk) {
         const std::size_t begin = n * chunk / chunks, end = n * (chunk + 1) / chunks;

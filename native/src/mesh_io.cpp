@@ -17,8 +17,6 @@
 #include <system_error>
 #include <unordered_map>
 
-#include <sys/stat.h>
-
 // fast_float (Debian libfast-float-dev, header-only): the from_chars algorithm, inlined here;
 // ~3x fewer instructions per number than libstdc++'s std::from_chars. Without it the reader
 // falls back to std::from_chars / strtod with the same results.
@@ -27,6 +25,8 @@
 #define HULLKIT_HAVE_FAST_FLOAT 1
 #endif
 
+#include "hullkit/point_reader.hpp"
+#include "io/mesh_read_internal.hpp"
 #include "point_key.hpp"
 
 namespace hullkit {
@@ -38,30 +38,22 @@ namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-/// Walks the text line by line, handing out only lines with content: the part before any '#'
+/// Walks a text line by line, handing out only lines with content: the part before any '#'
 /// that is not all whitespace. Line numbers count every line, so messages match an editor's.
-/// The text is either one string in memory or a file read in chunks into one reused buffer
-/// (so a 60 MB file never sits in memory whole); a line handed out stays valid until the next
-/// call to next().
+/// The text is one piece of memory: a whole string, or a batch of whole lines that PointReader
+/// read from a file.
 class LineCursor {
 public:
-    explicit LineCursor(const std::string& text)
-        : pos_(text.data()), end_(text.data() + text.size()), at_eof_(true) {}
-
-    /// Reads `file` in chunks; a read error is reported by read_failed() / read_errno().
-    explicit LineCursor(std::FILE* file) : file_(file), buffer_(kChunk), pos_(buffer_.data()), end_(pos_) {}
+    explicit LineCursor(std::string_view text)
+        : begin_(text.data()), pos_(text.data()), end_(text.data() + text.size()), line_begin_(pos_) {}
 
     /// Advances to the next line with content; false at the end of the text.
     bool next(std::string_view* content) {
-        for (;;) {
-            const char* newline = pos_ < end_ ? static_cast<const char*>(std::memchr(pos_, '\n', end_ - pos_)) : nullptr;
-            if (!newline && !at_eof_) {  // an incomplete line: read on
-                refill();
-                continue;
-            }
-            if (pos_ >= end_) return false;
+        while (pos_ < end_) {
+            const char* newline = static_cast<const char*>(std::memchr(pos_, '\n', end_ - pos_));
             const char* begin = pos_;
             const char* stop = newline ? newline : end_;
+            line_begin_ = pos_;
             pos_ = newline ? newline + 1 : end_;
             ++line_number_;
             const char* hash = static_cast<const char*>(std::memchr(begin, '#', stop - begin));
@@ -73,42 +65,20 @@ public:
                 return true;
             }
         }
+        return false;
     }
 
     /// The number of the line last read (with or without content).
     std::size_t line_number() const { return line_number_; }
-    bool read_failed() const { return read_errno_ != 0; }
-    int read_errno() const { return read_errno_; }
-
-    /// The first bytes of the input (up to `size`), read ahead if needed, for format sniffing.
-    std::string_view head(std::size_t size) {
-        while (static_cast<std::size_t>(end_ - pos_) < size && !at_eof_) refill();
-        return std::string_view(pos_, std::min<std::size_t>(size, static_cast<std::size_t>(end_ - pos_)));
-    }
+    /// Offsets into the text: where the line last read starts, and where the next one starts.
+    std::size_t line_start() const { return static_cast<std::size_t>(line_begin_ - begin_); }
+    std::size_t offset() const { return static_cast<std::size_t>(pos_ - begin_); }
 
 private:
-    static constexpr std::size_t kChunk = std::size_t{1} << 20;
-
-    /// Moves the unread rest to the front of the buffer and appends the next chunk of the file.
-    void refill() {
-        const std::size_t rest = static_cast<std::size_t>(end_ - pos_);
-        if (pos_ != buffer_.data()) std::memmove(buffer_.data(), pos_, rest);
-        if (buffer_.size() - rest < kChunk / 2) buffer_.resize(2 * buffer_.size());  // a very long line
-        const std::size_t got = std::fread(buffer_.data() + rest, 1, buffer_.size() - rest, file_);
-        pos_ = buffer_.data();
-        end_ = pos_ + rest + got;
-        if (got == 0) {
-            at_eof_ = true;
-            if (std::ferror(file_)) read_errno_ = errno ? errno : EIO;
-        }
-    }
-
-    std::FILE* file_ = nullptr;
-    std::vector<char> buffer_;
+    const char* begin_;
     const char* pos_;
     const char* end_;
-    bool at_eof_ = false;
-    int read_errno_ = 0;
+    const char* line_begin_;
     std::size_t line_number_ = 0;
 };
 
@@ -243,19 +213,22 @@ std::size_t safe_reserve(std::uint64_t declared, std::size_t text_size) {
 
 class Reader {
 public:
-    Reader(const std::string& text, const std::string& source)
-        : cursor_(text), source_(source), text_size_(text.size()) {}
-    /// Reads `file` in chunks; `size` is its size in bytes if known (a regular file), else
-    /// kUnknownSize. It only sizes buffers: the text itself decides where it ends.
-    Reader(std::FILE* file, std::size_t size, const std::string& source)
-        : cursor_(file), source_(source), text_size_(size) {}
+    /// `whole`: the text is all of the input. Otherwise it is the start of a longer input, and
+    /// running out of it (ran_out()) means that more must be read, not that the input ends.
+    Reader(std::string_view text, const std::string& source, bool whole = true)
+        : cursor_(text), source_(source), text_size_(text.size()), whole_(whole) {}
 
     /// Advances to the next line with content; false at the end of the text.
-    bool next_line() { return cursor_.next(&line_); }
+    bool next_line() {
+        if (cursor_.next(&line_)) return true;
+        if (!whole_) ran_out_ = true;
+        return false;
+    }
+    bool ran_out() const { return ran_out_; }
     std::string_view line() const { return line_; }
     std::size_t line_number() const { return cursor_.line_number(); }
     std::size_t text_size() const { return text_size_; }
-    LineCursor& cursor() { return cursor_; }
+    const LineCursor& cursor() const { return cursor_; }
 
     /// Splits the current line; on an empty comma field records the error and returns false.
     bool split(bool allow_commas) {
@@ -265,18 +238,23 @@ public:
     }
     const std::vector<std::string_view>& fields() const { return fields_; }
 
-    /// Records "source:LINE: what" for the current line; returns false for `return fail(..)`.
+    /// Records what is wrong with the current line; returns false for `return fail(..)`.
     bool fail(const std::string& what) { return fail_at(line_number(), what); }
     bool fail_at(std::size_t line, const std::string& what) {
-        error_ = source_ + ":" + std::to_string(line) + ": " + what;
+        error_line_ = line;
+        error_what_ = what;
         return false;
     }
     /// For problems no single line is to blame for (an empty input).
-    bool fail_whole(const std::string& what) {
-        error_ = source_ + ": " + what;
-        return false;
+    bool fail_whole(const std::string& what) { return fail_at(0, what); }
+    /// "source:LINE: what", or "source: what" for the whole input.
+    std::string error() const {
+        return error_line_ ? io::at_line(source_, error_line_, error_what_) : source_ + ": " + error_what_;
     }
-    const std::string& error() const { return error_; }
+    /// The failing line (0: the whole input) and what is wrong, for a caller that numbers the
+    /// lines itself (a piece of a longer text).
+    std::size_t error_line() const { return error_line_; }
+    std::string& error_what() { return error_what_; }
 
     /// Parses fields[first..first+count) as numbers into *out (appended).
     bool append_numbers(std::size_t first, std::size_t count, const char* what,
@@ -306,7 +284,10 @@ public:
             if (!p || (p < end && !is_space(*p))) break;  // a bad number, or "1,2": the general path
         }
         if (k == 3 && p == end) {  // the line is trimmed: nothing may follow the third number
-            xyz->insert(xyz->end(), point, point + 3);
+            // push_back inlines; a range insert of 3 doubles is a call and a memmove per point.
+            xyz->push_back(point[0]);
+            xyz->push_back(point[1]);
+            xyz->push_back(point[2]);
             return true;
         }
         if (!split(allow_commas)) return false;
@@ -318,18 +299,21 @@ public:
 
 private:
     LineCursor cursor_;
-    std::string source_;
+    const std::string& source_;
     std::size_t text_size_;
+    bool whole_;
+    bool ran_out_ = false;
     std::string_view line_;
     std::vector<std::string_view> fields_;
-    std::string error_;
+    std::size_t error_line_ = 0;
+    std::string error_what_;
 };
 
 // ---------------------------------------------------------------------------------------------
 // Format detection
 // ---------------------------------------------------------------------------------------------
 
-enum class PointFormat { Xyz, Rbox, Obj, Off };
+using io::PointTextFormat;
 
 /// "OFF" and its variants (COFF, NOFF, 4OFF, STOFF, ...), so that a variant is reported as
 /// unsupported instead of being misread as plain points.
@@ -359,30 +343,26 @@ bool is_rbox_header(const std::vector<std::string_view>& fields) {
     return fields.size() == 1 || !parse_double(fields[1], &ignored);
 }
 
-PointFormat detect_format(const std::vector<std::string_view>& first_fields) {
-    if (is_off_keyword(first_fields[0])) return PointFormat::Off;
-    if (is_obj_keyword(first_fields[0])) return PointFormat::Obj;
-    if (is_rbox_header(first_fields)) return PointFormat::Rbox;
-    return PointFormat::Xyz;
+PointTextFormat detect_format(const std::vector<std::string_view>& first_fields) {
+    if (is_off_keyword(first_fields[0])) return PointTextFormat::Off;
+    if (is_obj_keyword(first_fields[0])) return PointTextFormat::Obj;
+    if (is_rbox_header(first_fields)) return PointTextFormat::Rbox;
+    return PointTextFormat::Xyz;
 }
 
 // ---------------------------------------------------------------------------------------------
-// The point formats. Each starts with the reader on the first content line, split without
-// commas.
+// The point formats: a header read once (rbox, OFF), then point lines that may be parsed in
+// pieces (parse_point_piece). Header readers start with the reader on the first content line,
+// split without commas.
 // ---------------------------------------------------------------------------------------------
 
-bool read_xyz(Reader& reader, std::vector<double>* xyz) {
-    // No header count to go by: reserve for as many points as the text could hold ("0 0 0\n"
-    // is 6 bytes), so the array never grows and copies itself. Only address space: the pages
-    // are touched as points arrive.
-    xyz->reserve(3 * safe_reserve(kMaxCount, reader.text_size()));
-    do {
-        if (!reader.append_point_line(/*allow_commas=*/true, xyz)) return false;
-    } while (reader.next_line());
-    return true;
+/// "header declares N points but the file has M", for counts that fall short at the end.
+std::string count_mismatch(std::uint64_t declared, const char* what, std::uint64_t found) {
+    return "header declares " + std::to_string(declared) + " " + what + " but the file has " + std::to_string(found);
 }
 
-bool read_rbox(Reader& reader, std::vector<double>* xyz) {
+/// qhull/rbox: the dimension (must be 3) on the current line, the point count on the next.
+bool read_rbox_header(Reader& reader, io::PointTextHeader* header) {
     std::uint64_t dimension = 0;
     parse_count(reader.fields()[0], kMaxCount, &dimension);  // checked by is_rbox_header
     if (dimension != 3) {
@@ -398,50 +378,36 @@ bool read_rbox(Reader& reader, std::vector<double>* xyz) {
         return reader.fail("expected the point count (one non-negative integer), got " +
                            quoted(reader.line()));
     }
-    const std::size_t count_line = reader.line_number();
-    xyz->reserve(safe_reserve(count, reader.text_size()) * 3);
-    std::uint64_t found = 0;
-    while (reader.next_line()) {
-        if (found == count) {
-            return reader.fail("more points than the " + std::to_string(count) +
-                               " declared on line " + std::to_string(count_line));
-        }
-        if (!reader.append_point_line(false, xyz)) return false;
-        ++found;
-    }
-    if (found != count) {
-        return reader.fail_at(count_line, "header declares " + std::to_string(count) +
-                                              " points but the file has " +
-                                              std::to_string(found));
-    }
+    header->counted = true;
+    header->declared = count;
+    header->count_line = reader.line_number();
     return true;
 }
 
-bool read_obj(Reader& reader, std::vector<double>* xyz) {
-    xyz->reserve(3 * safe_reserve(kMaxCount, reader.text_size()));
-    do {
-        if (!reader.split(false)) return false;
-        const auto& fields = reader.fields();
-        std::string_view keyword = fields[0];
-        if (keyword == "v") {
-            // x y z, x y z w (rational weight), or x y z r g b (a widespread colour extension);
-            // only x y z is the point, the rest is still checked to be numeric.
-            std::size_t n = fields.size() - 1;
-            if (n != 3 && n != 4 && n != 6) {
-                return reader.fail("expected \"v x y z [w]\", got " + std::to_string(n) +
-                                   (n == 1 ? " number" : " numbers"));
-            }
-            if (!reader.append_numbers(1, 3, "coordinate", xyz)) return false;
-            std::vector<double> extra;
-            if (!reader.append_numbers(4, n - 3, "vertex value", &extra)) return false;
-        } else if (!std::isalpha(static_cast<unsigned char>(keyword[0]))) {
-            // A bare "1 2 3" in an OBJ file is most likely a point missing its "v": say so
-            // rather than drop it.
-            return reader.fail("line does not start with an OBJ keyword (found " +
-                               quoted(keyword) + ")");
+/// One OBJ record: "v x y z ..." appends a point, other keyword records are skipped.
+bool read_obj_line(Reader& reader, std::vector<double>* xyz) {
+    if (!reader.split(false)) return false;
+    const auto& fields = reader.fields();
+    std::string_view keyword = fields[0];
+    if (keyword == "v") {
+        // x y z, x y z w (rational weight), or x y z r g b (a widespread colour extension);
+        // only x y z is the point, the rest is still checked to be numeric.
+        std::size_t n = fields.size() - 1;
+        if (n != 3 && n != 4 && n != 6) {
+            return reader.fail("expected \"v x y z [w]\", got " + std::to_string(n) +
+                               (n == 1 ? " number" : " numbers"));
         }
-        // Every other record (faces, normals, groups, materials, ...) carries no points.
-    } while (reader.next_line());
+        if (!reader.append_numbers(1, 3, "coordinate", xyz)) return false;
+        std::vector<double> extra;
+        return reader.append_numbers(4, n - 3, "vertex value", &extra);
+    }
+    if (!std::isalpha(static_cast<unsigned char>(keyword[0]))) {
+        // A bare "1 2 3" in an OBJ file is most likely a point missing its "v": say so
+        // rather than drop it.
+        return reader.fail("line does not start with an OBJ keyword (found " +
+                           quoted(keyword) + ")");
+    }
+    // Every other record (faces, normals, groups, materials, ...) carries no points.
     return true;
 }
 
@@ -494,9 +460,7 @@ bool read_off_vertices(Reader& reader, const OffHeader& header, std::vector<doub
     xyz->reserve(safe_reserve(header.vertex_count, reader.text_size()) * 3);
     for (std::uint64_t i = 0; i < header.vertex_count; ++i) {
         if (!reader.next_line()) {
-            return reader.fail_at(header.counts_line,
-                                  "header declares " + std::to_string(header.vertex_count) +
-                                      " vertices but the file has " + std::to_string(i));
+            return reader.fail_at(header.counts_line, count_mismatch(header.vertex_count, "vertices", i));
         }
         if (!reader.append_point_line(false, xyz)) return false;
     }
@@ -549,9 +513,7 @@ bool read_off_faces(Reader& reader, const OffHeader& header,
                     std::vector<std::uint32_t>* triangles) {
     for (std::uint64_t i = 0; i < header.face_count; ++i) {
         if (!reader.next_line()) {
-            return reader.fail_at(header.counts_line,
-                                  "header declares " + std::to_string(header.face_count) +
-                                      " faces but the file has " + std::to_string(i));
+            return reader.fail_at(header.counts_line, count_mismatch(header.face_count, "faces", i));
         }
         if (!append_off_face(reader, header.vertex_count, triangles)) return false;
     }
@@ -706,15 +668,44 @@ private:
 // Inputs that are not text
 // ---------------------------------------------------------------------------------------------
 
-/// How much of the start of an input is looked at to tell binary data from text.
-constexpr std::size_t kSniffBytes = 4096;
+/// Every point of `reader` in one array, as parse_points returns it.
+PointsResult read_all_points(PointReader& reader) {
+    PointsResult result;
+    // Reserve for as many points as the header declares or, without a count, as the text could
+    // hold, so the array never grows and copies itself; never more than the text could hold, so
+    // a lying header cannot exhaust memory. Only address space: the pages are touched as points
+    // arrive.
+    const std::uint64_t declared = reader.declared_points();
+    const std::size_t size = reader.size() ? static_cast<std::size_t>(reader.size()) : kUnknownSize;
+    result.xyz.reserve(3 * safe_reserve(declared ? declared : kMaxCount, size));
+    while (reader.append_next(&result.xyz)) {
+    }
+    if (!reader.error().empty()) {
+        result.xyz = {};
+        result.error = reader.error();
+    }
+    // No shrink_to_fit: it would copy the whole array; the spare capacity is address space that
+    // was never touched.
+    return result;
+}
 
-/// Empty if `head` (the first bytes of an input of `size` bytes) looks like text; else why the
-/// input cannot be read, naming the format when it is recognisable ("binary STL is not supported
-/// ...", "not a point file: binary data ..."). `expected` names what was wanted ("a point file").
-/// Text formats of other kinds (PLY, ASCII STL) are named too, so the message is not a
-/// complaint about coordinates. No byte of the input is echoed.
-std::string binary_input_message(std::string_view head, std::size_t size, const char* expected) {
+/// The options of the readers that take only point text, as parse_points does.
+PointReaderOptions text_only(unsigned threads) {
+    PointReaderOptions options;
+    options.threads = threads;
+    options.text_only = true;
+    return options;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// For PointReader (io/point_reader.cpp): the point-text header and pieces of point lines
+// ---------------------------------------------------------------------------------------------
+
+namespace io {
+
+std::string binary_input_message(std::string_view head, std::uint64_t size, bool size_known, const char* expected) {
     auto starts_with = [&](std::string_view word) {
         return head.size() >= word.size() && head.substr(0, word.size()) == word &&
                (head.size() == word.size() || std::isspace(static_cast<unsigned char>(head[word.size()])));
@@ -729,12 +720,8 @@ std::string binary_input_message(std::string_view head, std::size_t size, const 
         const bool text = c >= 0x20 ? c != 0x7f : (c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f');
         if (text) continue;
         // Binary STL: an 80-byte header, a little-endian uint32 triangle count, 50 bytes each.
-        if (head.size() >= 84 && size != kUnknownSize) {
-            std::uint32_t triangles = 0;
-            for (int k = 3; k >= 0; --k) triangles = triangles << 8 | static_cast<unsigned char>(head[80 + k]);
-            if (std::uint64_t{84} + std::uint64_t{50} * triangles == size) {
-                return what + "binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)";
-            }
+        if (size_known && has_binary_stl_size(head, size)) {
+            return what + "binary STL is not supported by the point reader (read: xyz, rbox, OBJ, OFF)";
         }
         char detail[64];
         std::snprintf(detail, sizeof detail, "binary data (byte 0x%02x at offset %zu)", c, i);
@@ -743,76 +730,108 @@ std::string binary_input_message(std::string_view head, std::size_t size, const 
     return {};
 }
 
-/// parse_points on any text source: sniffs for binary input, detects the format, reads.
-PointsResult read_points_with(Reader& reader) {
-    PointsResult result;
-    bool ok;
-    std::string binary = binary_input_message(reader.cursor().head(kSniffBytes), reader.text_size(), "a point file");
-    if (!binary.empty()) {
-        ok = reader.fail_whole(binary);
-    } else if (!reader.next_line()) {
+ReadStatus read_point_text_header(std::string_view text, bool whole, const std::string& source,
+                                  PointTextHeader* header, std::string* error) {
+    Reader reader(text, source, whole);
+    bool ok = false;
+    if (!reader.next_line()) {
         ok = reader.fail_whole("no points found (the input is empty)");
-    } else if (!reader.split(false)) {
-        ok = false;
-    } else {
-        switch (detect_format(reader.fields())) {
-            case PointFormat::Off: {
-                OffHeader header;
-                ok = read_off_header(reader, &header) &&
-                     read_off_vertices(reader, header, &result.xyz);
+    } else if (reader.split(false)) {  // cannot fail without commas
+        header->format = detect_format(reader.fields());
+        switch (header->format) {
+            case PointTextFormat::Xyz:
+            case PointTextFormat::Obj:  // no header: the first content line is the first point line
+                header->body_offset = reader.cursor().line_start();
+                header->body_line = reader.line_number() - 1;
+                ok = true;
+                break;
+            case PointTextFormat::Rbox:
+                ok = read_rbox_header(reader, header);
+                break;
+            case PointTextFormat::Off: {
+                OffHeader off;
+                if ((ok = read_off_header(reader, &off))) {
+                    header->counted = true;
+                    header->declared = off.vertex_count;
+                    header->count_line = off.counts_line;
+                }
                 break;
             }
-            case PointFormat::Obj: ok = read_obj(reader, &result.xyz); break;
-            case PointFormat::Rbox: ok = read_rbox(reader, &result.xyz); break;
-            case PointFormat::Xyz: ok = read_xyz(reader, &result.xyz); break;
         }
-        if (ok && result.xyz.empty()) ok = reader.fail_whole("no points found");
+        if (ok && header->counted) {
+            header->body_offset = reader.cursor().offset();
+            header->body_line = reader.line_number();
+        }
     }
-    if (!ok) {
-        result.xyz = {};
-        result.error = reader.error();
-    }
-    // No shrink_to_fit: it would copy the whole array; the spare capacity is address space that
-    // was never touched.
-    return result;
+    if (ok) return ReadStatus::Done;
+    if (reader.ran_out()) return ReadStatus::NeedMore;  // every failure after that is for want of text
+    *error = reader.error();
+    return ReadStatus::Failed;
 }
 
-}  // namespace
+void parse_point_piece(std::string_view text, const PointTextHeader& header, std::uint64_t limit,
+                       std::vector<double>* xyz, PointPiece* piece) {
+    const std::string no_source;  // the caller numbers the lines and writes the message
+    Reader reader(text, no_source);
+    const std::size_t start = xyz->size();
+    const PointTextFormat format = header.format;
+    if (!header.counted) limit = ~std::uint64_t{0};
+    std::uint64_t found = 0;
+    bool ok = true;
+    for (;;) {
+        if (found == limit && format == PointTextFormat::Off) {
+            piece->at_limit = true;  // every vertex read; what follows are faces, which points ignore
+            break;
+        }
+        if (!reader.next_line()) break;
+        if (format == PointTextFormat::Obj) {
+            if (!(ok = read_obj_line(reader, xyz))) break;
+            continue;
+        }
+        if (found == limit) {  // rbox: a point line after the last one declared
+            ok = reader.fail("more points than the " + std::to_string(header.declared) + " declared on line " +
+                             std::to_string(header.count_line));
+            break;
+        }
+        if (!(ok = reader.append_point_line(/*allow_commas=*/format == PointTextFormat::Xyz, xyz))) break;
+        ++found;
+    }
+    piece->points = (xyz->size() - start) / 3;
+    piece->lines = reader.line_number();
+    if (!ok) {
+        piece->error_line = reader.error_line();
+        piece->error_what = std::move(reader.error_what());
+    }
+}
+
+std::string missing_points_message(const PointTextHeader& header, std::uint64_t found) {
+    return count_mismatch(header.declared, header.format == PointTextFormat::Off ? "vertices" : "points", found);
+}
+
+}  // namespace io
 
 // ---------------------------------------------------------------------------------------------
 // Public API
 // ---------------------------------------------------------------------------------------------
 
-PointsResult parse_points(const std::string& text, const std::string& source) {
-    Reader reader(text, source);
-    return read_points_with(reader);
+PointsResult parse_points(const std::string& text, const std::string& source, unsigned threads) {
+    PointReader reader(std::string_view(text), source, text_only(threads));
+    return read_all_points(reader);
 }
 
-PointsResult read_points_file(std::FILE* file, const std::string& source) {
-    std::size_t size = kUnknownSize;
-    struct stat info {};
-    if (fstat(fileno(file), &info) == 0 && S_ISREG(info.st_mode)) {
-        // From the current position: a caller may have read part of the file already.
-        const long at = std::ftell(file);
-        size = static_cast<std::size_t>(info.st_size) - static_cast<std::size_t>(at > 0 ? at : 0);
-    }
-    Reader reader(file, size, source);
-    PointsResult result = read_points_with(reader);
-    if (reader.cursor().read_failed()) {
-        result.xyz = {};
-        result.error = source + ": cannot read: " + std::strerror(reader.cursor().read_errno());
-    }
-    return result;
+PointsResult read_points_file(std::FILE* file, const std::string& source, unsigned threads) {
+    PointReader reader(file, source, text_only(threads));
+    return read_all_points(reader);
 }
 
-PointsResult read_points_file(const std::string& path) {
+PointsResult read_points_file(const std::string& path, unsigned threads) {
     std::FILE* file = std::fopen(path.c_str(), "rb");
     if (!file) {
         PointsResult result;
         result.error = path + ": cannot open: " + std::strerror(errno);
         return result;
     }
-    PointsResult result = read_points_file(file, path);
+    PointsResult result = read_points_file(file, path, threads);
     std::fclose(file);
     return result;
 }
@@ -821,7 +840,8 @@ MeshResult read_off_mesh(const std::string& text, const std::string& source) {
     MeshResult result;
     Reader reader(text, source);
     OffHeader header;
-    std::string binary = binary_input_message(reader.cursor().head(kSniffBytes), text.size(), "an OFF file");
+    std::string binary = io::binary_input_message(std::string_view(text).substr(0, io::kSniffBytes), text.size(),
+                                                  /*size_known=*/true, "an OFF file");
     bool ok = !binary.empty() ? reader.fail_whole(binary)
               : reader.next_line() ? read_off_header(reader, &header) &&
                                          read_off_vertices(reader, header, &result.xyz) &&
@@ -860,12 +880,13 @@ const char* output_format_name(OutputFormat format) {
         case OutputFormat::Off: return "off";
         case OutputFormat::Obj: return "obj";
         case OutputFormat::Json: return "json";
+        case OutputFormat::Xyz: return "xyz";
     }
     return "?";
 }
 
 bool parse_output_format(const std::string& name, OutputFormat* out) {
-    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json}) {
+    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json, OutputFormat::Xyz}) {
         if (name == output_format_name(format)) {
             *out = format;
             return true;
@@ -934,7 +955,13 @@ void put_obj(TextOut& out, PointSpan points, const Hull& hull) {
     put_faces(out, faces, position, 1, false);  // OBJ indices are 1-based
 }
 
-void put_json(TextOut& out, PointSpan points, const Hull& hull) {
+/// The input index of point v: index[v] when the hull's points are a subset of the input's.
+struct InputIndex {
+    const std::uint64_t* index;
+    std::uint64_t operator()(std::uint32_t v) const { return index ? index[v] : v; }
+};
+
+void put_json(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
     {  // only to validate: JSON keeps input indices
         const VertexPositions position(points, hull);
         for (std::uint32_t corner : hull.triangles) position.of(corner);
@@ -943,18 +970,18 @@ void put_json(TextOut& out, PointSpan points, const Hull& hull) {
     out.put("{\"vertices\":[");
     for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
         if (i) out.put(',');
-        out.uint(hull.vertices[i]);
+        out.uint(id(hull.vertices[i]));
         out.record_done();
     }
     out.put("],\"triangles\":[");
     for (std::size_t i = 0; i < hull.triangles.size(); i += 3) {
         if (i) out.put(',');
         out.put('[');
-        out.uint(hull.triangles[i]);
+        out.uint(id(hull.triangles[i]));
         out.put(',');
-        out.uint(hull.triangles[i + 1]);
+        out.uint(id(hull.triangles[i + 1]));
         out.put(',');
-        out.uint(hull.triangles[i + 2]);
+        out.uint(id(hull.triangles[i + 2]));
         out.put(']');
         out.record_done();
     }
@@ -979,7 +1006,7 @@ void put_json(TextOut& out, PointSpan points, const Hull& hull) {
             out.put('[');
             for (std::uint32_t k = hull.face_offsets[f]; k < hull.face_offsets[f + 1]; ++k) {
                 if (k > hull.face_offsets[f]) out.put(',');
-                out.uint(hull.face_vertices[k]);
+                out.uint(id(hull.face_vertices[k]));
             }
             out.put(']');
             out.record_done();
@@ -995,11 +1022,26 @@ void put_json(TextOut& out, PointSpan points, const Hull& hull) {
     out.put("}\n");
 }
 
-void put_hull(TextOut& out, OutputFormat format, PointSpan points, const Hull& hull) {
+/// The hull's vertices alone, "x y z # INDEX" a line, which the point readers read back.
+void put_xyz(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
+    const VertexPositions validate(points, hull);
+    out.reserve(80 * hull.vertices.size() + 64);
+    out.put("# hull vertices: x y z # index of the point in the input\n");
+    for (std::uint32_t v : hull.vertices) {
+        out.xyz(points[v]);
+        out.put(" # ");
+        out.uint(id(v));
+        out.put('\n');
+        out.record_done();
+    }
+}
+
+void put_hull(TextOut& out, OutputFormat format, PointSpan points, const Hull& hull, InputIndex id) {
     switch (format) {
         case OutputFormat::Off: return put_off(out, points, hull);
         case OutputFormat::Obj: return put_obj(out, points, hull);
-        case OutputFormat::Json: return put_json(out, points, hull);
+        case OutputFormat::Json: return put_json(out, points, hull, id);
+        case OutputFormat::Xyz: return put_xyz(out, points, hull, id);
     }
     throw std::invalid_argument("unknown output format");
 }
@@ -1022,17 +1064,22 @@ std::string write_obj(PointSpan points, const Hull& hull) {
     return to_text([&](TextOut& out) { put_obj(out, points, hull); });
 }
 
-std::string write_json(PointSpan points, const Hull& hull) {
-    return to_text([&](TextOut& out) { put_json(out, points, hull); });
+std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* index) {
+    return to_text([&](TextOut& out) { put_json(out, points, hull, InputIndex{index}); });
 }
 
-std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull) {
-    return to_text([&](TextOut& out) { put_hull(out, format, points, hull); });
+std::string write_xyz(PointSpan points, const Hull& hull, const std::uint64_t* index) {
+    return to_text([&](TextOut& out) { put_xyz(out, points, hull, InputIndex{index}); });
 }
 
-bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number) {
+std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull, const std::uint64_t* index) {
+    return to_text([&](TextOut& out) { put_hull(out, format, points, hull, InputIndex{index}); });
+}
+
+bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number,
+                     const std::uint64_t* index) {
     TextOut out(file);
-    put_hull(out, format, points, hull);
+    put_hull(out, format, points, hull, InputIndex{index});
     if (out.flush()) return true;
     *error_number = out.error_number();
     return false;

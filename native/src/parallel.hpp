@@ -34,17 +34,9 @@ inline unsigned resolve_threads(unsigned requested, std::size_t work_items = ~st
     return threads;
 }
 
-/// Calls body(task) once for every task in [0, tasks), on up to `threads` threads (the calling
-/// thread is one of them); tasks are handed out in increasing order as threads become free.
-/// If a body throws, no new tasks start and the first exception is rethrown once every thread
-/// has stopped. If no thread can be started, the calling thread does all the work.
+/// parallel_for's work on `threads` > 1 threads.
 template <class Body>
-void parallel_for(unsigned threads, std::size_t tasks, Body&& body) {
-    threads = resolve_threads(threads, tasks);
-    if (threads <= 1) {
-        for (std::size_t task = 0; task < tasks; ++task) body(task);
-        return;
-    }
+void spread(unsigned threads, std::size_t tasks, Body& body) {
     std::atomic<std::size_t> next{0};
     std::atomic<bool> failed{false};
     std::exception_ptr first_error;
@@ -75,6 +67,22 @@ void parallel_for(unsigned threads, std::size_t tasks, Body&& body) {
     work();
     for (std::thread& helper : helpers) helper.join();
     if (first_error) std::rethrow_exception(first_error);
+}
+
+/// Calls body(task) once for every task in [0, tasks), on up to `threads` threads (the calling
+/// thread is one of them); tasks are handed out in increasing order as threads become free.
+/// If a body throws, no new tasks start and the first exception is rethrown once every thread
+/// has stopped. If no thread can be started, the calling thread does all the work.
+template <class Body>
+void parallel_for(unsigned threads, std::size_t tasks, Body&& body) {
+    threads = resolve_threads(threads, tasks);
+    if (!kHaveThreads || threads <= 1) {
+        for (std::size_t task = 0; task < tasks; ++task) body(task);
+        return;
+    }
+    if constexpr (kHaveThreads) {  // no std::thread in a build without threads
+        spread(threads, tasks, body);
+    }
 }
 
 }  // namespace hullkit::detail

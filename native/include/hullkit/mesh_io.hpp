@@ -38,14 +38,17 @@ struct PointsResult {
 /// Input that is not text (binary data, binary STL) or a format not read here (PLY, ASCII STL)
 /// is rejected as such ("source: not a point file: binary STL is not supported ..."), never
 /// with a complaint about coordinates, and no byte of it is echoed.
-PointsResult parse_points(const std::string& text, const std::string& source);
+/// The text is parsed in pieces on `threads` threads (0: every hardware thread, 1: the calling
+/// thread only; hullkit::PointReader); the points and messages never depend on the count.
+PointsResult parse_points(const std::string& text, const std::string& source, unsigned threads = 0);
 
-/// parse_points on an open file (or stdin), read in ~1 MiB chunks through one buffer, so the
-/// whole text is never in memory; for a regular file its size sizes the point array once.
-/// `source` starts the error messages; a read error gives "source: cannot read: REASON".
-PointsResult read_points_file(std::FILE* file, const std::string& source);
+/// parse_points on an open file (or stdin), read from its current position in batches through
+/// hullkit::PointReader (text-only), so the whole text is never in memory; each batch is parsed
+/// on `threads` threads. For a regular file its size sizes the point array once. `source` starts
+/// the error messages; a read error gives "source: cannot read: REASON".
+PointsResult read_points_file(std::FILE* file, const std::string& source, unsigned threads = 0);
 /// The same for a path: "PATH: cannot open: REASON" if it cannot be opened.
-PointsResult read_points_file(const std::string& path);
+PointsResult read_points_file(const std::string& path, unsigned threads = 0);
 
 /// 2D points read from text, flat x0 y0 x1 y1 ... (size always even).
 struct Points2Result {
@@ -98,13 +101,13 @@ bool read_file(const std::string& path, std::string* out, std::string* error);
 // of range, a vertex listed twice, or a triangle corner not listed in Hull::vertices); a Hull
 // returned by hullkit::hull for `points` always fits.
 
-enum class OutputFormat { Off, Obj, Json };
+enum class OutputFormat { Off, Obj, Json, Xyz };
 
-/// "off", "obj", "json".
+/// "off", "obj", "json", "xyz".
 const char* output_format_name(OutputFormat format);
-/// Parses "off" / "obj" / "json" (lower case); returns false and leaves *out alone otherwise.
+/// Parses "off" / "obj" / "json" / "xyz" (lower case); returns false and leaves *out alone otherwise.
 bool parse_output_format(const std::string& name, OutputFormat* out);
-/// Picks the format from a file name's extension (".off", ".obj", ".json", any case);
+/// Picks the format from a file name's extension (".off", ".obj", ".json", ".xyz", any case);
 /// returns false and leaves *out alone for any other name.
 bool output_format_from_path(const std::string& path, OutputFormat* out);
 
@@ -114,12 +117,18 @@ std::string write_off(PointSpan points, const Hull& hull);
 std::string write_obj(PointSpan points, const Hull& hull);
 /// One line: {"vertices":[input indices],"triangles":[[i,j,k],...] (input indices),
 /// "points":[[x,y,z],...] (in the order of "vertices"),"volume":V,"area":A}
-std::string write_json(PointSpan points, const Hull& hull);
+/// `index`, when given, maps the hull's indices into `points` to the input's indices (a hull of
+/// a subset of the input, as HullBuilder returns: StreamedHull::index); JSON and XYZ write those.
+std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
+/// The hull's vertices alone, in the order of Hull::vertices, after a '#' comment line: one
+/// "x y z # INDEX" line each (INDEX: the input index), which parse_points reads back as points.
+std::string write_xyz(PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
 /// Dispatches to one of the writers above.
-std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull);
+std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
 /// write_hull straight into `file` in ~1 MiB pieces (the text is never held whole). Returns
 /// false with *error_number = errno if a write failed; throws like the writers above.
-bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number);
+bool write_hull_file(OutputFormat format, PointSpan points, const Hull& hull, std::FILE* file, int* error_number,
+                     const std::uint64_t* index = nullptr);
 
 /// A double as the shortest text that reads back to the same value ("0.1", "1", "1e+22");
 /// JSON has no NaN/inf, so

@@ -1,4 +1,5 @@
-// PLY meshes: ascii and binary (little or big endian) bodies behind one text header.
+// PLY meshes: ascii and binary (little or big endian) bodies behind one text header, read from
+// memory or streamed (io::PlyReader).
 #include "hullkit/mesh_read.hpp"
 
 #include "mesh_read_internal.hpp"
@@ -82,13 +83,31 @@ struct Header {
     std::size_t body_line = 0;    ///< number of the line "end_header"
 };
 
-/// Reads the header; returns an error message ("" on success).
-std::string read_header(const std::string& bytes, const std::string& source, Header* header) {
+/// The length of the longest prefix of `text` made of whole lines ("\n", "\r\n" or "\r" line ends,
+/// as io::LineCursor reads them); all of it `at_end`. A "\r" at the very end is not yet a whole
+/// line end: a "\n" may follow.
+std::size_t whole_lines_length(std::string_view text, bool at_end) {
+    if (at_end) return text.size();
+    for (std::size_t n = text.size(); n > 0; --n) {
+        // Scanning back, a "\r" before the last byte is followed by something other than "\n".
+        if (text[n - 1] == '\n' || (text[n - 1] == '\r' && n < text.size())) return n;
+    }
+    return 0;
+}
+
+/// Reads the header from `text`, whole lines from the start of the file; `whole`: the file has
+/// nothing more. NeedMore when the header runs past `text`; Failed with *error.
+io::ReadStatus read_header(std::string_view text, bool whole, const std::string& source, Header* header,
+                           std::string* error) {
     // The header is text; stop scanning at end_header so that a binary body is never split.
-    io::LineCursor lines(bytes);
+    if (text.empty() && !whole) return io::ReadStatus::NeedMore;
+    io::LineCursor lines(text);
     std::string_view line;
     bool format_seen = false;
-    auto fail = [&](const std::string& what) { return io::at_line(source, lines.line_number(), what); };
+    auto fail = [&](const std::string& what) {
+        *error = io::at_line(source, lines.line_number(), what);
+        return io::ReadStatus::Failed;
+    };
     if (!lines.next(&line) || io::split_words(line, 0) != std::vector<std::string_view>{"ply"}) {
         return fail("expected \"ply\" on the first line");
     }
@@ -136,12 +155,14 @@ std::string read_header(const std::string& bytes, const std::string& source, Hea
             if (!format_seen) return fail("no \"format\" line before end_header");
             header->body_offset = lines.offset();
             header->body_line = lines.line_number();
-            return "";
+            return io::ReadStatus::Done;
         } else {
             return fail("unknown PLY header line " + io::quote(keyword));
         }
     }
-    return source + ": the PLY header has no \"end_header\"";
+    if (!whole) return io::ReadStatus::NeedMore;
+    *error = source + ": the PLY header has no \"end_header\"";
+    return io::ReadStatus::Failed;
 }
 
 /// An element's name for messages: as it is when it is short printable ASCII, otherwise quoted with
@@ -151,25 +172,24 @@ std::string element_label(const std::string& name) {
     return io::quote(name);
 }
 
-/// Hands out the values of the body one by one, as text fields or binary scalars.
+/// Hands out the values of the body one by one, as text fields or binary scalars, reading the
+/// input as it goes (all of it may be in memory already).
 class BodyReader {
 public:
-    BodyReader(const std::string& bytes, const Header& header, const std::string& source)
-        : bytes_(bytes), encoding_(header.encoding), source_(source), offset_(header.body_offset),
-          lines_(std::string_view(bytes), header.body_offset) {
-        line_base_ = header.body_line;
-    }
+    BodyReader(io::ChunkedInput& input, const Header& header, const std::string& source)
+        : input_(input), encoding_(header.encoding), source_(source), line_base_(header.body_line) {}
 
     /// Starts row `row` of element `element` (for messages; ascii: moves to the next non-blank line).
     bool begin_row(const Element& element, std::uint64_t row) {
-        where_ = element_label(element.name) + " " + std::to_string(row);
+        element_ = &element;
+        row_ = row;
         if (encoding_ != Encoding::Ascii) {
-            row_offset_ = offset_;
+            row_offset_ = input_.offset();
             return true;
         }
         std::string_view line;
         do {
-            if (!lines_.next(&line)) return fail("the file ends before " + where_ + " (ascii body)");
+            if (!next_line(&line)) return fail("the file ends before " + where() + " (ascii body)");
             words_ = io::split_words(line, 0);
         } while (words_.empty());
         next_word_ = 0;
@@ -179,62 +199,101 @@ public:
     /// Ascii: no values may be left on the row's line.
     bool end_row() {
         if (encoding_ == Encoding::Ascii && next_word_ != words_.size()) {
-            return fail(where_ + " has " + std::to_string(words_.size() - next_word_) + " values too many");
+            return fail(where() + " has " + std::to_string(words_.size() - next_word_) + " values too many");
         }
         return true;
     }
 
     bool read(ScalarType type, double* out) {
         if (encoding_ == Encoding::Ascii) {
-            if (next_word_ >= words_.size()) return fail(where_ + " has too few values");
+            if (next_word_ >= words_.size()) return fail(where() + " has too few values");
             std::string_view word = words_[next_word_++];
-            if (!io::parse_finite(word, out)) return fail(where_ + ": value " + io::quote(word) + " is not a finite number");
+            if (!io::parse_finite(word, out)) return fail(where() + ": value " + io::quote(word) + " is not a finite number");
             if (is_integer(type) && *out != std::floor(*out)) {
-                return fail(where_ + ": value " + io::quote(word) + " is not an integer");
+                return fail(where() + ": value " + io::quote(word) + " is not an integer");
             }
             return true;
         }
         const std::size_t size = size_of(type);
-        if (bytes_.size() - offset_ < size) {
-            return fail("binary PLY is truncated in " + where_ + " (byte " + std::to_string(offset_) + " of " +
-                        std::to_string(bytes_.size()) + ")");
+        if (input_.available().size() < size && !input_.fill(size)) {
+            const std::uint64_t offset = input_.offset();
+            return fail("binary PLY is truncated in " + where() + " (byte " + std::to_string(offset) + " of " +
+                        std::to_string(offset + input_.available().size()) + ")");
         }
         unsigned char b[8];
-        std::memcpy(b, bytes_.data() + offset_, size);
-        offset_ += size;
+        std::memcpy(b, input_.available().data(), size);
+        input_.consume(size);
         if (encoding_ == Encoding::BigEndian) {
             for (std::size_t i = 0; i < size / 2; ++i) std::swap(b[i], b[size - 1 - i]);
         }
         *out = decode(type, b);  // the host is little endian (x86, arm64, wasm)
-        if (!std::isfinite(*out)) return fail(where_ + " (byte " + std::to_string(row_offset_) + "): a value is not a finite number");
+        if (!std::isfinite(*out)) return fail(where() + " (byte " + std::to_string(row_offset_) + "): a value is not a finite number");
         return true;
     }
 
-    /// Binary: the body must end with the last element.
+    /// The body must end with the last element.
     bool finish() {
-        if (encoding_ != Encoding::Ascii && offset_ != bytes_.size()) {
-            return fail("binary PLY has " + std::to_string(bytes_.size() - offset_) + " bytes after the last element (byte " +
-                        std::to_string(offset_) + ")");
-        }
-        if (encoding_ == Encoding::Ascii) {
-            std::string_view line;
-            while (lines_.next(&line)) {
-                if (!io::split_words(line, 0).empty()) return fail("content after the last element");
+        if (encoding_ != Encoding::Ascii) {
+            const std::uint64_t end = input_.offset();
+            std::uint64_t extra = 0;
+            while (input_.fill(1)) {  // a stream: count what is left
+                extra += input_.available().size();
+                input_.consume(input_.available().size());
             }
+            if (extra != 0) {
+                return fail("binary PLY has " + std::to_string(extra) + " bytes after the last element (byte " +
+                            std::to_string(end) + ")");
+            }
+            return true;
+        }
+        std::string_view line;
+        while (next_line(&line)) {
+            if (!io::split_words(line, 0).empty()) return fail("content after the last element");
         }
         return true;
     }
 
     bool fail(const std::string& what) {
         if (error_.empty()) {
-            error_ = encoding_ == Encoding::Ascii ? io::at_line(source_, line_base_ + lines_.line_number(), what)
-                                                  : source_ + ": " + what;
+            error_ = encoding_ == Encoding::Ascii ? io::at_line(source_, line_base_ + lines_, what) : source_ + ": " + what;
         }
         return false;
     }
     const std::string& error() const { return error_; }
 
 private:
+    /// The row being read, for messages ("vertex 12"), put together only when one is written.
+    std::string where() const { return element_label(element_->name) + " " + std::to_string(row_); }
+
+    /// The next line of an ascii body, without its line end (as io::LineCursor reads lines);
+    /// false at the end of the input. The line stays valid until the next call.
+    bool next_line(std::string_view* line) {
+        std::size_t scanned = 0;
+        for (;;) {
+            const std::string_view text = input_.available();
+            std::size_t end = scanned;
+            while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+            // A "\r" at the end of what was read may be the start of "\r\n": read on first.
+            if (end < text.size() && (text[end] == '\n' || end + 1 < text.size() || input_.at_end())) {
+                std::size_t next = end + 1;
+                if (text[end] == '\r' && next < text.size() && text[next] == '\n') ++next;
+                *line = text.substr(0, end);
+                input_.consume(next);
+                ++lines_;
+                return true;
+            }
+            if (input_.at_end()) {
+                if (text.empty()) return false;
+                *line = text;  // the last line, without a line end
+                input_.consume(text.size());
+                ++lines_;
+                return true;
+            }
+            scanned = end;
+            input_.fill(text.size() + 1);
+        }
+    }
+
     static double decode(ScalarType type, const unsigned char* b) {
         switch (type) {
             case ScalarType::Int8: return static_cast<std::int8_t>(b[0]);
@@ -260,16 +319,16 @@ private:
         return 0;
     }
 
-    const std::string& bytes_;
+    io::ChunkedInput& input_;
     Encoding encoding_;
     const std::string& source_;
-    std::size_t offset_ = 0;
-    std::size_t row_offset_ = 0;
-    io::LineCursor lines_;  ///< ascii: counts lines from the body's start
-    std::size_t line_base_ = 0;
+    std::uint64_t row_offset_ = 0;  ///< binary: where the current row starts
+    std::size_t line_base_;         ///< ascii: the lines before the body
+    std::size_t lines_ = 0;         ///< ascii: the body's lines read so far
     std::vector<std::string_view> words_;
     std::size_t next_word_ = 0;
-    std::string where_;
+    const Element* element_ = nullptr;
+    std::uint64_t row_ = 0;
     std::string error_;
 };
 
@@ -284,92 +343,161 @@ int find_property(const Element& element, std::initializer_list<const char*> nam
 
 }  // namespace
 
-namespace {
+struct io::PlyReader::State {
+    State(io::ChunkedInput& in, const std::string& name, bool faces) : input(in), source(name), faces_required(faces) {}
 
-/// The PLY reader; without `faces_required` a file with no "face" element is a point cloud.
-MeshResult read_ply(const std::string& bytes, const std::string& source, bool faces_required) {
+    io::ChunkedInput& input;
+    const std::string source;
+    const bool faces_required;
     Header header;
-    std::string error = read_header(bytes, source, &header);
-    if (!error.empty()) return io::mesh_error(error);
-
     // The vertex element's x y z (scalars) and the face element's index list.
     const Element* vertex = nullptr;
     const Element* face = nullptr;
     int axis_property[3] = {-1, -1, -1};
     int index_property = -1;
-    for (const Element& element : header.elements) {
-        if (element.name == "vertex") {
-            vertex = &element;
-            const char* axes[3] = {"x", "y", "z"};
-            for (int axis = 0; axis < 3; ++axis) {
-                axis_property[axis] = find_property(element, {axes[axis]});
-                if (axis_property[axis] < 0 || element.properties[axis_property[axis]].is_list) {
-                    return io::mesh_error(source + ": the PLY vertex element has no scalar property \"" + axes[axis] + "\"");
+    std::unique_ptr<BodyReader> body;
+    std::size_t element = 0;  ///< where reading goes on: row `row` of element `element`
+    std::uint64_t row = 0;
+    bool done = false;
+    std::string error;
+    std::vector<std::uint32_t> corners;
+
+    bool fail(std::string message) {
+        error = std::move(message);
+        return false;
+    }
+
+    /// Finds the vertex and face elements and checks that they have what a mesh needs.
+    bool find_elements() {
+        for (const Element& element : header.elements) {
+            if (element.name == "vertex") {
+                vertex = &element;
+                const char* axes[3] = {"x", "y", "z"};
+                for (int axis = 0; axis < 3; ++axis) {
+                    axis_property[axis] = find_property(element, {axes[axis]});
+                    if (axis_property[axis] < 0 || element.properties[axis_property[axis]].is_list) {
+                        return fail(source + ": the PLY vertex element has no scalar property \"" + axes[axis] + "\"");
+                    }
+                }
+            } else if (element.name == "face") {
+                face = &element;
+                index_property = find_property(element, {"vertex_indices", "vertex_index"});
+                if (index_property < 0 || !element.properties[index_property].is_list ||
+                    !is_integer(element.properties[index_property].type)) {
+                    return fail(source + ": the PLY face element has no integer list property \"vertex_indices\"");
                 }
             }
-        } else if (element.name == "face") {
-            face = &element;
-            index_property = find_property(element, {"vertex_indices", "vertex_index"});
-            if (index_property < 0 || !element.properties[index_property].is_list ||
-                !is_integer(element.properties[index_property].type)) {
-                return io::mesh_error(source + ": the PLY face element has no integer list property \"vertex_indices\"");
-            }
         }
+        if (!vertex) return fail(source + ": the PLY header declares no \"vertex\" element");
+        if (!face && faces_required) return fail(source + ": the PLY header declares no \"face\" element");
+        if (vertex->count > 0xffffffffULL) return fail(source + ": too many vertices for 32-bit indices");
+        return true;
     }
-    if (!vertex) return io::mesh_error(source + ": the PLY header declares no \"vertex\" element");
-    if (!face && faces_required) return io::mesh_error(source + ": the PLY header declares no \"face\" element");
-    if (vertex->count > 0xffffffffULL) return io::mesh_error(source + ": too many vertices for 32-bit indices");
 
-    MeshResult mesh;
-    BodyReader body(bytes, header, source);
-    // Reserve only what the file could hold, so a lying header cannot allocate gigabytes.
-    mesh.xyz.reserve(3 * std::min<std::uint64_t>(vertex->count, bytes.size() / 3));
-    std::vector<std::uint32_t> corners;
-    for (const Element& element : header.elements) {
+    /// Reads row `row` of `element`: a vertex's x y z onto *xyz, a face's fan onto *triangles (if
+    /// not null); every value is checked.
+    bool read_row(const Element& element, std::vector<double>* xyz, std::vector<std::uint32_t>* triangles) {
+        if (!body->begin_row(element, row)) return false;
+        double point[3] = {0, 0, 0};
+        for (std::size_t p = 0; p < element.properties.size(); ++p) {
+            const Property& property = element.properties[p];
+            if (!property.is_list) {
+                double value;
+                if (!body->read(property.type, &value)) return false;
+                for (int axis = 0; axis < 3; ++axis) {
+                    if (&element == vertex && static_cast<int>(p) == axis_property[axis]) point[axis] = value;
+                }
+                continue;
+            }
+            double count;
+            if (!body->read(property.count_type, &count)) return false;
+            const bool is_face_list = &element == face && static_cast<int>(p) == index_property;
+            if (count < 0 || (is_face_list && count < 3)) {
+                return body->fail(element_label(element.name) + " " + std::to_string(row) + ": " +
+                                  (count < 0 ? "a list count is negative: " : "a face needs at least 3 vertices, got ") +
+                                  integer_text(count));
+            }
+            corners.clear();
+            for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(count); ++k) {
+                double value;
+                if (!body->read(property.type, &value)) return false;
+                if (!is_face_list) continue;
+                if (value < 0 || value >= static_cast<double>(vertex->count)) {
+                    return body->fail("face " + std::to_string(row) + ": index " + integer_text(value) +
+                                      " out of range (" + std::to_string(vertex->count) + " vertices)");
+                }
+                corners.push_back(static_cast<std::uint32_t>(value));
+            }
+            if (is_face_list && triangles) io::append_fan(corners, triangles);
+        }
+        if (!body->end_row()) return false;
+        if (&element == vertex) {  // push_back inlines; a range insert is a call and a memmove
+            xyz->push_back(point[0]);
+            xyz->push_back(point[1]);
+            xyz->push_back(point[2]);
+        }
+        return true;
+    }
+};
+
+io::PlyReader::PlyReader(ChunkedInput& input, const std::string& source, bool faces_required)
+    : state_(std::make_unique<State>(input, source, faces_required)) {}
+
+io::PlyReader::~PlyReader() = default;
+
+bool io::PlyReader::start() {
+    State& s = *state_;
+    for (;;) {  // the header, from as many whole lines as it takes
+        const std::string_view text = s.input.available();
+        const std::size_t length = whole_lines_length(text, s.input.at_end());
+        const ReadStatus status =
+            read_header(text.substr(0, length), s.input.at_end() && length == text.size(), s.source, &s.header, &s.error);
+        if (status == ReadStatus::Failed) return false;
+        if (status == ReadStatus::Done) break;
+        s.input.fill(2 * text.size() + 1);
+    }
+    if (!s.find_elements()) return false;
+    s.input.consume(s.header.body_offset);
+    s.body = std::make_unique<BodyReader>(s.input, s.header, s.source);
+    return true;
+}
+
+bool io::PlyReader::read(std::uint64_t max_bytes, std::vector<double>* xyz, std::vector<std::uint32_t>* triangles) {
+    State& s = *state_;
+    const std::uint64_t start = s.input.offset();
+    const std::size_t xyz_start = xyz->size();
+    for (; s.element < s.header.elements.size(); ++s.element, s.row = 0) {
+        const Element& element = s.header.elements[s.element];
         // A binary row without properties holds no bytes: reading 10^18 of them would only spin
         // in a loop. An ascii row is still a line that must be there.
-        if (element.properties.empty() && header.encoding != Encoding::Ascii) continue;
-        for (std::uint64_t row = 0; row < element.count; ++row) {
-            if (!body.begin_row(element, row)) return io::mesh_error(body.error());
-            double xyz[3] = {0, 0, 0};
-            for (std::size_t p = 0; p < element.properties.size(); ++p) {
-                const Property& property = element.properties[p];
-                if (!property.is_list) {
-                    double value;
-                    if (!body.read(property.type, &value)) return io::mesh_error(body.error());
-                    for (int axis = 0; axis < 3; ++axis) {
-                        if (&element == vertex && static_cast<int>(p) == axis_property[axis]) xyz[axis] = value;
-                    }
-                    continue;
-                }
-                double count;
-                if (!body.read(property.count_type, &count)) return io::mesh_error(body.error());
-                const bool is_face_list = &element == face && static_cast<int>(p) == index_property;
-                if (count < 0 || (is_face_list && count < 3)) {
-                    body.fail(element_label(element.name) + " " + std::to_string(row) + ": " +
-                              (count < 0 ? "a list count is negative: " : "a face needs at least 3 vertices, got ") +
-                              integer_text(count));
-                    return io::mesh_error(body.error());
-                }
-                corners.clear();
-                for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(count); ++k) {
-                    double value;
-                    if (!body.read(property.type, &value)) return io::mesh_error(body.error());
-                    if (!is_face_list) continue;
-                    if (value < 0 || value >= static_cast<double>(vertex->count)) {
-                        body.fail("face " + std::to_string(row) + ": index " + integer_text(value) +
-                                  " out of range (" + std::to_string(vertex->count) + " vertices)");
-                        return io::mesh_error(body.error());
-                    }
-                    corners.push_back(static_cast<std::uint32_t>(value));
-                }
-                if (is_face_list) io::append_fan(corners, &mesh.triangles);
-            }
-            if (!body.end_row()) return io::mesh_error(body.error());
-            if (&element == vertex) mesh.xyz.insert(mesh.xyz.end(), xyz, xyz + 3);
+        if (element.properties.empty() && s.header.encoding != Encoding::Ascii) continue;
+        while (s.row < element.count) {
+            if (!s.read_row(element, xyz, triangles)) return s.fail(s.body->error());
+            ++s.row;
+            if (xyz->size() != xyz_start && s.input.offset() - start >= max_bytes) return true;
         }
     }
-    if (!body.finish()) return io::mesh_error(body.error());
+    if (!s.body->finish()) return s.fail(s.body->error());
+    s.done = true;
+    return true;
+}
+
+bool io::PlyReader::done() const { return state_->done; }
+std::uint64_t io::PlyReader::vertex_count() const { return state_->vertex ? state_->vertex->count : 0; }
+const std::string& io::PlyReader::error() const { return state_->error; }
+
+namespace {
+
+/// The PLY reader on bytes in memory; without `faces_required` a file with no "face" element is
+/// a point cloud.
+MeshResult read_ply(const std::string& bytes, const std::string& source, bool faces_required) {
+    io::ChunkedInput input(bytes);
+    io::PlyReader reader(input, source, faces_required);
+    if (!reader.start()) return io::mesh_error(reader.error());
+    MeshResult mesh;
+    // Reserve only what the file could hold, so a lying header cannot allocate gigabytes.
+    mesh.xyz.reserve(3 * std::min<std::uint64_t>(reader.vertex_count(), bytes.size() / 3));
+    if (!reader.read(~std::uint64_t{0}, &mesh.xyz, &mesh.triangles)) return io::mesh_error(reader.error());
     return mesh;
 }
 
