@@ -53,34 +53,58 @@ std::vector<std::uint32_t> distinct_points(PointSpan points) {
     return kept;
 }
 
-Simplex find_simplex(PointSpan points) {
+Simplex find_simplex(PointSpan points, unsigned threads) {
     Simplex s;
     const auto n = static_cast<std::uint32_t>(points.count);
     if (n == 0) return s;
     auto at = [&](std::uint32_t i) { return vec3(points[i]); };
 
-    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box, kept
-    // in locals (stores into `s` could alias the points, so the compiler would keep them in memory).
-    double best_value[14];
-    std::uint32_t extreme_of[14] = {};
-    double lo[3], hi[3];
-    for (int k = 0; k < 14; ++k) best_value[k] = -std::numeric_limits<double>::infinity();
-    for (int axis = 0; axis < 3; ++axis) lo[axis] = hi[axis] = points[0][axis];
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const double* p = points[i];
-        const double value[7] = {p[0], p[1], p[2], p[0] + p[1] + p[2], p[0] + p[1] - p[2], p[0] - p[1] + p[2], p[0] - p[1] - p[2]};
-        for (int k = 0; k < 7; ++k) {
-            if (value[k] > best_value[2 * k]) best_value[2 * k] = value[k], extreme_of[2 * k] = i;
-            if (-value[k] > best_value[2 * k + 1]) best_value[2 * k + 1] = -value[k], extreme_of[2 * k + 1] = i;
+    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box, per
+    // block of points on the threads (running values in locals: stores into `s` could alias the
+    // points, so the compiler would keep them in memory), then the blocks in order: a later
+    // block wins only when strictly better, so ties still go to the lowest index.
+    struct Extremes {
+        double best_value[14];
+        std::uint32_t extreme_of[14];
+        double lo[3], hi[3];
+    };
+    constexpr std::size_t kBlock = std::size_t{1} << 18;
+    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    std::vector<Extremes> found(blocks);
+    parallel_for(threads, blocks, [&](std::size_t block) {
+        Extremes e;
+        for (int k = 0; k < 14; ++k) e.best_value[k] = -std::numeric_limits<double>::infinity(), e.extreme_of[k] = 0;
+        const std::uint32_t first = static_cast<std::uint32_t>(block * kBlock);
+        const std::uint32_t last = static_cast<std::uint32_t>(std::min<std::size_t>(n, (block + 1) * kBlock));
+        for (int axis = 0; axis < 3; ++axis) e.lo[axis] = e.hi[axis] = points[first][axis];
+        for (std::uint32_t i = first; i < last; ++i) {
+            const double* p = points[i];
+            const double value[7] = {p[0], p[1], p[2], p[0] + p[1] + p[2], p[0] + p[1] - p[2], p[0] - p[1] + p[2], p[0] - p[1] - p[2]};
+            for (int k = 0; k < 7; ++k) {
+                if (value[k] > e.best_value[2 * k]) e.best_value[2 * k] = value[k], e.extreme_of[2 * k] = i;
+                if (-value[k] > e.best_value[2 * k + 1]) e.best_value[2 * k + 1] = -value[k], e.extreme_of[2 * k + 1] = i;
+            }
+            for (int axis = 0; axis < 3; ++axis) {
+                e.lo[axis] = std::min(e.lo[axis], p[axis]);
+                e.hi[axis] = std::max(e.hi[axis], p[axis]);
+            }
+        }
+        found[block] = e;
+    });
+    Extremes all = found[0];
+    for (std::size_t block = 1; block < blocks; ++block) {
+        const Extremes& e = found[block];
+        for (int k = 0; k < 14; ++k) {
+            if (e.best_value[k] > all.best_value[k]) all.best_value[k] = e.best_value[k], all.extreme_of[k] = e.extreme_of[k];
         }
         for (int axis = 0; axis < 3; ++axis) {
-            lo[axis] = std::min(lo[axis], p[axis]);
-            hi[axis] = std::max(hi[axis], p[axis]);
+            all.lo[axis] = std::min(all.lo[axis], e.lo[axis]);
+            all.hi[axis] = std::max(all.hi[axis], e.hi[axis]);
         }
     }
-    std::copy(extreme_of, extreme_of + 14, s.extreme);
-    std::copy(lo, lo + 3, s.lo);
-    std::copy(hi, hi + 3, s.hi);
+    std::copy(all.extreme_of, all.extreme_of + 14, s.extreme);
+    std::copy(all.lo, all.lo + 3, s.lo);
+    std::copy(all.hi, all.hi + 3, s.hi);
     const std::uint32_t* extreme = s.extreme;
 
     // The farthest pair of extremes (rounded distances choose; equality of points is exact).
@@ -325,9 +349,10 @@ Hull polytope(std::size_t point_count, Polygons faces, double volume, double are
     return result;
 }
 
-/// The hull of points already in the predicates' range (scaled by 2^exponent from the caller's),
-/// on the calling thread.
-Hull hull_serial(PointSpan points, const HullOptions& options, int exponent) {
+/// The hull of points already in the predicates' range (scaled by 2^exponent from the caller's):
+/// one quickhull (or gift wrap) whose passes over all the points (extremes, interior culling,
+/// ordering, measures) use up to `threads` threads.
+Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, unsigned threads) {
     Polygons faces;
     double volume = 0.0, area = 0.0;
     std::string error;
@@ -337,7 +362,7 @@ Hull hull_serial(PointSpan points, const HullOptions& options, int exponent) {
         if (!detail::giftwrap_faces(points, options.giftwrap_scan, true, faces, error)) return detail::failure(error);
         detail::measure(points, faces, &volume, &area);
     } else {
-        const Simplex simplex = detail::find_simplex(points);
+        const Simplex simplex = detail::find_simplex(points, threads);
         if (simplex.dimension < 3) {
             Hull result = lower_dimensional(points, simplex, exponent);
             if (options.merge_coplanar && result.dimension == 2) {
@@ -349,7 +374,7 @@ Hull hull_serial(PointSpan points, const HullOptions& options, int exponent) {
         if (options.algorithm == Algorithm::Giftwrap) {
             if (!detail::giftwrap_faces(points, options.giftwrap_scan, false, faces, error)) return detail::failure(error);
             detail::measure(points, faces, &volume, &area);
-        } else if (!detail::quickhull_faces(points, simplex, faces, &volume, &area, error)) {
+        } else if (!detail::quickhull_faces(points, simplex, faces, &volume, &area, error, threads)) {
             return detail::failure(error);
         }
     }
@@ -370,15 +395,23 @@ namespace detail {
 /// each chunk keeps its lowest index, so the lowest of all is among them). Ascending. Empty when
 /// chunking would not pay: a small input, or one whose points are mostly on the hull (a sphere),
 /// judged from the hull of every 64th point.
-std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads) {
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like) {
     const std::size_t n = points.count;
+    *surface_like = false;
     if (threads < 2 || n < 2 * kPointsPerThread) return {};
     {
         std::vector<double> sample;
         sample.reserve(3 * (n / 64 + 1));
         for (std::size_t i = 0; i < n; i += 64) sample.insert(sample.end(), points[i], points[i] + 3);
-        const std::size_t sampled = sample.size() / 3;
-        if (8 * detail::extreme_points(PointSpan(sample.data(), sampled)).size() > sampled) return {};
+        const PointSpan sampled(sample.data(), sample.size() / 3);
+        if (8 * detail::extreme_points(sampled).size() > sampled.count) {
+            *surface_like = true;
+            return {};
+        }
+        // When the serial quickhull's interior culling leaves few points (a cube: about a
+        // quarter of a sample, far fewer of the whole), its work is a few passes over the
+        // points, which chunks only repeat: measured slower. A ball keeps most of them.
+        if (2 * detail::culling_survivors(sampled) < sampled.count) return {};
     }
     // One chunk per thread: each chunk's hull has costs that do not shrink with the chunk (its
     // culling hull, sorting buffers, fresh pages), so more, smaller chunks were measured slower.
@@ -429,25 +462,25 @@ Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
         });
         points = PointSpan(scaled.data(), input.count);
     }
-    if (seed || options.algorithm != Algorithm::Quickhull) return hull_serial(points, options, exponent);
+    if (seed || options.algorithm != Algorithm::Quickhull) return hull_serial(points, options, exponent, threads);
 
-    const std::vector<std::uint32_t> candidates = chunk_candidates(points, threads);
+    bool surface_like = false;
+    const std::vector<std::uint32_t> candidates = chunk_candidates(points, threads, &surface_like);
     if (candidates.empty()) {
-        // Few points inside the hull (or a small cloud): quickhull split across the threads.
+        // Few points inside the hull: quickhull split across the threads.
         Polygons faces;
         double volume = 0.0, area = 0.0;
-        if (threads >= 2 && points.count >= 2 * kPointsPerThread &&
-            quickhull_split_faces(points, threads, faces, &volume, &area)) {
+        if (surface_like && quickhull_split_faces(points, threads, faces, &volume, &area)) {
             return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar);
         }
-        return hull_serial(points, options, exponent);
+        return hull_serial(points, options, exponent, threads);
     }
     // The hull of the candidates, in ascending index order, so that every tie-break (lowest
     // index) and the canonical order come out as for the whole cloud.
     std::vector<double> xyz(3 * candidates.size());
     for (std::size_t k = 0; k < candidates.size(); ++k) std::copy(points[candidates[k]], points[candidates[k]] + 3, &xyz[3 * k]);
     scaled = {};
-    Hull result = hull_serial(PointSpan(xyz.data(), candidates.size()), options, exponent);
+    Hull result = hull_serial(PointSpan(xyz.data(), candidates.size()), options, exponent, threads);
     for (auto* list : {&result.triangles, &result.vertices, &result.face_vertices}) {
         for (std::uint32_t& v : *list) v = candidates[v];
     }

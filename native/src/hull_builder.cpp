@@ -56,7 +56,8 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
         for (double& c : scaled) c = std::ldexp(c, exponent);
         piece = PointSpan(scaled.data(), points.count);
     }
-    std::vector<std::uint32_t> candidates = detail::chunk_candidates(piece, threads);
+    bool surface_like = false;  // then every point of the piece is a candidate
+    std::vector<std::uint32_t> candidates = detail::chunk_candidates(piece, threads, &surface_like);
     const bool all = candidates.empty();
     const std::size_t count = all ? points.count : candidates.size();
     auto local = [&](std::size_t k) { return all ? k : std::size_t{candidates[k]}; };

@@ -59,8 +59,12 @@ Hull hull_in_range(PointSpan points, const HullOptions& options, int exponent);
 
 /// The candidates for the vertices of the hull of `points` (in range), ascending: for a large
 /// cloud the extreme points of chunks of it hulled on up to `threads` threads, when that pays
-/// (see hull.cpp); otherwise empty, and every point is a candidate.
-std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads);
+/// (see hull.cpp); otherwise empty, and every point is a candidate. *surface_like: empty because
+/// most points are on the hull (judged from a sample), where quickhull_split_faces may pay.
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like);
+
+/// How many of `points` quickhull's interior culling keeps (all of them without volume).
+std::size_t culling_survivors(PointSpan points);
 
 /// The extreme points of `points` (the vertices of their hull, whatever its dimension; of
 /// identical points the lowest index), ascending. `points` must be in the predicates' range.
@@ -72,7 +76,7 @@ Hull failure(std::string message, std::int64_t point = -1);
 /// Exact affine dimension of the points and a well-spread simplex (far-apart points, rounded
 /// distances only choose among candidates; every decision about degeneracy is exact). Of
 /// identical candidates the lowest index is chosen.
-Simplex find_simplex(PointSpan points);
+Simplex find_simplex(PointSpan points, unsigned threads = 1);
 
 /// Indices of the distinct points (exact coordinate equality), the lowest index of each group of
 /// identical points, in ascending order.
@@ -92,7 +96,7 @@ bool giftwrap_faces(PointSpan points, GiftwrapScan scan, bool seed_epsilon, Poly
 /// polygons (coplanar triangles merged, so that only extreme points are corners), counter-clockwise
 /// seen from outside, with the enclosed volume and the surface area.
 bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
-                     std::string& error);
+                     std::string& error, unsigned threads = 1);
 
 /// Quickhull on threads for a cloud with volume whose points mostly lie on its hull: split in two
 /// halves hulled on their own threads (recursively), joined along their seam (quickhull.cpp).

@@ -419,7 +419,7 @@ void spatial_order(PointSpan points, std::vector<Index>& ids) {
 
 /// Indices of the points that may be on the hull: all but those inside a box that is certified
 /// (exactly) to lie strictly inside the hull of the points extreme in 14 directions.
-std::vector<Index> candidates(PointSpan points, const Simplex& simplex) {
+std::vector<Index> candidates(PointSpan points, const Simplex& simplex, unsigned threads = 1) {
     const auto n = static_cast<Index>(points.count);
     std::vector<Index> all;
     const Index* extreme = simplex.extreme;
@@ -476,13 +476,25 @@ std::vector<Index> candidates(PointSpan points, const Simplex& simplex) {
         }
         if (!fits) continue;
         // The closed box is inside the open hull: its points are interior, never on the hull.
-        all.reserve(n / 8);
-        for (Index i = 0; i < n; ++i) {
-            const double* p = points[i];
-            const bool in_box = p[0] >= box_lo[0] && p[0] <= box_hi[0] && p[1] >= box_lo[1] && p[1] <= box_hi[1] &&
-                                p[2] >= box_lo[2] && p[2] <= box_hi[2];
-            if (!in_box) all.push_back(i);
-        }
+        // Blocks filtered on the threads, joined in order.
+        constexpr Index kBlock = Index{1} << 18;
+        const std::size_t blocks = (n + kBlock - 1) / kBlock;
+        std::vector<std::vector<Index>> kept(blocks);
+        parallel_for(threads, blocks, [&](std::size_t block) {
+            const Index first = static_cast<Index>(block) * kBlock, last = std::min(n, first + kBlock);
+            std::vector<Index>& out = kept[block];
+            out.reserve(kBlock / 8);
+            for (Index i = first; i < last; ++i) {
+                const double* p = points[i];
+                const bool in_box = p[0] >= box_lo[0] && p[0] <= box_hi[0] && p[1] >= box_lo[1] && p[1] <= box_hi[1] &&
+                                    p[2] >= box_lo[2] && p[2] <= box_hi[2];
+                if (!in_box) out.push_back(i);
+            }
+        });
+        std::size_t total = 0;
+        for (const auto& part : kept) total += part.size();
+        all.reserve(total);
+        for (const auto& part : kept) all.insert(all.end(), part.begin(), part.end());
         for (Index s : simplex.p) {  // the starting simplex stays, even when inside the box
             if (!std::binary_search(all.begin(), all.end(), s)) all.insert(std::lower_bound(all.begin(), all.end(), s), s);
         }
@@ -505,8 +517,8 @@ std::vector<CoplanarPair> coplanar_pairs(const Surface& surface) {
 /// copied in spatial order into *xyz, ids[k] being the index in `points` of copy k, and the hull
 /// as a surface over the copy.
 bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>& ids, std::vector<double>& xyz,
-                   Surface& surface, std::string& error) {
-    ids = candidates(points, simplex);
+                   Surface& surface, std::string& error, unsigned threads = 1) {
+    ids = candidates(points, simplex, threads);
     spatial_order(points, ids);
     xyz.resize(3 * ids.size());
     for (std::size_t k = 0; k < ids.size(); ++k) std::copy(points[ids[k]], points[ids[k]] + 3, &xyz[3 * k]);
@@ -523,19 +535,24 @@ bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>&
 
 }  // namespace
 
+std::size_t culling_survivors(PointSpan points) {
+    const Simplex simplex = find_simplex(points);
+    return simplex.dimension < 3 ? points.count : candidates(points, simplex).size();
+}
+
 bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
-                     std::string& error) {
+                     std::string& error, unsigned threads) {
     std::vector<Index> ids;
     std::vector<double> xyz;
     Surface surface;
-    if (!run_quickhull(points, simplex, ids, xyz, surface, error)) return false;
+    if (!run_quickhull(points, simplex, ids, xyz, surface, error, threads)) return false;
     const PointSpan local_points(xyz.data(), ids.size());
     // Merging and measuring touch every corner: done on the local copy, which is in spatial order.
     // The faces are put in the canonical order first, so that the volume and area are summed in
     // an order that depends on the hull alone, not on the run that found it.
     faces = merge_coplanar_triangles(local_points, std::move(surface.triangles), coplanar_pairs(surface));
-    canonical_order(faces, ids);
-    measure(local_points, faces, volume, area);
+    canonical_order(faces, ids, threads);
+    measure(local_points, faces, volume, area, threads);
     for (Index& v : faces.vertices) v = ids[v];
     return true;
 }

@@ -360,6 +360,9 @@ struct PointReader::Impl {
         if (size_known) bytes = std::min<std::uint64_t>(bytes, size - input.offset());
         const std::size_t tasks = static_cast<std::size_t>(std::min<std::uint64_t>(batch / chunk + 2, bytes / chunk + 1));
         const unsigned started = static_cast<unsigned>(std::min<std::uint64_t>(threads, bytes / kBytesPerThread + 1));
+        // What the array guesses below go by: the batch of a file of known size; of a stream, what
+        // was read so far (a small stream must not make room for a whole batch).
+        const std::uint64_t seen = size_known ? bytes : std::min<std::uint64_t>(bytes, input.available().size());
         if (chunks.size() < tasks) chunks.resize(tasks);
         // The points the header still allows: an upper bound for every chunk of the batch (the
         // points of earlier chunks count against it too), exact for the first.
@@ -374,9 +377,10 @@ struct PointReader::Impl {
         if (direct && replace) out->clear();
         const std::size_t out_start = replace ? 0 : out->size();
         // Address space for as many points as the batch could hold (a point line takes 6 bytes at
-        // least), so that *out is not moved while batches grow; its pages are touched only as
-        // points are written. Growing geometrically keeps appending batch after batch linear.
-        const std::size_t most = 3 * static_cast<std::size_t>(std::min<std::uint64_t>(limit, bytes / 6 + 1));
+        // least; a stream's batch may come to hold more), so that *out is not moved while batches
+        // grow; its pages are touched only as points are written. Growing geometrically keeps
+        // appending batch after batch linear.
+        const std::size_t most = 3 * static_cast<std::size_t>(std::min<std::uint64_t>(limit, seen / 6 + 1));
         if (out->capacity() - out_start < most) out->reserve(std::max(out_start + most, 2 * out->capacity()));
         BatchState state;
         std::size_t wanted = out->size();
@@ -385,7 +389,7 @@ struct PointReader::Impl {
             // the line length seen so far), no more than the header still allows, within the
             // capacity reserved: making room never moves the array.
             const std::uint64_t expected = std::min<std::uint64_t>(
-                last_batch_points ? last_batch_points : bytes / bytes_per_point, limit);
+                last_batch_points ? last_batch_points : seen / bytes_per_point, limit);
             wanted = out_start + 3 * static_cast<std::size_t>(std::min<std::uint64_t>(expected, (out->capacity() - out_start) / 3));
             state.make_room = out->size() < wanted;
         }
