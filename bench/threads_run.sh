@@ -57,7 +57,7 @@ else
   report=bench/results-threads.md
 fi
 # A quick run keeps its raw figures apart, so that it never overwrites the full run's.
-results=$work/results$([ "$quick" = 1 ] && echo -quick).jsonl
+results=$work/results$([ "$quick" = 1 ] && echo -quick || true).jsonl
 
 # write_report: writes $report from $results (and prints it).
 write_report() {
