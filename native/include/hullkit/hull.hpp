@@ -52,12 +52,15 @@ struct HullOptions {
     /// Also report the faces as planar convex polygons (Hull::face_offsets / face_vertices):
     /// a cube gives 6 quads. The triangles are reported either way.
     bool merge_coplanar = false;
-    /// Threads for quickhull: 0 (the default) uses every hardware thread when the input is large enough to gain
-    /// from them (tens of thousands of points), enough to gain from them (over 100 000 points), 1 keeps all work on the calling thread.
-    /// The result is the same bits for every value: large clouds with few hull vertices are cut
-    /// into chunks hulled on threads, and the hull of the chunks' vertices is taken last; the
-    /// answer depends only on the points, not on the chunks (see Hull's canonical order). Gift
-    /// wrapping runs on the calling thread; so does the WebAssembly build, which has no threads.
+    /// Threads for quickhull: 0 (the default) uses every hardware thread once the input is large
+    /// enough to gain from them (tens of thousands of points); 1 keeps all work on the calling
+    /// thread. The result is the same bits for every value, because the answer depends only on
+    /// the points (see Hull's canonical order): a cloud with few hull vertices whose interior
+    /// culling keeps most points (a ball) is cut into chunks hulled on the threads, then the hull
+    /// of the chunks' vertices is taken; a cloud mostly on its hull (a sphere) is split in halves
+    /// hulled on their own threads and joined along the seam; otherwise one quickhull runs, its
+    /// passes over all points split in blocks. Gift wrapping runs on the calling thread; so does
+    /// the WebAssembly build, which has no threads.
     unsigned threads = 0;
 };
 
