@@ -445,6 +445,17 @@ std::vector<std::uint32_t> extreme_points(PointSpan points) {
     return vertices;
 }
 
+PointSpan scale_points(PointSpan points, int exponent, unsigned threads, std::vector<double>& storage) {
+    if (exponent == 0) return points;
+    storage.resize(3 * points.count);  // multiplying by a power of two is exact
+    constexpr std::size_t kBlock = std::size_t{1} << 18;
+    parallel_for(threads, (storage.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+        const std::size_t end = std::min(storage.size(), (block + 1) * kBlock);
+        for (std::size_t i = block * kBlock; i < end; ++i) storage[i] = std::ldexp(points.xyz[i], exponent);
+    });
+    return PointSpan(storage.data(), points.count);
+}
+
 Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
     const bool seed = options.side_test == SideTest::Seed;
     if (seed && options.algorithm != Algorithm::Giftwrap)
@@ -452,16 +463,7 @@ Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
     const unsigned threads = resolve_threads(options.threads, input.count / kPointsPerThread);
 
     std::vector<double> scaled;
-    PointSpan points = input;
-    if (exponent != 0) {  // multiplying by a power of two is exact
-        scaled.resize(3 * input.count);
-        constexpr std::size_t kBlock = std::size_t{1} << 18;
-        parallel_for(threads, (scaled.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
-            const std::size_t end = std::min(scaled.size(), (block + 1) * kBlock);
-            for (std::size_t i = block * kBlock; i < end; ++i) scaled[i] = std::ldexp(input.xyz[i], exponent);
-        });
-        points = PointSpan(scaled.data(), input.count);
-    }
+    const PointSpan points = scale_points(input, exponent, threads, scaled);
     if (seed || options.algorithm != Algorithm::Quickhull) return hull_serial(points, options, exponent, threads);
 
     bool surface_like = false;

@@ -50,12 +50,7 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
     // The piece's own candidates (on threads, for a large piece with few hull vertices), scaled
     // into the predicates' range when it has to be (a copy only then).
     std::vector<double> scaled;
-    PointSpan piece = points;
-    if (exponent != 0) {
-        scaled.assign(points.xyz, points.xyz + 3 * points.count);
-        for (double& c : scaled) c = std::ldexp(c, exponent);
-        piece = PointSpan(scaled.data(), points.count);
-    }
+    const PointSpan piece = detail::scale_points(points, exponent, threads, scaled);
     bool surface_like = false;  // then every point of the piece is a candidate
     std::vector<std::uint32_t> candidates = detail::chunk_candidates(piece, threads, &surface_like);
     const bool all = candidates.empty();
@@ -68,6 +63,11 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
     std::vector<std::size_t> order(count);
     for (std::size_t k = 0; k < count; ++k) order[k] = local(k);
     if (indices) std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return indices[a] < indices[b]; });
+    auto added_twice = [&](std::uint64_t index) {
+        error_ = "point index " + std::to_string(index) + " was added twice";
+        error_point_ = static_cast<std::int64_t>(index);
+        return false;
+    };
     std::vector<double> xyz;
     std::vector<std::uint64_t> ids;
     xyz.reserve(3 * (ids_.size() + count));
@@ -75,20 +75,12 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
     std::size_t kept = 0, next = 0;
     while (kept < ids_.size() || next < count) {
         if (next == count || (kept < ids_.size() && ids_[kept] <= global(order[next]))) {
-            if (next < count && ids_[kept] == global(order[next])) {
-                error_ = "point index " + std::to_string(ids_[kept]) + " was added twice";
-                error_point_ = static_cast<std::int64_t>(ids_[kept]);
-                return false;
-            }
+            if (next < count && ids_[kept] == global(order[next])) return added_twice(ids_[kept]);
             ids.push_back(ids_[kept]);
             xyz.insert(xyz.end(), &xyz_[3 * kept], &xyz_[3 * kept] + 3);
             ++kept;
         } else {
-            if (!ids.empty() && ids.back() == global(order[next])) {
-                error_ = "point index " + std::to_string(ids.back()) + " was added twice";
-                error_point_ = static_cast<std::int64_t>(ids.back());
-                return false;
-            }
+            if (!ids.empty() && ids.back() == global(order[next])) return added_twice(ids.back());
             ids.push_back(global(order[next]));
             xyz.insert(xyz.end(), points[order[next]], points[order[next]] + 3);
             ++next;
@@ -98,14 +90,8 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
     candidates = {};
 
     // Keep the extreme points of the union (decided on scaled copies when scaling is needed).
-    std::vector<std::uint32_t> extreme;
-    if (exponent != 0) {
-        std::vector<double> copy(xyz);
-        for (double& c : copy) c = std::ldexp(c, exponent);
-        extreme = detail::extreme_points(PointSpan(copy.data(), ids.size()));
-    } else {
-        extreme = detail::extreme_points(PointSpan(xyz.data(), ids.size()));
-    }
+    const std::vector<std::uint32_t> extreme =
+        detail::extreme_points(detail::scale_points(PointSpan(xyz.data(), ids.size()), exponent, threads, scaled));
     xyz_.clear();
     ids_.clear();
     xyz_.reserve(3 * extreme.size());

@@ -51,6 +51,10 @@ Hull scan_magnitudes(PointSpan points, std::uint64_t first_index, const std::uin
 /// they are in it), or a failure when no single power of two can.
 Hull scale_exponent(const Magnitudes& range, int* exponent);
 
+/// `points` multiplied by 2^exponent (exact) into `storage`, on up to `threads` threads; the
+/// points themselves when exponent is 0.
+PointSpan scale_points(PointSpan points, int exponent, unsigned threads, std::vector<double>& storage);
+
 /// The hull of points that passed the checks, scaled by 2^exponent while deciding (the exponent
 /// comes from scale_exponent of a range that covers them; the result's volume and area are
 /// given back in the caller's units). With threads > 1, large clouds are hulled in chunks on
