@@ -360,6 +360,7 @@ TEST_CASE("threads: every threaded path once, small enough for ThreadSanitizer",
     }
     const std::vector<std::pair<std::string, std::vector<double>>> clouds = {
         {"ball (chunks)", hullkit_test::random_cloud(Cloud::Ball, 40000, 51)},
+        {"cube (one quickhull, its passes over the points on threads)", hullkit_test::random_cloud(Cloud::Cube, 40000, 53)},
         {"sphere (split and join)", hullkit_test::random_cloud(Cloud::Sphere, 40000, 52)},
         {"lifted grid (split and join, coplanar)", lifted}};
     for (const auto& [name, xyz] : clouds) {

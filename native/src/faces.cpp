@@ -31,7 +31,7 @@ private:
 
 }  // namespace
 
-Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> triangles,
+Polygons merge_coplanar_triangles(PointSpan points, LargeArray<std::uint32_t> triangles,
                                   const std::vector<CoplanarPair>& coplanar) {
     const std::size_t count = triangles.size() / 3;
     Polygons faces;
@@ -119,9 +119,9 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
     // each directed edge of a closed surface belongs to one face.
     struct Keyed {
         std::uint64_t key;
-        std::uint32_t face;
+        std::uint32_t begin, size;  // where the polygon's corners are in faces.vertices, and how many
     };
-    std::vector<Keyed> keyed(count);
+    LargeArray<Keyed> keyed(count);
     constexpr std::size_t kBlock = std::size_t{1} << 16;
     const std::size_t blocks = (count + kBlock - 1) / kBlock;
     std::vector<std::uint64_t> block_bits(blocks, 0);
@@ -135,7 +135,8 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
                 if (id(*it) < id(*lowest)) lowest = it;
             }
             std::rotate(first, lowest, last);
-            keyed[f] = {std::uint64_t{id(first[0])} << 32 | id(first[1]), static_cast<std::uint32_t>(f)};
+            keyed[f] = {std::uint64_t{id(first[0])} << 32 | id(first[1]), faces.offsets[f],
+                        faces.offsets[f + 1] - faces.offsets[f]};
             block_bits[block] |= keyed[f].key;
         }
     });
@@ -144,23 +145,42 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
     const std::uint64_t first_ids = (all_bits >> 32) + 1;  // a bound on the first corners' ids
     if (count >= 512 && first_ids <= 4 * std::uint64_t{count}) {
         // Dense ids (a hull with most points as vertices, a sphere): counting sort by the first
-        // corner, then each group (the faces starting at one vertex: a few) by the second.
-        std::vector<std::uint32_t> start(static_cast<std::size_t>(first_ids) + 1, 0);
-        for (const Keyed& k : keyed) ++start[(k.key >> 32) + 1];
-        for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-        std::vector<Keyed> buffer(count);
-        for (const Keyed& k : keyed) buffer[start[k.key >> 32]++] = k;
-        for (std::size_t begin = 0; begin < count;) {
-            std::size_t end = begin + 1;
-            while (end < count && buffer[end].key >> 32 == buffer[begin].key >> 32) ++end;
-            for (std::size_t i = begin + 1; i < end; ++i) {  // insertion sort of a handful
-                const Keyed k = buffer[i];
-                std::size_t j = i;
-                for (; j > begin && buffer[j - 1].key > k.key; --j) buffer[j] = buffer[j - 1];
-                buffer[j] = k;
-            }
-            begin = end;
+        // corner, then each group (the faces starting at one vertex: a few) by the second. Keys
+        // are unique, so the result is the same however the work is split: each of a few chunks
+        // of faces counts its first corners, and scatters into the slots the chunk-major prefix
+        // sums give it; the groups are then sorted in ranges of first corners.
+        const std::size_t ids = static_cast<std::size_t>(first_ids);
+        const std::size_t chunks = std::min<std::size_t>(resolve_threads(threads, count / kBlock), 8);
+        LargeArray<std::uint32_t> start(chunks * ids, 0);  // chunk c's counts, then slots, at c * ids
+        parallel_for(threads, chunks, [&](std::size_t c) {
+            std::uint32_t* counts = &start[c * ids];
+            for (std::size_t f = count * c / chunks; f < count * (c + 1) / chunks; ++f) ++counts[keyed[f].key >> 32];
+        });
+        LargeArray<std::uint32_t> group(ids + 1);  // where the faces starting at each id begin
+        std::uint32_t sum = 0;
+        for (std::size_t v = 0; v < ids; ++v) {
+            group[v] = sum;
+            for (std::size_t c = 0; c < chunks; ++c) sum += std::exchange(start[c * ids + v], sum);
         }
+        group[ids] = sum;
+        LargeArray<Keyed> buffer(count);
+        parallel_for(threads, chunks, [&](std::size_t c) {
+            std::uint32_t* next = &start[c * ids];
+            for (std::size_t f = count * c / chunks; f < count * (c + 1) / chunks; ++f) buffer[next[keyed[f].key >> 32]++] = keyed[f];
+        });
+        constexpr std::size_t kIdsPerTask = std::size_t{1} << 16;
+        parallel_for(threads, (ids + kIdsPerTask - 1) / kIdsPerTask, [&](std::size_t task) {
+            const std::size_t last = std::min(ids, (task + 1) * kIdsPerTask);
+            for (std::size_t v = task * kIdsPerTask; v < last; ++v) {
+                const std::size_t begin = group[v], end = group[v + 1];
+                for (std::size_t i = begin + 1; i < end; ++i) {  // insertion sort of a handful
+                    const Keyed k = buffer[i];
+                    std::size_t j = i;
+                    for (; j > begin && buffer[j - 1].key > k.key; --j) buffer[j] = buffer[j - 1];
+                    buffer[j] = k;
+                }
+            }
+        });
         keyed.swap(buffer);
     } else if (count < 512) {
         std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
@@ -169,7 +189,7 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
         // below 2^32, so most of the high digits of both halves are zero). Each pass counts and
         // scatters per block of keys on threads; stable, so the order is the same for any split.
         constexpr int kDigits = 2048;
-        std::vector<Keyed> buffer(count);
+        LargeArray<Keyed> buffer(count);
         std::vector<std::size_t> start(blocks * kDigits);
         for (int shift = 0; shift < 64; shift += 11) {
             if (((all_bits >> shift) & (kDigits - 1)) == 0) continue;
@@ -191,23 +211,22 @@ void canonical_order(Polygons& faces, const std::vector<std::uint32_t>& original
             keyed.swap(buffer);
         }
     }
-    bool sorted = true;
-    for (std::size_t f = 0; f < count && sorted; ++f) sorted = keyed[f].face == f;
-    if (sorted) return;
+    // The new offsets from the sizes alone (sequential reads); unchanged order: nothing to move.
     Polygons ordered;
     ordered.offsets.resize(count + 1);
     ordered.offsets[0] = 0;
+    bool sorted = true;
     for (std::size_t f = 0; f < count; ++f) {
-        const std::uint32_t face = keyed[f].face;
-        ordered.offsets[f + 1] = ordered.offsets[f] + (faces.offsets[face + 1] - faces.offsets[face]);
+        sorted = sorted && keyed[f].begin == ordered.offsets[f];
+        ordered.offsets[f + 1] = ordered.offsets[f] + keyed[f].size;
     }
+    if (sorted) return;
     ordered.vertices.resize(faces.vertices.size());
     parallel_for(threads, blocks, [&](std::size_t block) {
         const std::size_t end = std::min(count, (block + 1) * kBlock);
         for (std::size_t f = block * kBlock; f < end; ++f) {
-            const std::uint32_t face = keyed[f].face;
-            std::copy(faces.vertices.begin() + faces.offsets[face], faces.vertices.begin() + faces.offsets[face + 1],
-                      ordered.vertices.begin() + ordered.offsets[f]);
+            const auto from = faces.vertices.begin() + keyed[f].begin;
+            std::copy(from, from + keyed[f].size, ordered.vertices.begin() + ordered.offsets[f]);
         }
     });
     faces = std::move(ordered);

@@ -252,7 +252,7 @@ private:
                        std::to_string(faces) + " face(s)";
             }
         }
-        std::vector<Index> used(faces.vertices);
+        std::vector<Index> used(faces.vertices.begin(), faces.vertices.end());
         std::sort(used.begin(), used.end());
         const auto v = static_cast<long long>(std::unique(used.begin(), used.end()) - used.begin());
         const auto f = static_cast<long long>(faces.size());

@@ -240,27 +240,41 @@ Hull check_input(PointSpan points, unsigned threads, detail::Magnitudes* range) 
 }
 
 /// Rotates each polygon to start at its lowest index.
-void rotate_to_lowest(Polygons& faces) {
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const auto first = faces.vertices.begin() + faces.offsets[f];
-        const auto last = faces.vertices.begin() + faces.offsets[f + 1];
-        std::rotate(first, std::min_element(first, last), last);
-    }
+void rotate_to_lowest(Polygons& faces, unsigned threads) {
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    detail::parallel_for(threads, (faces.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+        const std::size_t end = std::min(faces.size(), (block + 1) * kBlock);
+        for (std::size_t f = block * kBlock; f < end; ++f) {
+            const auto first = faces.vertices.begin() + faces.offsets[f];
+            const auto last = faces.vertices.begin() + faces.offsets[f + 1];
+            std::rotate(first, std::min_element(first, last), last);
+        }
+    });
 }
 
 /// Triangles fanned from each polygon's first corner and the sorted vertex list.
-void fill_from_polygons(std::size_t point_count, const Polygons& faces, Hull& hull) {
+void fill_from_polygons(std::size_t point_count, const Polygons& faces, Hull& hull, unsigned threads = 1) {
+    // Polygon f's fan starts at triangle offsets[f] - 2f (an m-gon has m - 2 triangles).
     hull.triangles.clear();
-    hull.triangles.reserve(3 * (faces.vertices.size() - 2 * faces.size()));
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
-        const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-        for (std::size_t k = 1; k + 1 < m; ++k) {
-            hull.triangles.insert(hull.triangles.end(), {corners[0], corners[k], corners[k + 1]});
+    const std::size_t size = 3 * (faces.vertices.size() - 2 * faces.size());
+    detail::reserve_large(hull.triangles, size);
+    hull.triangles.resize(size);
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    detail::parallel_for(threads, (faces.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+        const std::size_t end = std::min(faces.size(), (block + 1) * kBlock);
+        for (std::size_t f = block * kBlock; f < end; ++f) {
+            const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
+            const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
+            std::uint32_t* out = &hull.triangles[3 * (faces.offsets[f] - 2 * f)];
+            for (std::size_t k = 1; k + 1 < m; ++k, out += 3) {
+                out[0] = corners[0];
+                out[1] = corners[k];
+                out[2] = corners[k + 1];
+            }
         }
-    }
+    });
     if (faces.vertices.size() < point_count / 16) {  // few corners: sorting them is cheaper
-        hull.vertices = faces.vertices;
+        hull.vertices.assign(faces.vertices.begin(), faces.vertices.end());
         std::sort(hull.vertices.begin(), hull.vertices.end());
         hull.vertices.erase(std::unique(hull.vertices.begin(), hull.vertices.end()), hull.vertices.end());
         return;
@@ -324,7 +338,7 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
     Polygons faces;
     faces.add(polygon.begin(), polygon.end());
     fill_from_polygons(points.count, faces, hull);
-    hull.vertices = faces.vertices;  // in order around the polygon
+    hull.vertices.assign(faces.vertices.begin(), faces.vertices.end());  // in order around the polygon
     double volume = 0.0, area = 0.0;
     detail::measure(points, faces, &volume, &area);
     unscale(exponent, 0.0, area, hull);  // flat: no volume, the area of one side
@@ -336,15 +350,16 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
 
 /// A hull with volume from its faces (counter-clockwise seen from outside) and their measures on
 /// points scaled by 2^exponent.
-Hull polytope(std::size_t point_count, Polygons faces, double volume, double area, int exponent, bool merge_coplanar) {
+Hull polytope(std::size_t point_count, Polygons faces, double volume, double area, int exponent, bool merge_coplanar,
+              unsigned threads) {
     Hull result;
     result.dimension = 3;
-    rotate_to_lowest(faces);
-    fill_from_polygons(point_count, faces, result);
+    rotate_to_lowest(faces, threads);
+    fill_from_polygons(point_count, faces, result, threads);
     unscale(exponent, volume, area, result);
     if (merge_coplanar) {
-        result.face_offsets = std::move(faces.offsets);
-        result.face_vertices = std::move(faces.vertices);
+        result.face_offsets.assign(faces.offsets.begin(), faces.offsets.end());
+        result.face_vertices.assign(faces.vertices.begin(), faces.vertices.end());
     }
     return result;
 }
@@ -352,7 +367,8 @@ Hull polytope(std::size_t point_count, Polygons faces, double volume, double are
 /// The hull of points already in the predicates' range (scaled by 2^exponent from the caller's):
 /// one quickhull (or gift wrap) whose passes over all the points (extremes, interior culling,
 /// ordering, measures) use up to `threads` threads.
-Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, unsigned threads) {
+Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, unsigned threads,
+                 const Simplex* known = nullptr) {
     Polygons faces;
     double volume = 0.0, area = 0.0;
     std::string error;
@@ -362,7 +378,7 @@ Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, uns
         if (!detail::giftwrap_faces(points, options.giftwrap_scan, true, faces, error)) return detail::failure(error);
         detail::measure(points, faces, &volume, &area);
     } else {
-        const Simplex simplex = detail::find_simplex(points, threads);
+        const Simplex simplex = known ? *known : detail::find_simplex(points, threads);
         if (simplex.dimension < 3) {
             Hull result = lower_dimensional(points, simplex, exponent);
             if (options.merge_coplanar && result.dimension == 2) {
@@ -379,11 +395,17 @@ Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, uns
         }
     }
 
-    return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar);
+    return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads);
 }
 
 /// Below this many points per thread, threads do not pay for themselves.
 constexpr std::size_t kPointsPerThread = std::size_t{1} << 14;
+
+/// Chunks pay when quickhull proper, which is serial, has much to do: when the interior culling
+/// keeps at least this fraction of the points. Measured on 1e7 points: a ball keeps 36% (chunks
+/// on 2 threads took 0.6x the serial time), a cube 1% (chunks were slower than the serial
+/// quickhull, whose passes over all the points already run on the threads).
+constexpr double kChunkWhenKept = 0.15;
 
 }  // namespace
 
@@ -394,24 +416,36 @@ namespace detail {
 /// threads (every extreme point of the whole is extreme in its chunk, and of identical points
 /// each chunk keeps its lowest index, so the lowest of all is among them). Ascending. Empty when
 /// chunking would not pay: a small input, or one whose points are mostly on the hull (a sphere),
-/// judged from the hull of every 64th point.
-std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like) {
+/// judged from a sample of about kSample points spread evenly over the input.
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like, Simplex* whole) {
     const std::size_t n = points.count;
     *surface_like = false;
+    if (whole) whole->dimension = -2;  // not found
     if (threads < 2 || n < 2 * kPointsPerThread) return {};
     {
+        // Enough for the two ratios below (a ball's sample of 8192 has a few hundred hull
+        // vertices, a sphere's has all); a fixed size, because this runs on one thread before
+        // the threads start: every 64th point of 1e7 (1.5e5 points) took 25 ms of a 150 ms hull.
+        constexpr std::size_t kSample = 8192;
+        const std::size_t stride = n / kSample;
         std::vector<double> sample;
-        sample.reserve(3 * (n / 64 + 1));
-        for (std::size_t i = 0; i < n; i += 64) sample.insert(sample.end(), points[i], points[i] + 3);
+        sample.reserve(3 * (n / stride + 1));
+        for (std::size_t i = 0; i < n; i += stride) sample.insert(sample.end(), points[i], points[i] + 3);
         const PointSpan sampled(sample.data(), sample.size() / 3);
         if (8 * detail::extreme_points(sampled).size() > sampled.count) {
             *surface_like = true;
             return {};
         }
-        // When the serial quickhull's interior culling leaves few points (a cube: about a
-        // quarter of a sample, far fewer of the whole), its work is a few passes over the
-        // points, which chunks only repeat: measured slower. A ball keeps most of them.
-        if (2 * detail::culling_survivors(sampled) < sampled.count) return {};
+        // When the serial quickhull's interior culling leaves few points (a cube), its work is
+        // a few passes over the points, on the threads, which chunks only repeat (see
+        // kChunkWhenKept). The culling region comes from the whole cloud's extremes (a
+        // sample's lie too far inside: they would keep half of a cube); the sample says how
+        // many points it keeps.
+        const Simplex simplex = find_simplex(points, threads);
+        if (culling_kept_fraction(points, simplex, sampled) < kChunkWhenKept) {
+            if (whole) *whole = simplex;
+            return {};
+        }
     }
     // One chunk per thread: each chunk's hull has costs that do not shrink with the chunk (its
     // culling hull, sorting buffers, fresh pages), so more, smaller chunks were measured slower.
@@ -438,7 +472,7 @@ std::vector<std::uint32_t> extreme_points(PointSpan points) {
         double volume = 0.0, area = 0.0;
         std::string error;
         if (!quickhull_faces(points, simplex, faces, &volume, &area, error)) throw std::logic_error(error);
-        vertices = std::move(faces.vertices);
+        vertices.assign(faces.vertices.begin(), faces.vertices.end());
     }
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
@@ -467,15 +501,16 @@ Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
     if (seed || options.algorithm != Algorithm::Quickhull) return hull_serial(points, options, exponent, threads);
 
     bool surface_like = false;
-    const std::vector<std::uint32_t> candidates = chunk_candidates(points, threads, &surface_like);
+    Simplex whole;
+    const std::vector<std::uint32_t> candidates = chunk_candidates(points, threads, &surface_like, &whole);
     if (candidates.empty()) {
         // Few points inside the hull: quickhull split across the threads.
         Polygons faces;
         double volume = 0.0, area = 0.0;
         if (surface_like && quickhull_split_faces(points, threads, faces, &volume, &area)) {
-            return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar);
+            return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads);
         }
-        return hull_serial(points, options, exponent, threads);
+        return hull_serial(points, options, exponent, threads, whole.dimension == -2 ? nullptr : &whole);
     }
     // The hull of the candidates, in ascending index order, so that every tie-break (lowest
     // index) and the canonical order come out as for the whole cloud.

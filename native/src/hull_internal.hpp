@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "hullkit/hull.hpp"
+#include "large_array.hpp"
 
 namespace hullkit::detail {
 
 /// Convex polygons stored flat: polygon k is vertices[offsets[k]] ... vertices[offsets[k + 1] - 1].
 struct Polygons {
-    std::vector<std::uint32_t> offsets{0};
-    std::vector<std::uint32_t> vertices;
+    LargeArray<std::uint32_t> offsets{0};
+    LargeArray<std::uint32_t> vertices;
 
     std::size_t size() const { return offsets.size() - 1; }
     template <class It>
@@ -65,10 +66,14 @@ Hull hull_in_range(PointSpan points, const HullOptions& options, int exponent);
 /// cloud the extreme points of chunks of it hulled on up to `threads` threads, when that pays
 /// (see hull.cpp); otherwise empty, and every point is a candidate. *surface_like: empty because
 /// most points are on the hull (judged from a sample), where quickhull_split_faces may pay.
-std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like);
+/// *whole (if given): the simplex of all the points when it was found on the way (dimension -2
+/// when not), for the serial quickhull to start from.
+std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, bool* surface_like,
+                                            Simplex* whole = nullptr);
 
-/// How many of `points` quickhull's interior culling keeps (all of them without volume).
-std::size_t culling_survivors(PointSpan points);
+/// The fraction of `points` that quickhull's interior culling (starting from their `simplex`)
+/// keeps, estimated from `sample` (some of the points). 1 without volume.
+double culling_kept_fraction(PointSpan points, const Simplex& simplex, PointSpan sample);
 
 /// The extreme points of `points` (the vertices of their hull, whatever its dimension; of
 /// identical points the lowest index), ascending. `points` must be in the predicates' range.
@@ -117,7 +122,7 @@ struct CoplanarPair {
 /// Groups the triangles of a closed convex surface into planar faces, given which edge-adjacent
 /// triangles are coplanar, and returns each face as its strictly convex polygon, so that only
 /// extreme points remain corners.
-Polygons merge_coplanar_triangles(PointSpan points, std::vector<std::uint32_t> triangles,
+Polygons merge_coplanar_triangles(PointSpan points, LargeArray<std::uint32_t> triangles,
                                   const std::vector<CoplanarPair>& coplanar);
 
 /// Brings polygons into the one order every schedule agrees on: each polygon rotated to start at

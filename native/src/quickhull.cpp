@@ -6,8 +6,9 @@
 // strictly above it; a point above no face is inside the current hull and dropped for good.
 //
 // Before the main loop: points certified to lie strictly inside the hull of a few extreme points
-// (a box shown, exactly, to be inside that hull) are dropped, so are repeats of a point (the
-// lowest index stays), and the rest are copied in a space-filling-curve (Morton) order, so that
+// (a box inside that hull, then its planes, each decided exactly) are dropped in one pass on the
+// threads, which also gives each survivor its space-filling-curve (Morton) key; repeats of a
+// point are dropped (the lowest index stays), and the rest are copied in Morton order, so that
 // the points above one face sit close in memory.
 //
 // Side tests: a rounded plane test with a proven error bound decides almost every case; only
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "hull_internal.hpp"
+#include "large_array.hpp"
 #include "parallel.hpp"
 #include "hullkit/predicates.hpp"
 
@@ -109,9 +111,9 @@ inline int side_of(PointSpan points, const Plane& plane, const double* p, double
 /// its edge k (corner k to corner k + 1); flat[3t + k] says whether that neighbour lies exactly in
 /// t's plane.
 struct Surface {
-    std::vector<Index> triangles;
-    std::vector<Index> twins;
-    std::vector<std::uint8_t> flat;
+    LargeArray<Index> triangles;
+    LargeArray<Index> twins;
+    LargeArray<std::uint8_t> flat;
 
     std::size_t size() const { return triangles.size() / 3; }
 };
@@ -138,7 +140,7 @@ public:
         release(next_);
         release(pending_);
         // Number the live faces consecutively.
-        std::vector<Index> number(faces_.size(), kNone);
+        LargeArray<Index> number(faces_.size(), kNone);
         Index live = 0;
         for (std::size_t f = 0; f < faces_.size(); ++f) {
             if (faces_[f].alive) number[f] = live++;
@@ -171,9 +173,9 @@ public:
 private:
     const double* at(Index i) const { return points_[i]; }
 
-    template <class T>
-    static void release(std::vector<T>& v) {
-        std::vector<T>().swap(v);
+    template <class Vector>
+    static void release(Vector& v) {
+        Vector().swap(v);
     }
 
     Plane plane_of(Index f) const {
@@ -339,9 +341,9 @@ private:
     PointSpan points_;
     const std::vector<Index>& original_;
     double extent_ = 0.0;
-    std::vector<Face> faces_;
+    LargeArray<Face> faces_;
     std::vector<Index> free_;
-    std::vector<Index> next_;     // outside-list links, one per point
+    LargeArray<Index> next_;      // outside-list links, one per point
     std::vector<Index> pending_;  // faces that got outside points
     Index stamp_ = 0;
     std::size_t last_hit_ = 0;  // the plane index that took the last assigned point
@@ -367,35 +369,43 @@ std::uint32_t spread_bits(std::uint32_t v) {
     return v;
 }
 
-/// Sorts `ids` along a Morton curve through the bounding box (10 bits per axis) and drops all
-/// but the lowest index of identical points. Only the memory order of the work changes, never a
-/// result: identical points have one key, and within a key the ids are sorted by coordinates.
-void spatial_order(PointSpan points, std::vector<Index>& ids) {
-    if (ids.size() <= 4096) {  // small: coordinate order is good enough
-        ids.erase(sort_dropping_repeats(points, ids.begin(), ids.end()), ids.end());
-        return;
-    }
-    double lo[3], scale[3];
-    for (int axis = 0; axis < 3; ++axis) {
-        double low = points[ids[0]][axis], high = low;
-        for (Index i : ids) {
-            low = std::min(low, points[i][axis]);
-            high = std::max(high, points[i][axis]);
+/// Morton (Z-order) keys over a box, 10 bits per axis: key << 32 | id, so that sorting by key
+/// puts points that are close in space close in memory.
+class MortonKeys {
+public:
+    MortonKeys(const double* lo, const double* hi) {
+        for (int axis = 0; axis < 3; ++axis) {
+            lo_[axis] = lo[axis];
+            scale_[axis] = hi[axis] > lo[axis] ? 1023.0 / (hi[axis] - lo[axis]) : 0.0;
         }
-        lo[axis] = low;
-        scale[axis] = high > low ? 1023.0 / (high - low) : 0.0;
     }
-    std::vector<std::uint64_t> keyed(ids.size());  // key << 32 | id
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-        const double* p = points[ids[k]];
+    std::uint64_t operator()(const double* p, Index id) const {
         std::uint32_t key = 0;
         for (int axis = 0; axis < 3; ++axis) {
-            key |= spread_bits(static_cast<std::uint32_t>((p[axis] - lo[axis]) * scale[axis])) << axis;
+            // In the box, (p - lo) * scale is in [0, 1023] up to rounding; the mask keeps it there.
+            key |= spread_bits(static_cast<std::uint32_t>((p[axis] - lo_[axis]) * scale_[axis])) << axis;
         }
-        keyed[k] = (std::uint64_t{key} << 32) | ids[k];
+        return std::uint64_t{key} << 32 | id;
+    }
+
+private:
+    double lo_[3], scale_[3];
+};
+
+/// The ids of `keyed` (Morton keys of points in their box, any order) along the curve, with all
+/// but the lowest index of identical points dropped. Only the memory order of the work changes,
+/// never a result: identical points have one key, and within a key the ids are sorted by
+/// coordinates.
+std::vector<Index> spatial_order(PointSpan points, LargeArray<std::uint64_t>& keyed) {
+    std::vector<Index> ids;
+    ids.reserve(keyed.size());
+    if (keyed.size() <= 4096) {  // small: coordinate order is good enough
+        for (std::uint64_t k : keyed) ids.push_back(static_cast<Index>(k));
+        ids.erase(sort_dropping_repeats(points, ids.begin(), ids.end()), ids.end());
+        return ids;
     }
     // LSD radix sort on the 30-bit key, two 15-bit digits.
-    std::vector<std::uint64_t> buffer(keyed.size());
+    LargeArray<std::uint64_t> buffer(keyed.size());
     for (int shift = 32; shift < 62; shift += 15) {
         std::vector<std::size_t> start(1u << 15, 0);
         for (std::uint64_t v : keyed) ++start[(v >> shift) & 0x7fff];
@@ -404,7 +414,6 @@ void spatial_order(PointSpan points, std::vector<Index>& ids) {
         for (std::uint64_t v : keyed) buffer[start[(v >> shift) & 0x7fff]++] = v;
         keyed.swap(buffer);
     }
-    ids.clear();
     for (std::size_t begin = 0; begin < keyed.size();) {
         std::size_t end = begin + 1;
         while (end < keyed.size() && keyed[end] >> 32 == keyed[begin] >> 32) ++end;
@@ -415,92 +424,129 @@ void spatial_order(PointSpan points, std::vector<Index>& ids) {
         }
         begin = end;
     }
+    return ids;
 }
 
-/// Indices of the points that may be on the hull: all but those inside a box that is certified
-/// (exactly) to lie strictly inside the hull of the points extreme in 14 directions.
-std::vector<Index> candidates(PointSpan points, const Simplex& simplex, unsigned threads = 1) {
-    const auto n = static_cast<Index>(points.count);
-    std::vector<Index> all;
-    const Index* extreme = simplex.extreme;
-    const double* lo = simplex.lo;
-    const double* hi = simplex.hi;
-    auto everything = [&] {
-        all.resize(n);
-        for (Index i = 0; i < n; ++i) all[i] = i;
-        return all;
-    };
-    if (n < 1024) return everything();  // not worth it
+/// A region certified, exactly, to lie strictly inside the hull of a cloud: the interior of the
+/// hull of its simplex and its extremes in 14 directions (the Akl-Toussaint heuristic). A point
+/// inside it is never a vertex of the hull. The test is a box inside that region first (six
+/// comparisons: most interior points of a ball or a cube), then the region's planes, each by the
+/// rounded height with its error bound and orient3d where that does not decide.
+class Interior {
+public:
+    /// False when the extremes have no volume (then nothing is certified inside).
+    bool build(PointSpan points, const Simplex& simplex) {
+        std::vector<Index> seeds(simplex.extreme, simplex.extreme + 14);
+        seeds.insert(seeds.end(), simplex.p, simplex.p + 4);
+        std::sort(seeds.begin(), seeds.end());
+        seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+        for (Index i : seeds) xyz_.insert(xyz_.end(), points[i], points[i] + 3);
+        const PointSpan local_points(xyz_.data(), seeds.size());
+        Simplex local;
+        local.dimension = 3;
+        for (int k = 0; k < 4; ++k)
+            local.p[k] = static_cast<Index>(std::lower_bound(seeds.begin(), seeds.end(), simplex.p[k]) - seeds.begin());
+        std::vector<Index> identity(seeds.size());
+        for (Index k = 0; k < identity.size(); ++k) identity[k] = k;
+        Quickhull small(local_points, identity);
+        Surface surface;
+        std::string ignored;
+        if (!small.run(local, surface, ignored)) return false;
+        // Every point of the cloud lies in its bounding box, so differs from a corner by at most
+        // the box's largest side per axis: the planes' error bounds hold for all of them.
+        const double extent = std::max({simplex.hi[0] - simplex.lo[0], simplex.hi[1] - simplex.lo[1], simplex.hi[2] - simplex.lo[2]});
+        for (std::size_t t = 0; t < surface.size(); ++t) {
+            const Index* v = &surface.triangles[3 * t];
+            planes_.push_back(plane_through(local_points, v[0], v[1], v[2], extent));
+        }
+        // The largest box about the bounding box's centre, shrunk in steps, whose corners are
+        // all strictly below every plane; none (an empty box) if even the smallest is not.
+        for (double shrink : {0.98, 0.9, 0.75, 0.55}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const double centre = 0.5 * (simplex.lo[axis] + simplex.hi[axis]);
+                const double half = 0.5 * (simplex.hi[axis] - simplex.lo[axis]) * shrink;
+                box_lo_[axis] = centre - half;
+                box_hi_[axis] = centre + half;
+            }
+            bool fits = true;
+            for (int corner = 0; corner < 8 && fits; ++corner) {
+                const double q[3] = {corner & 1 ? box_hi_[0] : box_lo_[0], corner & 2 ? box_hi_[1] : box_lo_[1],
+                                     corner & 4 ? box_hi_[2] : box_lo_[2]};
+                fits = below_every_plane(q);
+            }
+            if (fits) return true;
+        }
+        for (int axis = 0; axis < 3; ++axis) box_lo_[axis] = 1.0, box_hi_[axis] = 0.0;
+        return true;
+    }
 
-    // The hull of the extremes (and the simplex, which has volume), by this same quickhull.
-    std::vector<Index> seeds(extreme, extreme + 14);
-    seeds.insert(seeds.end(), simplex.p, simplex.p + 4);
-    std::sort(seeds.begin(), seeds.end());
-    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-    std::vector<double> seed_xyz;
-    for (Index i : seeds) seed_xyz.insert(seed_xyz.end(), points[i], points[i] + 3);
-    Simplex local;
-    local.dimension = 3;
-    for (int k = 0; k < 4; ++k)
-        local.p[k] = static_cast<Index>(std::lower_bound(seeds.begin(), seeds.end(), simplex.p[k]) - seeds.begin());
-    std::vector<Index> identity(seeds.size());
-    for (Index k = 0; k < identity.size(); ++k) identity[k] = k;
-    Quickhull small(PointSpan(seed_xyz.data(), seeds.size()), identity);
-    Surface surface;
-    std::string ignored;
-    if (!small.run(local, surface, ignored)) return everything();
-    const std::vector<Index>& triangles = surface.triangles;
+    /// Whether p lies strictly inside the region (exactly).
+    bool contains(const double* p) const {
+        return (p[0] >= box_lo_[0] && p[0] <= box_hi_[0] && p[1] >= box_lo_[1] && p[1] <= box_hi_[1] &&
+                p[2] >= box_lo_[2] && p[2] <= box_hi_[2]) ||
+               below_every_plane(p);
+    }
 
-    // The largest box about the bounding box's centre, shrunk in steps, whose corners are all
-    // strictly below every face of that hull.
-    auto inside = [&](const double* q) {
-        for (std::size_t t = 0; t < triangles.size(); t += 3) {
-            if (orient3d(&seed_xyz[3 * triangles[t]], &seed_xyz[3 * triangles[t + 1]], &seed_xyz[3 * triangles[t + 2]], q) >= 0)
-                return false;
+private:
+    bool below_every_plane(const double* p) const {
+        const PointSpan local_points(xyz_.data(), xyz_.size() / 3);
+        for (const Plane& plane : planes_) {
+            double h;
+            if (side_of(local_points, plane, p, &h) >= 0) return false;
         }
         return true;
-    };
-    for (double shrink : {0.98, 0.9, 0.75, 0.55}) {
-        double box_lo[3], box_hi[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            const double centre = 0.5 * (lo[axis] + hi[axis]);
-            const double half = 0.5 * (hi[axis] - lo[axis]) * shrink;
-            box_lo[axis] = centre - half;
-            box_hi[axis] = centre + half;
-        }
-        bool fits = true;
-        for (int corner = 0; corner < 8 && fits; ++corner) {
-            const double q[3] = {corner & 1 ? box_hi[0] : box_lo[0], corner & 2 ? box_hi[1] : box_lo[1],
-                                 corner & 4 ? box_hi[2] : box_lo[2]};
-            fits = inside(q);
-        }
-        if (!fits) continue;
-        // The closed box is inside the open hull: its points are interior, never on the hull.
-        // Blocks filtered on the threads, joined in order.
+    }
+
+    std::vector<double> xyz_;  // the seeds' coordinates
+    std::vector<Plane> planes_;
+    double box_lo_[3] = {1.0, 1.0, 1.0}, box_hi_[3] = {0.0, 0.0, 0.0};
+};
+
+/// The points that may be on the hull, as Morton keys over the bounding box (see MortonKeys):
+/// all but those inside a box that is certified (exactly) to lie strictly inside the hull of the
+/// points extreme in 14 directions. One pass over the points, in blocks on up to `threads`
+/// threads, both filters and keys them.
+LargeArray<std::uint64_t> candidates(PointSpan points, const Simplex& simplex, unsigned threads = 1) {
+    const auto n = static_cast<Index>(points.count);
+    const MortonKeys morton(simplex.lo, simplex.hi);
+    // Blocks keyed (those outside the box, when there is one) on the threads, joined in order.
+    auto keyed_outside = [&](const Interior* interior) {
         constexpr Index kBlock = Index{1} << 18;
         const std::size_t blocks = (n + kBlock - 1) / kBlock;
-        std::vector<std::vector<Index>> kept(blocks);
+        std::vector<std::vector<std::uint64_t>> kept(blocks);
         parallel_for(threads, blocks, [&](std::size_t block) {
             const Index first = static_cast<Index>(block) * kBlock, last = std::min(n, first + kBlock);
-            std::vector<Index>& out = kept[block];
+            std::vector<std::uint64_t>& out = kept[block];
+            if (interior == nullptr) {
+                out.resize(last - first);
+                for (Index i = first; i < last; ++i) out[i - first] = morton(points[i], i);
+                return;
+            }
             out.reserve(kBlock / 8);
             for (Index i = first; i < last; ++i) {
-                const double* p = points[i];
-                const bool in_box = p[0] >= box_lo[0] && p[0] <= box_hi[0] && p[1] >= box_lo[1] && p[1] <= box_hi[1] &&
-                                    p[2] >= box_lo[2] && p[2] <= box_hi[2];
-                if (!in_box) out.push_back(i);
+                if (!interior->contains(points[i])) out.push_back(morton(points[i], i));
             }
         });
         std::size_t total = 0;
         for (const auto& part : kept) total += part.size();
-        all.reserve(total);
-        for (const auto& part : kept) all.insert(all.end(), part.begin(), part.end());
-        for (Index s : simplex.p) {  // the starting simplex stays, even when inside the box
-            if (!std::binary_search(all.begin(), all.end(), s)) all.insert(std::lower_bound(all.begin(), all.end(), s), s);
+        LargeArray<std::uint64_t> all;
+        all.reserve(total + 4);
+        for (auto& part : kept) {
+            all.insert(all.end(), part.begin(), part.end());
+            std::vector<std::uint64_t>().swap(part);
         }
         return all;
+    };
+    if (n < 1024) return keyed_outside(nullptr);  // not worth it
+    Interior interior;
+    if (!interior.build(points, simplex)) return keyed_outside(nullptr);
+    LargeArray<std::uint64_t> all = keyed_outside(&interior);
+    for (int k = 0; k < 4; ++k) {  // the starting simplex stays, even when inside
+        const Index s = simplex.p[k];
+        if (interior.contains(points[s]) && std::find(simplex.p, simplex.p + k, s) == simplex.p + k)
+            all.push_back(morton(points[s], s));
     }
-    return everything();
+    return all;
 }
 
 /// The edge-adjacent pairs of a surface's triangles that lie in one plane, each pair once.
@@ -516,12 +562,18 @@ std::vector<CoplanarPair> coplanar_pairs(const Surface& surface) {
 /// Quickhull of a cloud with volume: its candidates (interior points culled, repeats dropped)
 /// copied in spatial order into *xyz, ids[k] being the index in `points` of copy k, and the hull
 /// as a surface over the copy.
-bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>& ids, std::vector<double>& xyz,
+bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>& ids, LargeArray<double>& xyz,
                    Surface& surface, std::string& error, unsigned threads = 1) {
-    ids = candidates(points, simplex, threads);
-    spatial_order(points, ids);
+    {
+        LargeArray<std::uint64_t> keyed = candidates(points, simplex, threads);
+        ids = spatial_order(points, keyed);
+    }
     xyz.resize(3 * ids.size());
-    for (std::size_t k = 0; k < ids.size(); ++k) std::copy(points[ids[k]], points[ids[k]] + 3, &xyz[3 * k]);
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    parallel_for(threads, (ids.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+        const std::size_t end = std::min(ids.size(), (block + 1) * kBlock);
+        for (std::size_t k = block * kBlock; k < end; ++k) std::copy(points[ids[k]], points[ids[k]] + 3, &xyz[3 * k]);
+    });
     Simplex local;
     local.dimension = 3;
     for (std::size_t k = 0; k < ids.size(); ++k) {
@@ -535,15 +587,18 @@ bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>&
 
 }  // namespace
 
-std::size_t culling_survivors(PointSpan points) {
-    const Simplex simplex = find_simplex(points);
-    return simplex.dimension < 3 ? points.count : candidates(points, simplex).size();
+double culling_kept_fraction(PointSpan points, const Simplex& simplex, PointSpan sample) {
+    Interior interior;
+    if (simplex.dimension < 3 || sample.count == 0 || !interior.build(points, simplex)) return 1.0;
+    std::size_t outside = 0;
+    for (std::size_t i = 0; i < sample.count; ++i) outside += !interior.contains(sample[i]);
+    return static_cast<double>(outside) / static_cast<double>(sample.count);
 }
 
 bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, double* volume, double* area,
                      std::string& error, unsigned threads) {
     std::vector<Index> ids;
-    std::vector<double> xyz;
+    LargeArray<double> xyz;
     Surface surface;
     if (!run_quickhull(points, simplex, ids, xyz, surface, error, threads)) return false;
     const PointSpan local_points(xyz.data(), ids.size());
@@ -677,97 +732,96 @@ std::vector<Index> corners_of(const Surface& surface, std::size_t point_count,
     return corners;
 }
 
-/// The vertices of a convex surface and their neighbours (compressed rows), for finding the
-/// vertex highest above a plane by climbing.
+/// Climbs a closed convex surface towards the vertex highest above a plane. A position is a
+/// half-edge out of the current vertex; the vertex's neighbours are found by turning about it
+/// through the twins, so nothing is built: asking costs only the vertices visited.
 class Climber {
 public:
-    Climber(PointSpan points, const Surface& surface) : points_(points), row_of_(points.count, kNone) {
-        Index rows = 0;
-        for (Index v : surface.triangles) {
-            if (row_of_[v] == kNone) row_of_[v] = rows++, vertex_.push_back(v);
-        }
-        start_.assign(rows + 1, 0);
-        for (Index v : surface.triangles) ++start_[row_of_[v] + 1];  // one half-edge out of v per corner
-        for (Index r = 0; r < rows; ++r) start_[r + 1] += start_[r];
-        neighbour_.resize(surface.triangles.size());
-        std::vector<Index> fill(start_.begin(), start_.end() - 1);
-        for (std::size_t h = 0; h < surface.triangles.size(); ++h) {
-            const Index from = surface.triangles[h], to = surface.triangles[3 * (h / 3) + (h + 1) % 3];
-            neighbour_[fill[row_of_[from]]++] = to;
-        }
-    }
+    Climber(PointSpan points, const Surface& surface) : points_(points), surface_(surface) {}
 
-    Index any_vertex() const { return vertex_.front(); }
+    /// A place to start: a half-edge out of some vertex.
+    static Index start() { return 0; }
+    /// The vertex a half-edge leaves.
+    Index vertex(Index h) const { return surface_.triangles[h]; }
 
     enum class Verdict { Above, NoneAbove, Unsure };
 
-    /// Whether some vertex lies strictly above `plane` (exactly), starting the climb at *from
-    /// (a vertex; updated to where the climb ended, a good start for a nearby plane). Unsure
-    /// when rounding leaves it open: then the caller asks exhaustively.
+    /// Whether some vertex lies strictly above `plane` (exactly), starting the climb at the
+    /// vertex *from leaves (updated to a half-edge out of where the climb ended, a good start for
+    /// a nearby plane). Unsure when rounding leaves it open: then the caller asks exhaustively.
     Verdict any_above(const Plane& plane, Index* from) const {
-        Index v = *from;
+        Index h = *from;
         bool certain = false;
         for (;;) {
             // Move to the neighbour certainly highest along the rounded normal n; stop where no
             // neighbour is certainly higher (the rounding of n . (w - v) is below 8u of its
             // permanent, so `slack` = 2^-50 of it is safe).
-            const double* p = points_[v];
+            const double* p = points_[vertex(h)];
             Index best = kNone;
             double best_rise = 0.0;
             bool unsure = false;
-            for (Index k = start_[row_of_[v]]; k < start_[row_of_[v] + 1]; ++k) {
-                const double* q = points_[neighbour_[k]];
+            Index e = h;
+            do {
+                const double* q = points_[head(e)];
                 const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
                 const double rise = plane.nx * dx + plane.ny * dy + plane.nz * dz;
                 const double slack = 0x1p-50 * (std::fabs(plane.nx * dx) + std::fabs(plane.ny * dy) + std::fabs(plane.nz * dz));
                 if (rise > slack) {
-                    if (rise > best_rise) best_rise = rise, best = neighbour_[k];
+                    if (rise > best_rise) best_rise = rise, best = e;
                 } else if (rise >= -slack) {
                     unsure = true;
                 }
-            }
+                e = next_out(e);
+            } while (e != h);
             if (best == kNone) {
                 certain = !unsure;
                 break;
             }
-            v = best;
+            h = surface_.twins[best];  // out of the higher neighbour
         }
-        *from = v;
-        double h;
-        const int s = side_of(points_, plane, points_[v], &h);
+        *from = h;
+        const double* top = points_[vertex(h)];
+        double height_of_top;
+        const int s = side_of(points_, plane, top, &height_of_top);
         if (s > 0) return Verdict::Above;
         if (s == 0) {
-            // v is on the plane: it is the highest vertex exactly when no neighbour is above.
-            for (Index k = start_[row_of_[v]]; k < start_[row_of_[v] + 1]; ++k) {
-                if (side_of(points_, plane, points_[neighbour_[k]], &h) > 0) return Verdict::Above;
-            }
+            // The vertex is on the plane: it is the highest exactly when no neighbour is above.
+            Index e = h;
+            do {
+                double ignored;
+                if (side_of(points_, plane, points_[head(e)], &ignored) > 0) return Verdict::Above;
+                e = next_out(e);
+            } while (e != h);
             return Verdict::NoneAbove;
         }
-        // v is the highest vertex along the rounded normal; below the plane by more than the
+        // The vertex is the highest along the rounded normal; below the plane by more than the
         // plane's bound, which covers both the rounding of its height and the rounded normal's
         // error times the extent, nothing is above the exact plane.
-        if (certain && height(plane, points_[v]) < -plane.bound) return Verdict::NoneAbove;
+        if (certain && height(plane, top) < -plane.bound) return Verdict::NoneAbove;
         return Verdict::Unsure;
     }
 
 private:
+    /// The vertex a half-edge enters.
+    Index head(Index h) const { return surface_.triangles[h - h % 3 + (h % 3 + 1) % 3]; }
+    /// The next half-edge out of the same vertex, turning about it: the twin of the half-edge
+    /// that enters the vertex in h's triangle.
+    Index next_out(Index h) const { return surface_.twins[h - h % 3 + (h % 3 + 2) % 3]; }
+
     PointSpan points_;
-    std::vector<Index> row_of_;  // point index -> row, kNone for points not on the surface
-    std::vector<Index> vertex_;
-    std::vector<Index> start_;
-    std::vector<Index> neighbour_;
+    const Surface& surface_;
 };
 
 /// The hull of the points `members` (indices into `points`, ascending) as a surface in those
 /// indices, on the calling thread. False when they have no volume.
 bool member_surface(PointSpan points, const std::vector<Index>& members, Surface& surface) {
-    std::vector<double> xyz(3 * members.size());
+    LargeArray<double> xyz(3 * members.size());
     for (std::size_t k = 0; k < members.size(); ++k) std::copy(points[members[k]], points[members[k]] + 3, &xyz[3 * k]);
     const PointSpan local(xyz.data(), members.size());
     const Simplex simplex = find_simplex(local);
     if (simplex.dimension < 3) return false;
     std::vector<Index> ids;
-    std::vector<double> copy;
+    LargeArray<double> copy;
     std::string error;
     if (!run_quickhull(local, simplex, ids, copy, surface, error)) return false;
     for (Index& v : surface.triangles) v = members[ids[v]];
@@ -799,7 +853,7 @@ bool mark_dirty(PointSpan points, const Surface& surface, const Surface& other, 
     // A first dirty triangle: one that a vertex of the other hull is above. Walk towards it,
     // each step to the unvisited neighbour with the vertex highest above it (rounded heights
     // choose, the exact side decides); if the walk gets stuck, look at every triangle.
-    const Index probe = climber.any_vertex();
+    const Index probe = climber.vertex(Climber::start());
     std::vector<std::uint8_t> seen(count, 0);
     std::size_t seed = count;
     for (std::size_t t = 0, steps = 0; steps < 4096 && seed == count; ++steps) {
@@ -825,7 +879,7 @@ bool mark_dirty(PointSpan points, const Surface& surface, const Surface& other, 
     }
     if (seed == count) return false;
     std::fill(seen.begin(), seen.end(), 0);
-    std::vector<std::pair<std::size_t, Index>> queue{{seed, probe}};  // a dirty triangle, where to climb from
+    std::vector<std::pair<std::size_t, Index>> queue{{seed, Climber::start()}};  // a dirty triangle, where to climb from
     seen[seed] = 1;
     dirty[seed] = 1;
     for (std::size_t q = 0; q < queue.size(); ++q) {

@@ -56,7 +56,7 @@ struct HullOptions {
     /// enough to gain from them (tens of thousands of points); 1 keeps all work on the calling
     /// thread. The result is the same bits for every value, because the answer depends only on
     /// the points (see Hull's canonical order): a cloud with few hull vertices whose interior
-    /// culling keeps most points (a ball) is cut into chunks hulled on the threads, then the hull
+    /// culling keeps many points (a ball) is cut into chunks hulled on the threads, then the hull
     /// of the chunks' vertices is taken; a cloud mostly on its hull (a sphere) is split in halves
     /// hulled on their own threads and joined along the seam; otherwise one quickhull runs, its
     /// passes over all points split in blocks. Gift wrapping runs on the calling thread; so does

@@ -12,6 +12,7 @@
 
 #include "hullkit/mesh_read.hpp"
 
+#include "../large_array.hpp"
 #include "../parallel.hpp"
 #include "mesh_read_internal.hpp"
 
@@ -382,6 +383,9 @@ struct PointReader::Impl {
         // appending batch after batch linear.
         const std::size_t most = 3 * static_cast<std::size_t>(std::min<std::uint64_t>(limit, seen / 6 + 1));
         if (out->capacity() - out_start < most) out->reserve(std::max(out_start + most, 2 * out->capacity()));
+        // The untouched room on huge pages where the system has them: a first touch of each 4 KiB
+        // page took as long as parsing the text that fills it (see large_array.hpp).
+        detail::advise_huge_pages(out->data() + out->size(), (out->capacity() - out->size()) * sizeof(double));
         BatchState state;
         std::size_t wanted = out->size();
         if (!direct) {
