@@ -66,15 +66,16 @@ function handler(root) {
       send(res, 405, 'Method Not Allowed\n', { Allow: 'GET, HEAD' });
       return;
     }
-    let pathname;
+    let pathname, search;
     try {
-      pathname = new URL(req.url, 'http://localhost').pathname;
+      ({ pathname, search } = new URL(req.url, 'http://localhost'));
     } catch {
       send(res, 400, 'Bad Request\n');
       return;
     }
     if (pathname === '/') {
-      send(res, 302, 'Found: /web/\n', { Location: '/web/' });
+      // The query stays: a hand-written link such as /?view=delaunay keeps its view.
+      send(res, 302, `Found: /web/${search}\n`, { Location: `/web/${search}` });
       return;
     }
     const filePath = resolveInsideRoot(root, pathname);
@@ -90,7 +91,6 @@ function handler(root) {
       if (stat.isDirectory()) {
         if (!pathname.endsWith('/')) {
           // Redirect so that relative URLs inside index.html resolve correctly.
-          const search = new URL(req.url, 'http://localhost').search;
           send(res, 301, 'Moved Permanently\n', { Location: pathname + '/' + search });
           return;
         }
