@@ -8,6 +8,9 @@
 #   fuzz_off_mesh  read_off_mesh (the OFF reader of `hullkit verify`)
 #   fuzz_mesh      every mesh reader (OBJ, OFF, PLY ascii/binary, STL ascii/binary) and read_mesh's
 #                  format detection; meshes must be consistent and read back from OFF unchanged
+#   fuzz_gltf      read_gltf_mesh (glTF 2.0 .glb / .gltf through tinygltf; every buffer URI gets the
+#                  input itself); meshes must be consistent and read back from write_glb's .glb
+#                  with float-rounded positions; read_mesh must agree
 #   fuzz_points2d  parse_points_2d (xy, xyz, rbox 2D); points must be on the lines they name
 #   fuzz_scene     parse_scene (route scene JSON; bytes after the first NUL are the mesh a "mesh"
 #                  entry loads, in memory); scenes must write back and read again unchanged

@@ -7,15 +7,20 @@ cd "$(dirname "$0")/.."
 
 debian_packages=(
   cmake g++ make          # native build
+  pkg-config              # scripts/consumer_test.sh checks the installed hullkit.pc with it
   emscripten              # the wasm build (emcc, emcmake)
   catch2 libgmp-dev       # C++ tests (GMP: exact rational checks)
   libglm-dev              # vector math
   nlohmann-json3-dev      # scene JSON (route checking)
   libcli11-dev            # command-line parsing
   libfast-float-dev       # number parsing in the readers
+  libtinygltf-dev         # glTF 2.0 (.gltf, .glb) reading and writing, header-only (images off)
   clang                   # libFuzzer (scripts/fuzz.sh, run briefly by npm test)
   qhull-bin               # rbox/qconvex: test inputs and cross-checks
   chromium                # browser tests (driven by playwright-core)
+  # The Python package (python/, built by pip from the C++ sources; scripts/python_test.sh):
+  python3-dev python3-venv python3-numpy python3-pybind11 pybind11-dev python3-setuptools
+  python3-pip python3-pytest python3-scipy python3-dask python3-distributed
 )
 
 if [ "${1:-}" = bench ]; then

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs every suite against what `scripts/build.sh native wasm asan tsan` built: ctest (release and
 # sanitized), the threaded tests under ThreadSanitizer, a short libFuzzer run of every fuzz
-# target (HULLKIT_FUZZ_SECONDS each, default 20),
-# node:test (the wasm module), and the browser tests of the page.
+# target (HULLKIT_FUZZ_SECONDS each, default 20), node:test (the wasm module), the TypeScript
+# type test, the installed CMake package's consumers, the Python package's pytest suite (with
+# Dask), and the browser tests of the page.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 step_started=$SECONDS
@@ -32,6 +33,18 @@ took "fuzzing"
 echo "== JavaScript tests (node:test)"
 node --test tests/js/
 took "node:test"
+
+echo "== TypeScript types of the npm package (scripts/type_test.sh)"
+bash scripts/type_test.sh
+took "type test"
+
+echo "== The C++ library installed as a CMake package, and its consumers (scripts/consumer_test.sh)"
+bash scripts/consumer_test.sh
+took "consumer test"
+
+echo "== Python package: pip install into a fresh virtual environment, then pytest and the Dask tests"
+bash scripts/python_test.sh
+took "python"
 
 echo "== Browser tests (node:test + playwright-core + chromium)"
 # The page and view tests two at a time; the heavy-work test (a million points, whose main-thread

@@ -260,7 +260,7 @@ TEST_CASE("cli: usage problems exit 2 with one line") {
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--algorithm=nope"})) ==
           "hullkit: unknown algorithm \"nope\" (known: quickhull, giftwrap)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--format", "ply"})) ==
-          "hullkit: unknown format \"ply\" (known: off, obj, json, xyz)");
+          "hullkit: unknown format \"ply\" (known: off, obj, json, xyz, glb)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "-o"})) == "hullkit: option -o needs a value");
     // Several INPUTs are one cloud: the tetrahedron twice is the tetrahedron (repeats: lowest index).
     CHECK(run_cli(dir, {"hull", tetra, tetra}).out == run_cli(dir, {"hull", tetra}).out);
@@ -670,4 +670,34 @@ TEST_CASE("cli: PLY point clouds and STL files give the hull of their vertices, 
     write_text(dir.file("empty.ply"), "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
     CHECK(single_error_line(run_cli(dir, {"hull", dir.file("empty.ply")})) ==
           "hullkit: " + dir.file("empty.ply") + ": the PLY header declares no \"vertex\" element");
+}
+
+TEST_CASE("cli: OBJ records that are not OBJ's are skipped with a warning line per kind, exit 0") {
+    TempDir dir("hullkit-cli");
+    // FCL's test meshes start with a "V F" count line.
+    const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.1 0.1 0.1\nf 1 2 3\n";
+    write_text(dir.file("clean.obj"), body);
+    write_text(dir.file("fcl.obj"), "5 1\n" + body + "bogus\nbogus\n");
+    RunResult clean = run_cli(dir, {"hull", dir.file("clean.obj")});
+    REQUIRE(clean.exit_code == 0);
+    CHECK(clean.err.empty());
+    RunResult warned = run_cli(dir, {"hull", dir.file("fcl.obj")});
+    INFO(warned.err);
+    CHECK(warned.exit_code == 0);
+    CHECK(warned.out == clean.out);
+    CHECK(warned.err_lines() == std::vector<std::string>{
+                                    "hullkit: warning: " + dir.file("fcl.obj") + ": skipped 1 unknown OBJ record \"5\" (first at line 1)",
+                                    "hullkit: warning: " + dir.file("fcl.obj") + ": skipped 2 unknown OBJ records \"bogus\" (first at line 8)"});
+    // --quiet: no warnings either.
+    RunResult quiet = run_cli(dir, {"hull", dir.file("fcl.obj"), "--quiet"});
+    CHECK(quiet.exit_code == 0);
+    CHECK(quiet.err.empty());
+    // A malformed vertex is still an error.
+    write_text(dir.file("bad.obj"), "5 1\nv 0 0\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", dir.file("bad.obj")})) ==
+          "hullkit: " + dir.file("bad.obj") + ":2: expected \"v x y z [w]\", got 2 numbers");
+    // The Delaunay command warns the same way.
+    RunResult tri = run_cli(dir, {"delaunay", dir.file("fcl.obj"), "-o", dir.file("t.off")});
+    CHECK(tri.exit_code == 0);
+    CHECK(tri.err_lines().size() == 2);
 }

@@ -248,10 +248,39 @@ TEST_CASE("mesh_io: OBJ errors") {
     CHECK(error_of("v 1 2 3\nv 1 q 3\n", "m.obj") == "m.obj:2: coordinate \"q\" is not a number");
     CHECK(error_of("v 1 2 3\nv 1 2 3 w\n", "m.obj") ==
           "m.obj:2: vertex value \"w\" is not a number");
-    // A bare point line would otherwise vanish from the hull.
-    CHECK(error_of("o thing\nv 1 2 3\n4 5 6\n", "m.obj") ==
-          "m.obj:3: line does not start with an OBJ keyword (found \"4\")");
     CHECK(error_of("o empty\nf 1 2 3\n", "m.obj") == "m.obj: no points found");
+    // Unknown records are skipped (with a warning), but not a broken vertex after them.
+    CHECK(error_of("648 1292\nv 1 2 3\nv 1 2\n", "fcl.obj") == "fcl.obj:3: expected \"v x y z [w]\", got 2 numbers");
+}
+
+TEST_CASE("mesh_io: OBJ records that are not OBJ's are skipped with one warning per kind") {
+    const std::string plain = "v 1 2 3\nv 4 5 6\nvt 0 0\nf 1 2 1\nv 7 8 9\n";
+    const PointsResult clean = parse_points(plain, "m.obj");
+    REQUIRE(clean.ok());
+    CHECK(clean.warnings.empty());
+    // FCL's meshes start with a "V F" count line; a bare point line and a made-up keyword too.
+    const std::string text = "648 1292\n# comment\nv 1 2 3\nbogus a\nv 4 5 6\nvt 0 0\n1 2 3\nf 1 2 1\n"
+                             "bogus b\nv 7 8 9\nbogus c\n";
+    for (unsigned threads : {1u, 2u, 3u}) {
+        const PointsResult result = parse_points(text, "fcl.obj", threads);
+        INFO(result.error);
+        REQUIRE(result.ok());
+        CHECK(result.xyz == clean.xyz);
+        CHECK(result.warnings == std::vector<std::string>{
+                                     "skipped 1 unknown OBJ record \"648\" (first at line 1)",
+                                     "skipped 3 unknown OBJ records \"bogus\" (first at line 4)",
+                                     "skipped 1 unknown OBJ record \"1\" (first at line 7)"});
+    }
+    // By content alone "648 1292" is no OBJ keyword: the .obj name decides.
+    CHECK(parse_points(text, "<stdin>").error == "<stdin>:1: expected 3 coordinates, got 2");
+    // More kinds than are named: the rest are counted together.
+    std::string many = "v 0 0 0\n";
+    for (int k = 0; k < 12; ++k) many += "x" + std::to_string(k) + "\n";
+    const PointsResult lumped = parse_points(many, "many.obj");
+    REQUIRE(lumped.ok());
+    REQUIRE(lumped.warnings.size() == 8);
+    CHECK(lumped.warnings[0] == "skipped 1 unknown OBJ record \"x0\" (first at line 2)");
+    CHECK(lumped.warnings[7] == "skipped 5 other unknown OBJ records (first at line 9)");
 }
 
 // ---- OFF ----

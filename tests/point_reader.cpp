@@ -44,6 +44,7 @@ const char* via_name(Via via) {
 struct Outcome {
     std::vector<double> xyz;
     std::string error;
+    std::vector<std::string> warnings;
 };
 
 /// Reads every batch, checking the batch contract on the way: at least one whole point per batch,
@@ -65,6 +66,7 @@ Outcome read_all(PointReader& reader, std::uint64_t size) {
     CHECK(reader.bytes_read() <= size);
     CHECK_FALSE(reader.next(&batch));  // the end stays the end
     out.error = reader.error();
+    out.warnings = reader.warnings();
     CHECK(out.error.find('\n') == std::string::npos);
     return out;
 }
@@ -138,6 +140,7 @@ void check_agrees(const std::string& bytes, const std::string& source, bool text
                 }
                 if (expected.ok()) {
                     CHECK(same_bits(got.xyz, expected.xyz));
+                    CHECK(got.warnings == expected.warnings);  // whatever the pieces, the same tally
                 } else if (before_error) {
                     CHECK(is_prefix(got.xyz, *before_error));
                 }
@@ -312,6 +315,25 @@ TEST_CASE("point_reader: OBJ vertices, other records skipped", "[threads]") {
     check_agrees(obj, "m.obj", false, nullptr, {Via::Stream});
     check_agrees(obj + "4 5 6\n", "m.obj", true, &lines.xyz);
     check_agrees(obj + "v 1 2\n", "m.obj", true, &lines.xyz);
+    // Unknown records all through the file, in many pieces: one warning per kind, first lines and
+    // counts as one pass finds them.
+    std::string unknown = "648 1292\n";
+    at = 0;
+    for (std::size_t i = 0; i < 300; ++i) {
+        const std::size_t end = lines.text.find('\n', at);
+        unknown += "v " + lines.text.substr(at, end - at) + "\n";
+        if (i % 7 == 3) unknown += "bogus record\n";
+        if (i % 50 == 9) unknown += "zz\n";
+        at = end + 1;
+    }
+    const PointsResult tallied = hullkit::parse_points(unknown, "fcl.obj", 1);
+    REQUIRE(tallied.xyz == lines.xyz);
+    REQUIRE(tallied.warnings.size() == 3);
+    CHECK(tallied.warnings[0] == "skipped 1 unknown OBJ record \"648\" (first at line 1)");
+    CHECK(tallied.warnings[1] == "skipped 43 unknown OBJ records \"bogus\" (first at line 6)");
+    CHECK(tallied.warnings[2] == "skipped 6 unknown OBJ records \"zz\" (first at line 13)");
+    check_agrees(unknown, "fcl.obj", true);
+    check_agrees(unknown, "fcl.obj", false);
     check_agrees("o empty\nf 1 2 3\n", "m.obj", true);
 }
 

@@ -101,18 +101,22 @@ export interface Hullkit {
   readonly traceLimits: Readonly<Record<GiftwrapScan | 'delaunay', number>>;
   /**
    * The 3D points in a file, read by the C++ readers `hullkit hull` uses: "x y z" text, qhull/rbox
-   * text, OBJ and OFF (their vertices, faces not needed), and PLY and STL (ASCII or binary: the
-   * mesh's vertices; a PLY point cloud without faces too; STL corners with equal coordinates
-   * merged). A ".ply"/".stl" name picks the mesh
+   * text, OBJ and OFF (their vertices, faces not needed), and PLY, STL (ASCII or binary) and glTF
+   * (.glb, .gltf with data: URIs) as {@link Hullkit.readMesh} reads them (the mesh's vertices; a PLY
+   * point cloud without faces too; STL corners with equal coordinates merged). A
+   * ".ply"/".stl"/".gltf"/".glb" name picks the mesh
    * reader, ".obj"/".off" the point reader; otherwise the content decides (PLY, STL, else text).
    * Returns x0 y0 z0 x1 y1 z1 ...
    *
    * @param bytes the file's contents
    * @param name the file name: picks the format and starts every error message (default "<bytes>")
+   * Records an OBJ file should not hold (FCL's "648 1292" count line, a misspelt keyword) are
+   * skipped, and said so in the result's `warnings`.
+   *
    * @throws {HullkitError} with the reader's message, "name:LINE: what is wrong" (then `line` is
    *   set) or "name: what is wrong" (empty file, truncated binary STL, ...).
    */
-  readPoints(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): Float64Array;
+  readPoints(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): PointsRead;
   /**
    * 2D points from a file, x0 y0 x1 y1 ...: text as `hullkit delaunay` reads it ("x y" or
    * "x y z" lines, z ignored; qhull/rbox text of dimension 2 or 3); a mesh file (OBJ, OFF, PLY,
@@ -120,16 +124,30 @@ export interface Hullkit {
    *
    * @throws {HullkitError} as {@link Hullkit.readPoints}.
    */
-  readPoints2d(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): Float64Array;
+  readPoints2d(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): PointsRead;
   /**
-   * A triangle mesh from OBJ, OFF, PLY (ascii or binary) or STL (ASCII or binary), read as the
-   * route checker reads obstacle and traverse meshes (format from the content, then the name's
-   * extension). Faces with more than 3 corners are fanned.
+   * A triangle mesh from OBJ, OFF, PLY (ascii or binary), STL (ASCII or binary) or glTF 2.0 (.glb,
+   * or .gltf with its buffers embedded as data: URIs; a .gltf naming external .bin files is refused
+   * here — use a .glb), read as the route checker reads obstacle and traverse meshes (format from
+   * the content, then the name's extension). Faces with more than 3 corners are fanned; a glTF
+   * gives the triangle primitives of its default scene with the node transforms applied.
    *
    * @throws {HullkitError} with the reader's message naming the line (`line`) or binary record, or
    *   the problem (no triangles, truncated binary STL, not a mesh format).
    */
   readMesh(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): MeshData;
+  /**
+   * The hull as binary glTF 2.0 (.glb) bytes, as `hullkit hull -o hull.glb` writes them: one mesh,
+   * the hull's vertices (in the order of `result.vertices`) as float32 positions — rounded to the
+   * nearest float, so not exact, unlike OBJ/OFF text — and its triangles as uint32 indices into
+   * them. {@link Hullkit.readMesh} reads it back.
+   *
+   * @param xyz the points the hull was computed from
+   * @param result what {@link Hullkit.hull} returned for them (its `vertices` and `triangles`)
+   * @throws {HullkitError} for a coordinate beyond float32's range (about 3.4e38), or a result that
+   *   does not fit the points.
+   */
+  writeGlb(xyz: Float64Array | ArrayLike<number>, result: { vertices: Uint32Array | ArrayLike<number>; triangles: Uint32Array | ArrayLike<number> }): Uint8Array;
   /**
    * The Delaunay triangulation of the 2D points `xy`, a flat array x0 y0 x1 y1 ... (a Float64Array
    * is used as it is; other array-likes of numbers are converted): the lower convex hull of the
@@ -253,8 +271,17 @@ export interface GiftwrapTrace {
   dimension: 3 | 2 | 1 | 0 | -1;
 }
 
+/**
+ * Points read from a file (x y z, or x y for readPoints2d), with what the reader skipped and read
+ * on past: one line per kind, without the file name, e.g.
+ * `skipped 1 unknown OBJ record "648" (first at line 1)`; empty when nothing was skipped.
+ */
+export type PointsRead = Float64Array & { readonly warnings: string[] };
+
 /** A triangle mesh read from a file. */
 export interface MeshData {
+  /** What the reader skipped (as {@link PointsRead.warnings}); empty when nothing was. */
+  warnings?: string[];
   /** x0 y0 z0 x1 y1 z1 ... */
   vertices: Float64Array;
   /** 3 vertex indices per triangle, in the file's orientation. */
@@ -459,8 +486,29 @@ export interface RouteReport {
   seconds: number;
 }
 
-/** See {@link Hullkit.RouteChecker}. */
-export interface RouteChecker {
+/**
+ * `Symbol.dispose`'s type where the consumer's TypeScript `lib` declares it (esnext.disposable,
+ * esnext, or @types/node), otherwise `never`: these types then compile with or without that lib,
+ * and add nothing to the global `SymbolConstructor`.
+ */
+type DisposeSymbol = SymbolConstructor extends { readonly dispose: infer S extends symbol } ? S : never;
+
+/**
+ * `{ [Symbol.dispose](): void }` (the lib's `Disposable`, so `using` accepts the object) where the
+ * lib declares `Symbol.dispose`; `{}` where it does not.
+ */
+type DisposableIfSupported = { [K in DisposeSymbol]: () => void };
+
+// With an export list in the file, only declarations marked `export` are the module's: the two
+// helpers above stay private (a .d.ts without one exports every top-level declaration).
+export {};
+
+/**
+ * See {@link Hullkit.RouteChecker}. Where the TypeScript lib has `Symbol.dispose` (TypeScript 5.2 or
+ * later with `lib` esnext or esnext.disposable), a checker is `Disposable`:
+ * `using checker = new hullkit.RouteChecker(scene)` deletes it at the end of the block.
+ */
+export interface RouteChecker extends DisposableIfSupported {
   /**
    * Checks `route` ([[x, y, z], ...] or a flat Float64Array; the scene's own route when omitted)
    * against the prepared scene.
@@ -473,11 +521,12 @@ export interface RouteChecker {
   readonly deleted: boolean;
   /** Frees the WebAssembly memory; later calls throw. Harmless twice. */
   delete(): void;
-  [Symbol.dispose](): void;
 }
 
 /** What hullkit throws for bad input: the message says what is wrong and where. */
 export class HullkitError extends Error {
+  /** `pointIndex` is kept when it is 0 or more. */
+  constructor(message: string, options?: { pointIndex?: number });
   name: 'HullkitError';
   /** Index of the point to blame, when there is one. */
   pointIndex?: number;

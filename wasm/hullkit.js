@@ -37,6 +37,7 @@ export default async function createHullkit() {
     readPoints: (bytes, name) => readPoints(core, bytes, name),
     readPoints2d: (bytes, name) => readPoints2d(core, bytes, name),
     readMesh: (bytes, name) => readMesh(core, bytes, name),
+    writeGlb: (xyz, result) => writeGlb(core, xyz, result),
     delaunay: (xy, options) => delaunay(core, xy, options),
     find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
@@ -229,15 +230,47 @@ function readFile(core, bytes, name, where, read, take) {
   }
 }
 
+/**
+ * The points a reader returned, as a Float64Array carrying the reader's `warnings` (what it skipped
+ * and read on past: `skipped 1 unknown OBJ record "648" (first at line 1)`), an empty array if none.
+ */
+function pointsWithWarnings(r) {
+  const points = r.view().slice();
+  Object.defineProperty(points, 'warnings', { value: r.warnings(), enumerable: false });
+  return points;
+}
+
 function readPoints(core, bytes, name) {
-  return readFile(core, bytes, name, 'readPoints', (a, n, s) => core.readPointsFromHeap(a, n, s), (r) => r.view().slice());
+  return readFile(core, bytes, name, 'readPoints', (a, n, s) => core.readPointsFromHeap(a, n, s), pointsWithWarnings);
 }
 
 function readPoints2d(core, bytes, name) {
-  return readFile(core, bytes, name, 'readPoints2d', (a, n, s) => core.readPoints2dFromHeap(a, n, s), (r) => r.view().slice());
+  return readFile(core, bytes, name, 'readPoints2d', (a, n, s) => core.readPoints2dFromHeap(a, n, s), pointsWithWarnings);
 }
 
 function readMesh(core, bytes, name) {
   return readFile(core, bytes, name, 'readMesh', (a, n, s) => core.readMeshFromHeap(a, n, s),
-    (r) => ({ vertices: r.verticesView().slice(), triangles: r.trianglesView().slice() }));
+    (r) => ({ vertices: r.verticesView().slice(), triangles: r.trianglesView().slice(), warnings: r.warnings() }));
+}
+
+/**
+ * The hull as binary glTF (.glb) bytes, as `hullkit hull -o hull.glb` writes them: the hull's
+ * vertices as float32 positions (rounded to the nearest float) and its triangles as uint32 indices.
+ */
+function writeGlb(core, xyz, result) {
+  const points = toFloat64(xyz, 'writeGlb');
+  if (result === null || typeof result !== 'object') throw new TypeError('writeGlb: the hull must be the object hull() returned');
+  const vertices = toUint32(result.vertices, 'writeGlb: hull.vertices');
+  const triangles = toUint32(result.triangles, 'writeGlb: hull.triangles');
+  const blocks = [];
+  try {
+    blocks.push(copyIn(core, points, 'writeGlb'));
+    blocks.push(copyIn(core, vertices, 'writeGlb'));
+    blocks.push(copyIn(core, triangles, 'writeGlb'));
+    const out = core.writeGlbFromHeap(blocks[0], points.length / 3, blocks[1], vertices.length, blocks[2], triangles.length);
+    if (out.error) throw new HullkitError(`writeGlb: ${out.error}`);
+    return out.bytes;
+  } finally {
+    for (const address of blocks) core._free(address);
+  }
 }

@@ -382,13 +382,15 @@ function readJob({ id, bytes, name, as }) {
     const t0 = performance.now();
     const result = hullkit[reader](new Uint8Array(bytes), String(name ?? ''));
     const ms = performance.now() - t0;
+    // What the reader skipped (unknown OBJ records, ...): the page shows it in a note.
+    const warnings = Array.isArray(result.warnings) ? result.warnings.map(String) : [];
     if (as === 'mesh') {
       const vertices = ownedCopy(result.vertices, Float64Array, 'vertices');
       const triangles = ownedCopy(result.triangles, Uint32Array, 'triangles');
-      self.postMessage({ type: 'result', id, vertices, triangles, ms }, [vertices.buffer, triangles.buffer]);
+      self.postMessage({ type: 'result', id, vertices, triangles, warnings, ms }, [vertices.buffer, triangles.buffer]);
     } else {
       const coords = ownedCopy(result, Float64Array, 'points');
-      self.postMessage({ type: 'result', id, [as === 'points' ? 'xyz' : 'xy']: coords, ms }, [coords.buffer]);
+      self.postMessage({ type: 'result', id, [as === 'points' ? 'xyz' : 'xy']: coords, warnings, ms }, [coords.buffer]);
     }
   });
 }

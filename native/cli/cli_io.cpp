@@ -51,4 +51,14 @@ int print_usage_error(const std::string& message) {
     return 2;
 }
 
+void print_warnings(const std::string& source, const std::vector<std::string>& warnings) {
+    for (const std::string& warning : warnings) {
+        std::string line = (source.empty() ? "" : source + ": ") + warning;
+        for (char& c : line) {
+            if (c == '\n' || c == '\r') c = ' ';
+        }
+        std::fprintf(stderr, "hullkit: warning: %s\n", line.c_str());
+    }
+}
+
 }  // namespace hullkit_cli

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace hullkit_cli {
 
@@ -22,5 +23,9 @@ void write_output(const std::string& path, const std::string& text);
 /// Prints "hullkit: <message>" as one line on standard error (line breaks in `message` become
 /// spaces) and returns 2, the exit status of a usage or input problem.
 int print_usage_error(const std::string& message);
+
+/// Prints each of a reader's warnings as one line "hullkit: warning: <source>: <warning>" on
+/// standard error (`source` empty: "hullkit: warning: <warning>").
+void print_warnings(const std::string& source, const std::vector<std::string>& warnings);
 
 }  // namespace hullkit_cli

@@ -1,6 +1,7 @@
 // `hullkit delaunay` and `hullkit verify-delaunay`: argument parsing (CLI11) and I/O around
 // hullkit::delaunay and hullkit::verify_delaunay. No geometry here.
 #include "delaunay_command.hpp"
+#include "progress.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -39,7 +40,7 @@ Input ('#' starts a comment):
   qhull / rbox    the dimension (2, or 3 with z ignored), the point count, then
                   one point per line ('rbox 100 D2 | hullkit delaunay')
   OBJ, OFF, PLY,  the x and y of the file's vertices (by name or content)
-  STL
+  STL, glTF
 
 Options:
   -o, --output FILE   write to FILE instead of standard output
@@ -63,8 +64,9 @@ Options:
                       insertion is serial, and for 50 000 points or more the
                       output stage takes a second thread. The output is the
                       same for every N
-  --quiet             no progress line on standard error (accepted; delaunay
-                      draws none yet)
+  --quiet             no progress line (otherwise drawn on standard error when
+                      it is a terminal and the triangulation lasts over a
+                      second: points inserted, rate, time left)
   -h, --help          show this help
 
 Triangles are clockwise with the y axis pointing up (as delaunator's, which
@@ -102,6 +104,7 @@ struct DelaunayArgs {
     hullkit::DelaunayOptions options;
     bool voronoi = false;
     bool stats = false;
+    bool quiet = false;  ///< no progress line
 };
 
 bool parse_format(std::string name, Format* out) {
@@ -162,7 +165,6 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     CLI::App app{"hullkit delaunay", "hullkit delaunay"};
     app.set_help_flag();  // our own help text, in the style of the other commands
     bool help = false, merge = false;
-    bool quiet = false;  // accepted as by `hullkit route`; the triangulation draws no progress line
     std::string format_name, algorithm_name;
     app.add_flag("-h,--help", help);
     // As with `hullkit hull`, an option given twice takes its last value.
@@ -176,7 +178,7 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     app.add_flag("--stats", args->stats);
     // Bounded as in `hullkit route`; the triangulation uses at most two threads anyway.
     app.add_option("--threads", args->options.threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
-    app.add_flag("--quiet", quiet);
+    app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay");
     if (help) {
         std::string usage = kDelaunayUsage;
@@ -426,14 +428,25 @@ hullkit::Points2Result load_points_2d(const std::string& path, std::string* text
 }
 
 int delaunay_main(const std::vector<std::string>& argv) {
-    DelaunayArgs args;
+    DelaunayArgs args;  // not const: the progress callback goes into its options
     if (!parse_delaunay_args(argv, &args)) return kExitOk;
     std::string text;
     const hullkit::Points2Result points = load_points_2d(args.input, &text);
+    if (!args.quiet) print_warnings(source_name(args.input), points.warnings);
     const hullkit::PointSpan2 span(points.xy);
 
     const auto start = std::chrono::steady_clock::now();
-    const hullkit::Delaunay result = hullkit::delaunay(span, args.options);
+    hullkit::Delaunay result;
+    {
+        // Cleared when `progress` goes, before anything else is written.
+        hullkit_cli::Progress progress("points", 0, args.quiet);
+        args.options.progress = [&progress](std::size_t done, std::size_t total) {
+            progress.set_total(total);
+            progress.update(done);
+        };
+        result = hullkit::delaunay(span, args.options);
+        args.options.progress = nullptr;  // it refers to `progress`
+    }
     const auto stop = std::chrono::steady_clock::now();
     if (!result.ok()) {
         std::string where = source_name(args.input);

@@ -6,6 +6,7 @@
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/mesh_read.hpp"
 #include "hullkit/point_reader.hpp"
+#include "cli_io.hpp"
 #include "progress.hpp"
 #include "delaunay_command.hpp"
 #include "route_command.hpp"
@@ -23,6 +24,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -56,7 +58,7 @@ Run 'hullkit hull --help' for the options of a command.
 )";
 
 const char* const kHullUsage =
-    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format off|obj|json|xyz] [--algorithm NAME]
+    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format off|obj|json|xyz|glb] [--algorithm NAME]
                     [--merge-coplanar] [--epsilon exact|seed] [--threads N]
                     [--memory MB] [--vertices-only] [--stats] [--quiet]
 
@@ -69,14 +71,19 @@ Input formats, detected automatically ('#' starts a comment in all of them):
   x y z           one point per line, separated by whitespace or a comma
   qhull / rbox    the dimension (3), the point count, then one point per line
   OBJ             'v x y z' lines are the points; other records are ignored
+                  (records that are not OBJ's are skipped with a warning)
   OFF             'OFF', 'vertices faces edges', vertex lines; faces ignored
   PLY, STL        the vertices (PLY point clouds without faces too), by name
                   or content
+  glTF            .gltf (buffers embedded or in files next to it) or .glb: the
+                  vertices of the default scene's triangle meshes, node
+                  transforms applied
 
 Options:
   -o, --output FILE   write the hull to FILE instead of standard output
-  --format FORMAT     off (default), obj, json or xyz; without --format, an
-                      output FILE ending in .obj, .json or .xyz selects it
+  --format FORMAT     off (default), obj, json, xyz or glb (binary glTF: the
+                      coordinates rounded to float32); without --format, an
+                      output FILE ending in .obj, .json, .xyz or .glb selects it
   --vertices-only     the same as --format xyz: the hull's vertices alone, one
                       'x y z # INDEX' line each (INDEX: the point's input index),
                       which hullkit hull reads back as points: hull each part
@@ -99,6 +106,7 @@ Options:
                       seconds (the hull computation alone), streamed, threads
   --quiet             no progress line (it is drawn on standard error only
                       when that is a terminal and the run takes over a second)
+                      and no warnings about skipped input records
 Points that are all coplanar, collinear or identical give a polygon, a segment
 or a point (OFF/OBJ: the polygon's triangles; JSON: "dimension").
   -h, --help          show this help
@@ -217,7 +225,7 @@ HullArgs parse_hull_args(std::vector<std::string> argv) {
         } else if (is_option(arg, "--format")) {
             std::string name = cursor.value_of(arg, "--format");
             if (!hullkit::parse_output_format(name, &args.format)) {
-                throw CliError("unknown format \"" + name + "\" (known: off, obj, json, xyz)");
+                throw CliError("unknown format \"" + name + "\" (known: off, obj, json, xyz, glb)");
             }
             args.format_given = true;
         } else if (arg == "--vertices-only") {
@@ -269,6 +277,21 @@ bool is_stdio(const std::string& path) { return path.empty() || path == "-"; }
 void write_output(const std::string& path, hullkit::OutputFormat format, hullkit::PointSpan points,
                   const hullkit::Hull& hull, const std::uint64_t* index) {
     int error_number = 0;
+    if (format == hullkit::OutputFormat::Glb) {
+        // Binary, and refused as a whole for a coordinate beyond float32: built first, then written.
+        std::string bytes;
+        try {
+            bytes = hullkit::write_glb(points, hull);
+        } catch (const std::domain_error& error) {
+            throw CliError((is_stdio(path) ? std::string("<stdout>") : path) + ": " + error.what());
+        }
+        try {
+            hullkit_cli::write_output(path, bytes);
+        } catch (const hullkit_cli::UsageError& error) {
+            throw CliError(error.what());
+        }
+        return;
+    }
     if (is_stdio(path)) {
         if (!hullkit::write_hull_file(format, points, hull, stdout, &error_number, index) || std::fflush(stdout) != 0) {
             throw CliError(std::string("<stdout>: cannot write: ") + std::strerror(error_number ? error_number : errno));
@@ -367,6 +390,7 @@ int run_hull(std::vector<std::string> argv) {
         points.clear();  // the capacity stays for the next piece
         streaming = true;
     };
+    std::vector<std::pair<std::string, std::vector<std::string>>> warnings;  // per input, printed at the end
     for (const std::string& input : args.inputs) {
         const std::string name = is_stdio(input) ? "<stdin>" : input;
         std::FILE* file = is_stdio(input) ? stdin : std::fopen(input.c_str(), "rb");
@@ -388,8 +412,12 @@ int run_hull(std::vector<std::string> argv) {
                                                            : -1.0);
         }
         if (!reader.error().empty()) throw CliError(reader.error());
+        warnings.emplace_back(name, reader.warnings());
     }
-    progress.finish();
+    progress.finish();  // before the warnings, which would otherwise share the progress line
+    if (!args.quiet) {
+        for (const auto& [name, lines] : warnings) hullkit_cli::print_warnings(name, lines);
+    }
     const unsigned threads_used = args.threads ? args.threads : std::max(1u, std::thread::hardware_concurrency());
 
     if (!streaming) {

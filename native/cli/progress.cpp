@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace hullkit_cli {
@@ -33,6 +34,17 @@ std::string duration(double seconds) {
     return text;
 }
 
+/// The wait before the first draw: a second, or HULLKIT_PROGRESS_AFTER_MS milliseconds (the
+/// tests draw at once, to see the line on small inputs).
+std::int64_t first_draw_ns() {
+    const char* text = std::getenv("HULLKIT_PROGRESS_AFTER_MS");
+    if (text == nullptr || *text == '\0') return kFirstDrawNs;
+    char* end = nullptr;
+    const long long ms = std::strtoll(text, &end, 10);
+    if (*end != '\0' || ms < 0 || ms > 86'400'000) return kFirstDrawNs;
+    return static_cast<std::int64_t>(ms) * 1'000'000;
+}
+
 }  // namespace
 
 Progress::Progress(std::string unit, std::uint64_t total, bool quiet)
@@ -40,7 +52,7 @@ Progress::Progress(std::string unit, std::uint64_t total, bool quiet)
       total_(total),
       enabled_(!quiet && isatty(fileno(stderr)) == 1),
       start_(std::chrono::steady_clock::now()),
-      next_draw_ns_(kFirstDrawNs) {}
+      next_draw_ns_(first_draw_ns()) {}
 
 Progress::~Progress() { finish(); }
 

@@ -1,8 +1,9 @@
 // A one-line progress bar for long runs of the `hullkit` subcommands.
 //
 // Shown only when standard error is a terminal (never into a pipe or a file), not with --quiet,
-// and only once a run has lasted about a second; redrawn a few times a second with the count
-// done, the rate and, when the total is known, the time left; cleared when the run ends.
+// and only once a run has lasted about a second (HULLKIT_PROGRESS_AFTER_MS overrides the wait);
+// redrawn a few times a second with the count done, the rate and, when the total is known, the
+// time left; cleared when the run ends.
 #pragma once
 
 #include <atomic>

@@ -31,7 +31,7 @@ const char* const kRouteDescription =
     "contact as a fraction of the leg, the obstacle, triangle and part) or \"start-overlap\".\n"
     "Scene: {\"traverse\": {\"parts\": [...]}, \"route\": [[x,y,z], ...], \"obstacles\": [...],\n"
     "\"margin\": m}; a part or obstacle is {\"box\": {\"min\", \"max\"}}, {\"vertices\", \"triangles\"} or\n"
-    "{\"mesh\": FILE} (OBJ, OFF, PLY, STL; relative to the scene file). See README.md.\n"
+    "{\"mesh\": FILE} (OBJ, OFF, PLY, STL, glTF; relative to the scene file). See README.md.\n"
     "Exit status: 0 every leg clear, 1 some leg not clear, 2 a usage or input problem.";
 
 }  // namespace
@@ -74,6 +74,7 @@ int run_route(const std::vector<std::string>& args) {
 
     hullkit::SceneResult scene = hullkit::read_scene_file(scene_path);
     if (!scene.ok()) return print_usage_error(scene.error);
+    if (!quiet) print_warnings("", scene.warnings);
 
     hullkit::RouteOptions options;
     options.clearance = !no_clearance;

@@ -384,8 +384,10 @@ bool read_rbox_header(Reader& reader, io::PointTextHeader* header) {
     return true;
 }
 
-/// One OBJ record: "v x y z ..." appends a point, other keyword records are skipped.
-bool read_obj_line(Reader& reader, std::vector<double>* xyz) {
+/// One OBJ record: "v x y z ..." appends a point; other OBJ records are skipped, and records that
+/// are not OBJ's (FCL's "648 1292" count line, a misspelt keyword, a point missing its "v") are
+/// skipped too but tallied in *skipped, for the result's warnings.
+bool read_obj_line(Reader& reader, std::vector<double>* xyz, io::SkippedRecords* skipped) {
     if (!reader.split(false)) return false;
     const auto& fields = reader.fields();
     std::string_view keyword = fields[0];
@@ -401,13 +403,8 @@ bool read_obj_line(Reader& reader, std::vector<double>* xyz) {
         std::vector<double> extra;
         return reader.append_numbers(4, n - 3, "vertex value", &extra);
     }
-    if (!std::isalpha(static_cast<unsigned char>(keyword[0]))) {
-        // A bare "1 2 3" in an OBJ file is most likely a point missing its "v": say so
-        // rather than drop it.
-        return reader.fail("line does not start with an OBJ keyword (found " +
-                           quoted(keyword) + ")");
-    }
-    // Every other record (faces, normals, groups, materials, ...) carries no points.
+    // Faces and every other OBJ record carry no points.
+    if (keyword != "f" && !io::is_known_obj_record(keyword)) skipped->add(keyword, reader.line_number());
     return true;
 }
 
@@ -683,6 +680,8 @@ PointsResult read_all_points(PointReader& reader) {
     if (!reader.error().empty()) {
         result.xyz = {};
         result.error = reader.error();
+    } else {
+        result.warnings = reader.warnings();
     }
     // No shrink_to_fit: it would copy the whole array; the spare capacity is address space that
     // was never touched.
@@ -738,6 +737,10 @@ ReadStatus read_point_text_header(std::string_view text, bool whole, const std::
         ok = reader.fail_whole("no points found (the input is empty)");
     } else if (reader.split(false)) {  // cannot fail without commas
         header->format = detect_format(reader.fields());
+        // A file named .obj is OBJ whatever its first line (FCL's meshes start with "648 1292").
+        if (header->format != PointTextFormat::Off && io::extension_of(source) == "obj") {
+            header->format = PointTextFormat::Obj;
+        }
         switch (header->format) {
             case PointTextFormat::Xyz:
             case PointTextFormat::Obj:  // no header: the first content line is the first point line
@@ -785,7 +788,7 @@ void parse_point_piece(std::string_view text, const PointTextHeader& header, std
         }
         if (!reader.next_line()) break;
         if (format == PointTextFormat::Obj) {
-            if (!(ok = read_obj_line(reader, xyz))) break;
+            if (!(ok = read_obj_line(reader, xyz, &piece->skipped))) break;
             continue;
         }
         if (found == limit) {  // rbox: a point line after the last one declared
@@ -881,12 +884,13 @@ const char* output_format_name(OutputFormat format) {
         case OutputFormat::Obj: return "obj";
         case OutputFormat::Json: return "json";
         case OutputFormat::Xyz: return "xyz";
+        case OutputFormat::Glb: return "glb";
     }
     return "?";
 }
 
 bool parse_output_format(const std::string& name, OutputFormat* out) {
-    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json, OutputFormat::Xyz}) {
+    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json, OutputFormat::Xyz, OutputFormat::Glb}) {
         if (name == output_format_name(format)) {
             *out = format;
             return true;
@@ -1036,12 +1040,112 @@ void put_xyz(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
     }
 }
 
+/// Appends `value` as 4 little-endian bytes.
+void put_u32(std::string& bytes, std::uint32_t value) {
+    const char b[4] = {static_cast<char>(value & 0xff), static_cast<char>((value >> 8) & 0xff),
+                       static_cast<char>((value >> 16) & 0xff), static_cast<char>(value >> 24)};
+    bytes.append(b, 4);
+}
+
+/// Binary glTF 2.0: one mesh of one primitive, the hull's vertices as float32 POSITION (in the
+/// order of Hull::vertices) and its triangles as uint32 indices (a hull without triangles, a
+/// segment or a point: a POINTS primitive). Throws std::domain_error for a coordinate that does
+/// not fit a float.
+void put_glb(TextOut& out, PointSpan points, const Hull& hull) {
+    const VertexPositions position(points, hull);
+    const std::size_t nv = hull.vertices.size();
+    const std::size_t ni = hull.triangles.size();
+    if (nv > 0xffffffffu / 12 || ni > (0xffffffffu - 12 * nv) / 4) throw std::domain_error("the hull is too large for a glTF buffer");
+    std::string bin;
+    bin.reserve(12 * nv + 4 * ni);
+    float low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < nv; ++i) {
+        const double* p = points[hull.vertices[i]];
+        for (int k = 0; k < 3; ++k) {
+            const float f = static_cast<float>(p[k]);  // rounded to the nearest float
+            if (!std::isfinite(f)) {
+                throw std::domain_error("coordinate " + format_double(p[k]) + " of hull vertex " +
+                                        std::to_string(hull.vertices[i]) + " does not fit a glTF float32 position");
+            }
+            low[k] = i == 0 ? f : std::min(low[k], f);
+            high[k] = i == 0 ? f : std::max(high[k], f);
+            std::uint32_t word;
+            std::memcpy(&word, &f, 4);
+            put_u32(bin, word);
+        }
+    }
+    for (std::uint32_t corner : hull.triangles) put_u32(bin, position.of(corner));
+
+    TextOut json;
+    auto vec3 = [&json](const float* v) {
+        json.put('[');
+        for (int k = 0; k < 3; ++k) {
+            if (k) json.put(',');
+            json.number(static_cast<double>(v[k]));
+        }
+        json.put(']');
+    };
+    json.put(R"({"asset":{"version":"2.0","generator":"hullkit"},"scene":0,"scenes":[{"nodes":[)");
+    if (nv > 0) {
+        json.put(R"(0]}],"nodes":[{"mesh":0,"name":"convex hull"}],"meshes":[{"name":"convex hull","primitives":[{"attributes":{"POSITION":0})");
+        json.put(ni > 0 ? R"(,"indices":1,"mode":4}]}],)" : R"(,"mode":0}]}],)");
+        json.put(R"("accessors":[{"bufferView":0,"componentType":5126,"count":)");
+        json.uint(nv);
+        json.put(R"(,"type":"VEC3","min":)");
+        vec3(low);
+        json.put(R"(,"max":)");
+        vec3(high);
+        json.put('}');
+        if (ni > 0) {
+            json.put(R"(,{"bufferView":1,"componentType":5125,"count":)");
+            json.uint(ni);
+            json.put(R"(,"type":"SCALAR"})");
+        }
+        json.put(R"(],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)");
+        json.uint(12 * nv);
+        json.put(R"(,"target":34962})");
+        if (ni > 0) {
+            json.put(R"(,{"buffer":0,"byteOffset":)");
+            json.uint(12 * nv);
+            json.put(R"(,"byteLength":)");
+            json.uint(4 * ni);
+            json.put(R"(,"target":34963})");
+        }
+        json.put(R"(],"buffers":[{"byteLength":)");
+        json.uint(bin.size());
+        json.put("}]}");
+    } else {
+        json.put("]}]}");
+    }
+    std::string& text = json.text();
+    while (text.size() % 4 != 0) text += ' ';  // the JSON chunk is padded with spaces
+    const std::size_t total = 12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin.size());
+    std::string head;
+    put_u32(head, 0x46546C67u);  // "glTF"
+    put_u32(head, 2);
+    put_u32(head, static_cast<std::uint32_t>(total));
+    put_u32(head, static_cast<std::uint32_t>(text.size()));
+    put_u32(head, 0x4E4F534Au);  // "JSON"
+    out.reserve(total);
+    out.put(head);
+    out.put(text);
+    if (!bin.empty()) {  // 12 bytes a vertex, 4 an index: already a multiple of 4
+        std::string chunk;
+        put_u32(chunk, static_cast<std::uint32_t>(bin.size()));
+        put_u32(chunk, 0x004E4942u);  // "BIN\0"
+        out.put(chunk);
+        out.put(bin);
+    }
+    out.record_done();
+}
+
 void put_hull(TextOut& out, OutputFormat format, PointSpan points, const Hull& hull, InputIndex id) {
     switch (format) {
         case OutputFormat::Off: return put_off(out, points, hull);
         case OutputFormat::Obj: return put_obj(out, points, hull);
         case OutputFormat::Json: return put_json(out, points, hull, id);
         case OutputFormat::Xyz: return put_xyz(out, points, hull, id);
+        case OutputFormat::Glb: return put_glb(out, points, hull);
     }
     throw std::invalid_argument("unknown output format");
 }
@@ -1066,6 +1170,10 @@ std::string write_obj(PointSpan points, const Hull& hull) {
 
 std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* index) {
     return to_text([&](TextOut& out) { put_json(out, points, hull, InputIndex{index}); });
+}
+
+std::string write_glb(PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_glb(out, points, hull); });
 }
 
 std::string write_xyz(PointSpan points, const Hull& hull, const std::uint64_t* index) {

@@ -199,6 +199,25 @@ test('the page carries real work: stepping, a million points, files in and out',
       const stl = await downloadOf(page, '[data-export="stl"]');
       assert.equal(stl.bytes.readUInt32LE(80), stats.triangles, 'binary STL: the triangle count');
       assert.equal(stl.bytes.length, 84 + 50 * stats.triangles);
+      const glb = await downloadOf(page, '[data-export="glb"]');
+      assert.match(glb.name, /\.glb$/);
+      assert.equal(glb.bytes.toString('latin1', 0, 4), 'glTF', 'binary glTF: the magic');
+      assert.equal(glb.bytes.readUInt32LE(8), glb.bytes.length, 'binary glTF: the length in its header');
+      assert.equal(await page.isHidden('#file-note'), true, 'no note for a file read without skipping anything');
+
+      // The exported .glb opens again (same hull); an OBJ with FCL's "V F" count line opens with a note.
+      before = await page.evaluate(() => window.hullkitStats.run);
+      await openFile(page, 'cube-hull.glb', glb.bytes);
+      stats = await nextRun(page, 'hullkitStats', before);
+      assert.equal(stats.vertices, 8, 'the .glb export reads back as the cube');
+      before = stats.run;
+      await openFile(page, 'fcl-cube.obj', Buffer.concat([Buffer.from('8 12\n'), fs.readFileSync(path.join(DATA, 'cube.obj'))]));
+      stats = await nextRun(page, 'hullkitStats', before);
+      assert.equal(stats.vertices, 8);
+      const note = await page.textContent('#file-note');
+      t.diagnostic(`fcl-cube.obj: ${note}`);
+      assert.equal(await page.isVisible('#file-note'), true);
+      assert.match(note, /^fcl-cube\.obj: skipped 1 unknown OBJ record "8" \(first at line 1\)/);
 
       // Malformed files: a readable message that names the problem; the drawing stays.
       const header = Buffer.alloc(84);

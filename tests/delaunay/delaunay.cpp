@@ -265,3 +265,38 @@ TEST_CASE("delaunay: the output stage's second thread gives the same arrays (1 t
         }
     }
 }
+
+TEST_CASE("delaunay: progress counts the distinct points inserted, rising to the total once; arrays unchanged",
+          "[threads]") {
+    // 200 000 points with 1000 exact repeats: the total is the number of distinct points.
+    std::vector<double> xy = uniform_points(200000, 17);
+    for (std::size_t i = 0; i < 1000; ++i) {
+        xy[2 * (199000 + i)] = xy[2 * i];
+        xy[2 * (199000 + i) + 1] = xy[2 * i + 1];
+    }
+    const Delaunay reference = hullkit::delaunay(xy);
+    for (unsigned threads : {1u, 0u}) {
+        CAPTURE(threads);
+        std::vector<std::pair<std::size_t, std::size_t>> calls;
+        DelaunayOptions options;
+        options.threads = threads;
+        options.progress = [&calls](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+        const Delaunay d = hullkit::delaunay(xy, options);
+        REQUIRE(d.triangles == reference.triangles);
+        REQUIRE(d.halfedges == reference.halfedges);
+        REQUIRE(calls.size() >= 3);  // every 65 536 points, then once at the end
+        for (std::size_t k = 0; k < calls.size(); ++k) {
+            REQUIRE(calls[k].second == 199000);
+            if (k > 0) REQUIRE(calls[k].first > calls[k - 1].first);
+        }
+        REQUIRE(calls.back().first == 199000);
+    }
+    // Collinear input and gift wrapping report nothing; neither do they fail.
+    std::size_t reported = 0;
+    DelaunayOptions options;
+    options.progress = [&reported](std::size_t, std::size_t) { ++reported; };
+    REQUIRE(hullkit::delaunay(std::vector<double>{0, 0, 1, 1, 2, 2, 3, 3}, options).ok());
+    options.algorithm = DelaunayAlgorithm::Giftwrap;
+    REQUIRE(hullkit::delaunay(uniform_points(300, 3), options).ok());
+    REQUIRE(reported == 0);
+}

@@ -1,5 +1,5 @@
 // libFuzzer target: every mesh reader (native/src/io: OBJ, OFF, PLY ascii and binary, STL ascii and
-// binary) and the point readers built on them (read_ply_points, read_points, read_points_2d) on
+// binary; glTF when the content says so, fuzz_gltf covers it) and the point readers built on them (read_ply_points, read_points, read_points_2d) on
 // arbitrary bytes. Each reader runs directly, and read_mesh (format detection) runs under
 // a file name whose extension the input's size picks. Checked for every result:
 //  - a mesh: whole xyz triples, whole index triples, every index in range, finite coordinates
@@ -106,6 +106,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         case hullkit::MeshFormat::Ply: direct = hullkit::read_ply_mesh(bytes, source); break;
         case hullkit::MeshFormat::StlAscii:
         case hullkit::MeshFormat::StlBinary: direct = hullkit::read_stl_mesh(bytes, source); break;
+        case hullkit::MeshFormat::Gltf:
+        case hullkit::MeshFormat::Glb: direct = hullkit::read_gltf_mesh(bytes, source, hullkit::files_next_to(source)); break;
         case hullkit::MeshFormat::Unknown:
             if (mesh.ok()) std::abort();
             return 0;

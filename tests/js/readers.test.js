@@ -91,6 +91,81 @@ test('readers: a malformed file throws a HullkitError naming the problem and the
     (error) => error instanceof HullkitError && error.line === 2 && /"x"/.test(error.message));
 });
 
+test('readers: records an OBJ should not hold are skipped and listed in `warnings`', () => {
+  const body = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n';
+  // FCL's test meshes start with a "V F" count line.
+  const fcl = text(`4 4\n${body}bogus\nbogus\n`);
+  const expected = ['skipped 1 unknown OBJ record "4" (first at line 1)', 'skipped 2 unknown OBJ records "bogus" (first at line 10)'];
+  const mesh = hullkit.readMesh(fcl, 'fcl.obj');
+  assert.deepEqual(mesh.warnings, expected);
+  const clean = hullkit.readMesh(text(body), 'clean.obj');
+  assert.deepEqual(clean.warnings, []);
+  assert.deepEqual(mesh.vertices, clean.vertices);
+  assert.deepEqual(mesh.triangles, clean.triangles);
+  const points = hullkit.readPoints(fcl, 'fcl.obj');
+  assert.ok(points instanceof Float64Array);
+  assert.deepEqual([...points], [...clean.vertices]);
+  assert.deepEqual(points.warnings, expected);
+  assert.deepEqual(hullkit.readPoints(text(body), 'clean.obj').warnings, []);
+  assert.deepEqual(hullkit.readPoints2d(fcl, 'fcl.obj').warnings, expected);
+  // A malformed vertex is still an error.
+  assert.throws(() => hullkit.readMesh(text('4 4\nv 0 0\n'), 'fcl.obj'), (error) => error.line === 2);
+});
+
+/** A .gltf of one triangle under a node moved by (10, 20, 30), its buffer as `buffer` ({uri} or {}). */
+function triangleGltf(buffer) {
+  const bin = new Uint8Array(36 + 6);
+  const view = new DataView(bin.buffer);
+  [1, 0, 0, 0, 1, 0, 0, 0, 1].forEach((v, i) => view.setFloat32(4 * i, v, true));
+  [0, 1, 2].forEach((v, i) => view.setUint16(36 + 2 * i, v, true));
+  const json = {
+    asset: { version: '2.0' }, scene: 0, scenes: [{ nodes: [0] }], nodes: [{ mesh: 0, translation: [10, 20, 30] }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }, { attributes: { POSITION: 0 }, mode: 0 }] }],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: 3, type: 'VEC3', min: [0, 0, 0], max: [1, 1, 1] },
+      { bufferView: 1, componentType: 5123, count: 3, type: 'SCALAR' },
+    ],
+    bufferViews: [{ buffer: 0, byteLength: 36 }, { buffer: 0, byteOffset: 36, byteLength: 6 }],
+    buffers: [{ byteLength: bin.length, ...buffer(bin) }],
+  };
+  return text(JSON.stringify(json));
+}
+
+test('readers: glTF (.glb from writeGlb, .gltf with data: URIs), and writeGlb', () => {
+  const xyz = new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.25, 0.25, 0.25, 0.1, 0.2, 0.3]);
+  const result = hullkit.hull(xyz);
+  const glb = hullkit.writeGlb(xyz, result);
+  assert.ok(glb instanceof Uint8Array);
+  assert.equal(new TextDecoder().decode(glb.subarray(0, 4)), 'glTF');
+  const mesh = hullkit.readMesh(glb, 'hull.glb');
+  assert.deepEqual(mesh.warnings, []);
+  // The hull's vertices in order (exact here: every coordinate is a float), its triangles re-indexed.
+  assert.deepEqual([...mesh.vertices], [...result.vertices].flatMap((v) => [...xyz.subarray(3 * v, 3 * v + 3)]));
+  const position = new Map([...result.vertices].map((v, i) => [v, i]));
+  assert.deepEqual([...mesh.triangles], [...result.triangles].map((v) => position.get(v)));
+  assert.deepEqual([...hullkit.readPoints(glb, 'upload')], [...mesh.vertices]); // by content
+  // Float rounding: 0.1 is not a float.
+  const rounded = hullkit.readMesh(hullkit.writeGlb(new Float64Array([0.1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]),
+    hullkit.hull(new Float64Array([0.1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]))), 'r.glb');
+  assert.equal(rounded.vertices[0], Math.fround(0.1));
+  assert.throws(() => hullkit.writeGlb(new Float64Array([1e39, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0]),
+    hullkit.hull(new Float64Array([1e39, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0]))), (error) =>
+    error instanceof HullkitError && /does not fit a glTF float32 position/.test(error.message));
+
+  // A .gltf with its buffer embedded: the node's translation applied, the POINTS primitive skipped.
+  const embedded = triangleGltf((bin) => ({ uri: `data:application/octet-stream;base64,${Buffer.from(bin).toString('base64')}` }));
+  const gltf = hullkit.readMesh(embedded, 'scene.gltf');
+  assert.deepEqual([...gltf.vertices], [11, 20, 30, 10, 21, 30, 10, 20, 31]);
+  assert.deepEqual([...gltf.triangles], [0, 1, 2]);
+  assert.deepEqual(gltf.warnings, ['skipped 1 primitive of mode POINTS (0), only TRIANGLES are read (first: mesh 0, primitive 1)']);
+  assert.deepEqual(hullkit.readPoints(embedded, 'scene.gltf').warnings, gltf.warnings);
+  // External buffer files cannot be read here: use a .glb.
+  assert.throws(() => hullkit.readMesh(triangleGltf(() => ({ uri: 'triangle.bin' })), 'scene.gltf'), (error) =>
+    error instanceof HullkitError && /^scene\.gltf: .*"triangle\.bin".*use a \.glb/.test(error.message));
+  // A truncated .glb says so.
+  assert.throws(() => hullkit.readMesh(glb.subarray(0, glb.length - 8), 'cut.glb'), /cut\.glb: binary glTF is truncated/);
+});
+
 test('readers: a truncated binary STL says so', () => {
   const stl = data('binary-two-triangles.stl');
   for (const read of ['readMesh', 'readPoints']) {

@@ -185,6 +185,22 @@ TEST_CASE("cli route: the issue's crane scene (meshes from STL, OBJ, OFF)", "[cl
     CHECK(report["legs"][2]["obstacle"] == "vessel");
 }
 
+TEST_CASE("cli route: a mesh file with unknown OBJ records gives a warning line, and the report", "[cli_route]") {
+    TempDir dir("hullkit-route");
+    // A tetrahedron obstacle far from the route, its OBJ starting with FCL's "V F" count line.
+    hullkit_test::write_text(dir.file("tetra.obj"), "4 4\nv 10 10 10\nv 11 10 10\nv 10 11 10\nv 10 10 11\n"
+                                                    "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    const std::string scene = cube_scene("[[0,0,0],[1,0,0]]", 0, R"(, {"name": "tetra", "mesh": "tetra.obj"})");
+    RunResult run = run_scene(dir, scene);
+    CHECK(run.exit_code == 0);
+    CHECK(run.err == "hullkit: warning: " + dir.file("scene.json") +
+                         ": obstacles[1].mesh: tetra.obj: skipped 1 unknown OBJ record \"4\" (first at line 1)\n");
+    CHECK(json::parse(run.out)["legs"].size() == 1);
+    RunResult quiet = run_scene(dir, scene, {"--quiet"});
+    CHECK(quiet.exit_code == 0);
+    CHECK(quiet.err.empty());
+}
+
 TEST_CASE("cli route: --threads 1 and --threads 3 print the same report; --quiet", "[cli_route][threads]") {
     TempDir dir("hullkit-route");
     // 300 legs zigzagging through the wall and beside it (hits, clear legs, start overlaps), so

@@ -272,9 +272,35 @@ TEST_CASE("mesh_read: OBJ errors name the file and line", "[mesh_read]") {
     CHECK(error_of("v 1 2\n", "a.obj") == "a.obj:1: a vertex needs 3 coordinates (\"v x y z\"), got 2 values");
     CHECK(error_of("v 1 2 nan\n", "a.obj") == "a.obj:1: coordinate \"nan\" is not a finite number");
     CHECK(error_of("v 1 2 1e999\n", "a.obj") == "a.obj:1: coordinate \"1e999\" is not a finite number");
-    CHECK(error_of("v 1 2 3\nbogus 1\n", "a.obj") == "a.obj:2: unknown OBJ record \"bogus\"");
+    // Unknown records are skipped (see below), but a malformed vertex or face after one is not.
+    CHECK(error_of("648 1292\nv 1 2 3\nbogus 1\nv 1 2\n", "a.obj") ==
+          "a.obj:4: a vertex needs 3 coordinates (\"v x y z\"), got 2 values");
+    CHECK(error_of("648 1292\nv 1 2 3\nbogus 1\nf 1 1\n", "a.obj") == "a.obj:4: a face needs at least 3 vertices, got 2");
     CHECK(error_of("o empty\n", "a.obj") == "a.obj: no vertices (\"v x y z\" lines), expected an OBJ mesh");
     CHECK(error_of("v 1 2 3\nv 2 3 4\n", "points.obj") == "points.obj: the mesh has no triangles");
+}
+
+TEST_CASE("mesh_read: unknown OBJ records are skipped with one warning per kind", "[mesh_read]") {
+    const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const MeshResult clean = hullkit::read_mesh(body, "tetra.obj");
+    REQUIRE(clean.ok());
+    CHECK(clean.warnings.empty());
+    // FCL's test meshes start with a "V F" count line; three.js's OBJLoader and tinyobjloader skip
+    // such records, and so does hullkit, saying so.
+    const std::string fcl = "4 4\n" + body + "bogus 1\nbogus 2\n";
+    const MeshResult mesh = hullkit::read_mesh(fcl, "tetra.obj");
+    INFO(mesh.error);
+    REQUIRE(mesh.ok());
+    CHECK(mesh.xyz == clean.xyz);
+    CHECK(mesh.triangles == clean.triangles);
+    CHECK(mesh.warnings == std::vector<std::string>{"skipped 1 unknown OBJ record \"4\" (first at line 1)",
+                                                    "skipped 2 unknown OBJ records \"bogus\" (first at line 11)"});
+    // read_points and read_points_2d pass the warnings on.
+    const hullkit::PointsResult points = hullkit::read_points(fcl, "tetra.obj");
+    REQUIRE(points.ok());
+    CHECK(points.xyz == clean.xyz);
+    CHECK(points.warnings == mesh.warnings);
+    CHECK(hullkit::read_points_2d(fcl, "tetra.obj").warnings == mesh.warnings);
 }
 
 TEST_CASE("mesh_read: PLY errors", "[mesh_read]") {
@@ -366,8 +392,8 @@ TEST_CASE("mesh_read: STL errors", "[mesh_read]") {
 
 TEST_CASE("mesh_read: unknown, empty and OFF input through read_mesh", "[mesh_read]") {
     CHECK(error_of("", "e.obj") == "e.obj: no vertices (\"v x y z\" lines), expected an OBJ mesh");
-    CHECK(error_of("", "bytes") == "bytes: empty file, expected a mesh (OBJ, OFF, PLY or STL)");
-    CHECK(error_of("hello world\n", "x.txt") == "x.txt: not a mesh file this reader knows (OBJ, OFF, PLY or STL)");
+    CHECK(error_of("", "bytes") == "bytes: empty file, expected a mesh (OBJ, OFF, PLY, STL or glTF)");
+    CHECK(error_of("hello world\n", "x.txt") == "x.txt: not a mesh file this reader knows (OBJ, OFF, PLY, STL or glTF)");
     // OFF goes to the existing reader, with its own messages; non-finite coordinates are refused here.
     CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "t.off").rfind("t.off:6:", 0) == 0);
     CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n", "t.off") == "t.off: vertex 1 has a non-finite coordinate");
@@ -427,8 +453,14 @@ TEST_CASE("mesh_read: regression inputs from fuzzing (tests/data/fuzz) give a cl
     CHECK(read("ply-ascii-face-index-1e300.ply").error ==
           "ply-ascii-face-index-1e300.ply:13: face 0: index 1e+300 out of range (3 vertices)");
     // Bytes of the file in a message: printable ASCII only (0xff 0xfe used to be echoed raw).
-    CHECK(read("obj-unknown-record-escape-and-high-bytes.obj").error ==
-          "obj-unknown-record-escape-and-high-bytes.obj:1: unknown OBJ record \"?[31m??\"");
+    // (Now a skipped record, so the file has no vertices; with some, its warning is printable too.)
+    const std::string name = "obj-unknown-record-escape-and-high-bytes.obj";
+    CHECK(read(name).error == name + ": no vertices (\"v x y z\" lines), expected an OBJ mesh");
+    std::string bytes, why;
+    REQUIRE(hullkit::read_file(hullkit_test::data_path("fuzz/" + name), &bytes, &why));
+    const MeshResult escape = hullkit::read_mesh(bytes + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", name);
+    REQUIRE(escape.ok());
+    CHECK(escape.warnings == std::vector<std::string>{"skipped 1 unknown OBJ record \"?[31m??\" (first at line 1)"});
     // 10^18 rows of an element without properties: nothing to read in a binary body, which used to
     // spin through every row.
     const MeshResult empty_rows = read("ply-binary-empty-element-1e18-rows.ply");

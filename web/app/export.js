@@ -1,4 +1,4 @@
-// Files out: the page's results as the files the CLI writes (OBJ, OFF, binary STL, SVG, JSON),
+// Files out: the page's results as the files the CLI writes (OBJ, OFF, binary STL, glTF .glb, SVG, JSON),
 // built from the flat arrays the worker returns and handed to the browser as a download.
 //
 // Coordinates are written with String(x), the shortest text that reads back as the same double,
@@ -80,6 +80,67 @@ export function stlBytes({ positions, triangles }, header = 'hullkit') {
     for (const ci of c) for (let d = 0; d < 3; d++) { view.setFloat32(o, positions[ci + d], true); o += 4; }
     view.setUint16(o, 0, true);
     o += 2;
+  }
+  return bytes;
+}
+
+/**
+ * Binary glTF 2.0 (.glb): one mesh with one triangle primitive, the positions as float32 (glTF
+ * has no double positions: rounded to the nearest float, like STL) and uint32 indices, as
+ * `hullkit hull -o hull.glb` writes it.
+ */
+export function glbBytes({ positions, triangles }, name = 'convex hull') {
+  const nv = positions.length / 3;
+  const ni = triangles.length;
+  const floats = Float32Array.from(positions); // rounded to the nearest float
+  const min = nv ? [Infinity, Infinity, Infinity] : [0, 0, 0];
+  const max = nv ? [-Infinity, -Infinity, -Infinity] : [0, 0, 0];
+  for (let k = 0; k < nv; k++) {
+    for (let d = 0; d < 3; d++) {
+      min[d] = Math.min(min[d], floats[3 * k + d]);
+      max[d] = Math.max(max[d], floats[3 * k + d]);
+    }
+  }
+  const binLength = 12 * nv + 4 * ni;
+  const json = {
+    asset: { version: '2.0', generator: 'hullkit page' },
+    scene: 0,
+    scenes: [{ nodes: nv ? [0] : [] }],
+  };
+  if (nv) {
+    const primitive = { attributes: { POSITION: 0 }, mode: ni ? 4 : 0 };
+    if (ni) primitive.indices = 1;
+    Object.assign(json, {
+      nodes: [{ mesh: 0, name }],
+      meshes: [{ name, primitives: [primitive] }],
+      accessors: [{ bufferView: 0, componentType: 5126, count: nv, type: 'VEC3', min, max }],
+      bufferViews: [{ buffer: 0, byteOffset: 0, byteLength: 12 * nv, target: 34962 }],
+      buffers: [{ byteLength: binLength }],
+    });
+    if (ni) {
+      json.accessors.push({ bufferView: 1, componentType: 5125, count: ni, type: 'SCALAR' });
+      json.bufferViews.push({ buffer: 0, byteOffset: 12 * nv, byteLength: 4 * ni, target: 34963 });
+    }
+  }
+  const text = new TextEncoder().encode(JSON.stringify(json));
+  const jsonLength = Math.ceil(text.length / 4) * 4; // padded with spaces
+  const total = 12 + 8 + jsonLength + (nv ? 8 + binLength : 0);
+  const bytes = new Uint8Array(total);
+  const view = new DataView(bytes.buffer);
+  view.setUint32(0, 0x46546c67, true); // "glTF"
+  view.setUint32(4, 2, true);
+  view.setUint32(8, total, true);
+  view.setUint32(12, jsonLength, true);
+  view.setUint32(16, 0x4e4f534a, true); // "JSON"
+  bytes.fill(0x20, 20, 20 + jsonLength);
+  bytes.set(text, 20);
+  if (nv) {
+    let o = 20 + jsonLength;
+    view.setUint32(o, binLength, true);
+    view.setUint32(o + 4, 0x004e4942, true); // "BIN\0"
+    o += 8;
+    for (let i = 0; i < floats.length; i++, o += 4) view.setFloat32(o, floats[i], true);
+    for (let i = 0; i < ni; i++, o += 4) view.setUint32(o, triangles[i], true);
   }
   return bytes;
 }

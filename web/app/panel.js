@@ -29,10 +29,24 @@ export function fileReadError(name, message) {
  */
 export async function readInWorker(worker, file, as) {
   let msg;
+  showFileNote(file.name, []);
   try {
     msg = await worker.request({ type: 'read', as, bytes: await file.arrayBuffer(), name: file.name });
   } catch (err) {
     return err.cancelled ? { cancelled: true } : { error: fileReadError(file.name, err.message) };
   }
-  return msg.type === 'result' ? msg : { error: fileReadError(file.name, msg.message) };
+  if (msg.type !== 'result') return { error: fileReadError(file.name, msg.message) };
+  showFileNote(file.name, msg.warnings ?? []);
+  return msg;
+}
+
+/**
+ * The short note under "Open file…" about what the reader skipped in the file just read
+ * ("fcl.obj: skipped 1 unknown OBJ record "648" (first at line 1)"); hidden when it skipped nothing.
+ */
+export function showFileNote(name, warnings) {
+  const note = document.getElementById('file-note');
+  if (!note) return;
+  note.textContent = warnings.length ? `${name}: ${warnings.join('; ')}` : '';
+  note.hidden = warnings.length === 0;
 }

@@ -14,7 +14,7 @@ import { discTexture, clearGroup } from '../app/stage.js';
 import { fmtInt, fmtReal, fmtMs, fmtDuration } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
 import { readInWorker } from '../app/panel.js';
-import { compact, objText, offText, stlBytes, download } from '../app/export.js';
+import { compact, objText, offText, stlBytes, glbBytes, download } from '../app/export.js';
 import { createGiftwrapStepper, STEP_MAX } from './giftwrap-stepper.js';
 
 const N_MIN = 4;
@@ -927,6 +927,7 @@ export function createHullView({ stage, worker, setState }) {
       const format = button.dataset.export;
       if (format === 'obj') download(`${lastHull.name}.obj`, objText(mesh, note), 'model/obj');
       else if (format === 'off') download(`${lastHull.name}.off`, offText(mesh, note), 'text/plain');
+      else if (format === 'glb') download(`${lastHull.name}.glb`, glbBytes(mesh), 'model/gltf-binary');
       else download(`${lastHull.name}.stl`, stlBytes(mesh, note), 'model/stl');
     });
   }
@@ -1055,7 +1056,7 @@ export function createHullView({ stage, worker, setState }) {
       return urlParamsOf(readParams());
     },
     openFile,
-    fileHint: 'points from OBJ, OFF, PLY, STL or x y z text',
+    fileHint: 'points from OBJ, OFF, PLY, STL, glTF or x y z text',
     busyLabel: () => (job ? `Computing the hull of ${describeInput(job.params)}` : 'Working'),
     cancel() {
       if (job) cancelJob();

@@ -635,7 +635,7 @@ export function createRouteView({ stage, worker, setState, viewport }) {
     urlParams,
     openFile,
     cancel,
-    fileHint: 'a mesh (OBJ, OFF, PLY, STL) as an obstacle or the traverse',
+    fileHint: 'a mesh (OBJ, OFF, PLY, STL, glTF) as an obstacle or the traverse',
     busyLabel: () => 'Checking the route',
   };
 }

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,11 @@ struct DelaunayOptions {
     /// stage where the platform has threads (the WebAssembly build has not). The result is the
     /// same either way.
     unsigned threads = 0;
+    /// Called on the calling thread as the incremental algorithm inserts the distinct points:
+    /// points_done of total, every 65 536 points and once at the end (points_done == total).
+    /// Not called by gift wrapping, nor for fewer than 3 distinct points or collinear ones.
+    /// Leave empty for none.
+    std::function<void(std::size_t points_done, std::size_t total)> progress;
 };
 
 /// A Delaunay triangulation. On failure `error` says what is wrong and, where one point is to

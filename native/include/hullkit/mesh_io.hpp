@@ -19,6 +19,9 @@ namespace hullkit {
 struct PointsResult {
     std::vector<double> xyz;
     std::string error;  ///< empty on success; on failure `xyz` is empty
+    /// What the reader skipped but read on past, one line per kind with its count and first line,
+    /// without the source name: `skipped 1 unknown OBJ record "648" (first at line 1)`.
+    std::vector<std::string> warnings;
 
     bool ok() const { return error.empty(); }
     std::size_t count() const { return xyz.size() / 3; }
@@ -27,7 +30,9 @@ struct PointsResult {
 /// Parses points, detecting the format from the first line that is not blank or a '#' comment:
 ///   - "OFF" ........................ OFF: "nv nf ne", then nv lines "x y z"; faces are ignored.
 ///   - an OBJ keyword (v, vn, f, o, ...) OBJ: each "v x y z [w]" is a point (also the common
-///                                    "v x y z r g b" colour extension); other records ignored.
+///     or a source named .obj           "v x y z r g b" colour extension); other OBJ records are
+///                                    ignored, and unknown records (FCL's "648 1292" count line)
+///                                    skipped with a warning (PointsResult::warnings).
 ///   - one integer, optionally followed by a non-numeric comment ("3 rbox 1000 s D3"):
 ///                                    qhull/rbox: dimension (must be 3), point count, points.
 ///   - anything else .................. plain "x y z" lines, separated by whitespace or one comma.
@@ -54,6 +59,7 @@ PointsResult read_points_file(const std::string& path, unsigned threads = 0);
 struct Points2Result {
     std::vector<double> xy;
     std::string error;  ///< empty on success; on failure `xy` is empty
+    std::vector<std::string> warnings;  ///< as PointsResult::warnings
 
     bool ok() const { return error.empty(); }
     std::size_t count() const { return xy.size() / 2; }
@@ -77,6 +83,7 @@ struct MeshResult {
     std::vector<double> xyz;
     std::vector<std::uint32_t> triangles;
     std::string error;  ///< empty on success; on failure the other fields are empty
+    std::vector<std::string> warnings;  ///< as PointsResult::warnings
 
     bool ok() const { return error.empty(); }
     std::size_t point_count() const { return xyz.size() / 3; }
@@ -101,13 +108,13 @@ bool read_file(const std::string& path, std::string* out, std::string* error);
 // of range, a vertex listed twice, or a triangle corner not listed in Hull::vertices); a Hull
 // returned by hullkit::hull for `points` always fits.
 
-enum class OutputFormat { Off, Obj, Json, Xyz };
+enum class OutputFormat { Off, Obj, Json, Xyz, Glb };
 
-/// "off", "obj", "json", "xyz".
+/// "off", "obj", "json", "xyz", "glb".
 const char* output_format_name(OutputFormat format);
-/// Parses "off" / "obj" / "json" / "xyz" (lower case); returns false and leaves *out alone otherwise.
+/// Parses "off" / "obj" / "json" / "xyz" / "glb" (lower case); returns false and leaves *out alone otherwise.
 bool parse_output_format(const std::string& name, OutputFormat* out);
-/// Picks the format from a file name's extension (".off", ".obj", ".json", ".xyz", any case);
+/// Picks the format from a file name's extension (".off", ".obj", ".json", ".xyz", ".glb", any case);
 /// returns false and leaves *out alone for any other name.
 bool output_format_from_path(const std::string& path, OutputFormat* out);
 
@@ -123,6 +130,12 @@ std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* 
 /// The hull's vertices alone, in the order of Hull::vertices, after a '#' comment line: one
 /// "x y z # INDEX" line each (INDEX: the input index), which parse_points reads back as points.
 std::string write_xyz(PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
+/// Binary glTF 2.0 (.glb), bytes not text: one mesh with one primitive, the hull's vertices (in the
+/// order of Hull::vertices) as float32 POSITION, rounded to the nearest float (so not exact, unlike
+/// the text formats), and its triangles as uint32 indices into them; a hull without triangles (a
+/// segment, a point) is a POINTS primitive, an empty one a scene without nodes. Throws
+/// std::domain_error for a coordinate beyond float's range (about 3.4e38).
+std::string write_glb(PointSpan points, const Hull& hull);
 /// Dispatches to one of the writers above.
 std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
 /// write_hull straight into `file` in ~1 MiB pieces (the text is never held whole). Returns

@@ -59,6 +59,9 @@ public:
 
     /// "source:LINE: what is wrong" or "source: what is wrong"; empty while all is well.
     const std::string& error() const;
+    /// What was skipped so far, as PointsResult::warnings (complete once next() returned false
+    /// without an error): `skipped 1 unknown OBJ record "648" (first at line 1)`.
+    std::vector<std::string> warnings() const;
     /// Points handed out so far.
     std::uint64_t points_read() const;
     /// Bytes of the input consumed so far (for a progress bar against size()).

@@ -18,6 +18,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace hullkit {
 
@@ -37,6 +38,8 @@ struct SceneReadOptions {
 struct SceneResult {
     Scene scene;
     std::string error;  ///< empty on success: "SOURCE: JSON.PATH: what is wrong"
+    /// What the mesh readers skipped: "SOURCE: JSON.PATH: FILE: skipped 1 unknown OBJ record ...".
+    std::vector<std::string> warnings;
 
     bool ok() const { return error.empty(); }
 };

@@ -651,7 +651,7 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
     if (options.algorithm == DelaunayAlgorithm::Giftwrap) {
         faces = delaunay_detail::giftwrap_faces(in);
     } else {
-        delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
+        delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in, options.progress);
         const bool parallel = options.threads != 1 && m >= 50000;
         if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, parallel, out)) {
             mesh = delaunay_detail::Mesh();

@@ -56,7 +56,9 @@ struct Mesh {
     std::uint32_t ghost = 0;
     double span = 0;  ///< coordinate_span of the points
 };
-Mesh incremental_mesh(const Input& input);
+/// `progress` (may be empty): see DelaunayOptions::progress.
+Mesh incremental_mesh(const Input& input,
+                      const std::function<void(std::size_t, std::size_t)>& progress = nullptr);
 /// The Delaunay faces of an incremental mesh (finite triangles, then merge_cocircular_triangles).
 Faces mesh_faces(PointSpan2 points, Mesh mesh);
 

@@ -196,7 +196,7 @@ private:
 
 }  // namespace
 
-Mesh incremental_mesh(const Input& input) {
+Mesh incremental_mesh(const Input& input, const std::function<void(std::size_t, std::size_t)>& progress) {
     const PointSpan2 p = input.points;  // already in Hilbert order: insert them as they come
     const std::uint32_t count = static_cast<std::uint32_t>(p.count);
     // The first triangle: the first two points and the first point off their line.
@@ -211,8 +211,12 @@ Mesh incremental_mesh(const Input& input) {
             tri.start(0, 1, k);
         else
             tri.start(1, 0, k);
-        for (std::uint32_t j = 2; j < count; ++j)
+        constexpr std::uint32_t kProgressEvery = 1u << 16;
+        for (std::uint32_t j = 2; j < count; ++j) {
             if (j != k) tri.insert(j);
+            if (progress && (j + 1) % kProgressEvery == 0) progress(j + 1, count);
+        }
+        if (progress) progress(count, count);
         tri.release(mesh);
     }
     return mesh;

@@ -3,6 +3,7 @@
 
 #include "mesh_read_internal.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -83,6 +84,61 @@ std::string at_line(const std::string& source, std::size_t line, const std::stri
     return source + ":" + std::to_string(line) + ": " + what;
 }
 
+void SkippedRecords::add_kind(const std::string& word, std::uint64_t count, std::size_t first_line) {
+    for (Kind& kind : kinds_) {
+        if (kind.word == word) {
+            kind.count += count;
+            kind.first_line = std::min(kind.first_line, first_line);
+            return;
+        }
+    }
+    // Every kind after the first kMaxKinds - 1 named ones goes to "other" (the empty word).
+    std::size_t named = 0;
+    for (const Kind& kind : kinds_) named += kind.word.empty() ? 0 : 1;
+    if (!word.empty() && named >= kMaxKinds - 1) return add_kind(std::string(), count, first_line);
+    kinds_.push_back(Kind{word, count, first_line});
+}
+
+void SkippedRecords::add(std::string_view word, std::size_t line) {
+    // Records longer than a message shows are told apart by what it shows.
+    add_kind(std::string(word.substr(0, 41)), 1, line);
+}
+
+void SkippedRecords::merge(const SkippedRecords& later, std::size_t line_base) {
+    for (const Kind& kind : later.kinds_) add_kind(kind.word, kind.count, line_base + kind.first_line);
+}
+
+std::vector<std::string> SkippedRecords::messages(const char* what) const {
+    std::vector<std::string> out;
+    std::vector<const Kind*> ordered;
+    for (const Kind& kind : kinds_) ordered.push_back(&kind);
+    // In the order of their first lines ("other" last): the same whatever the pieces were.
+    std::sort(ordered.begin(), ordered.end(), [](const Kind* a, const Kind* b) {
+        if (a->word.empty() != b->word.empty()) return b->word.empty();
+        return a->first_line < b->first_line;
+    });
+    for (const Kind* kind : ordered) {
+        std::string message = "skipped " + std::to_string(kind->count) + " " + (kind->word.empty() ? "other " : "") +
+                              what + (kind->count == 1 ? "" : "s");
+        if (!kind->word.empty()) message += " " + quote(kind->word);
+        message += " (first at line " + std::to_string(kind->first_line) + ")";
+        out.push_back(std::move(message));
+    }
+    return out;
+}
+
+bool is_known_obj_record(std::string_view word) {
+    static const char* const kKnown[] = {
+        "vt",       "vn",       "vp",         "o",         "g",     "s",     "mg",    "mtllib", "usemtl",
+        "maplib",   "usemap",   "l",          "p",         "cstype", "deg",  "bmat",  "step",   "curv",
+        "curv2",    "surf",     "parm",       "trim",      "hole",  "scrv",  "sp",    "end",    "con",
+        "lod",      "bevel",    "c_interp",   "d_interp",  "shadow_obj", "trace_obj", "ctech", "stech"};
+    for (const char* record : kKnown) {
+        if (word == record) return true;
+    }
+    return false;
+}
+
 void append_fan(const std::vector<std::uint32_t>& corners, std::vector<std::uint32_t>* triangles) {
     for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         triangles->insert(triangles->end(), {corners[0], corners[k], corners[k + 1]});
@@ -130,6 +186,13 @@ std::string_view first_word(const std::string& bytes) {
     return {};
 }
 
+/// A JSON object with an "asset" key in its first kilobytes: a glTF.
+bool looks_like_gltf_json(const std::string& bytes) {
+    const std::size_t start = bytes.find_first_not_of(" \t\r\n");
+    if (start == std::string::npos || bytes[start] != '{') return false;
+    return std::string_view(bytes).substr(start, 4096).find("\"asset\"") != std::string_view::npos;
+}
+
 bool is_obj_record(std::string_view word) {
     static const char* const kRecords[] = {"v",  "vt", "vn",     "vp",     "f", "l",      "p",
                                            "o",  "g",  "s",      "mtllib", "usemtl", "cstype"};
@@ -149,12 +212,15 @@ const char* mesh_format_name(MeshFormat format) {
         case MeshFormat::Ply: return "PLY";
         case MeshFormat::StlAscii: return "ASCII STL";
         case MeshFormat::StlBinary: return "binary STL";
+        case MeshFormat::Gltf: return "glTF";
+        case MeshFormat::Glb: return "binary glTF";
     }
     return "unknown";
 }
 
 MeshFormat detect_mesh_format(const std::string& bytes, const std::string& source) {
     if (starts_with_word(bytes, "ply")) return MeshFormat::Ply;
+    if (bytes.compare(0, 4, "glTF") == 0) return MeshFormat::Glb;
     if (io::looks_like_ascii_stl(bytes)) return MeshFormat::StlAscii;
     if (io::has_binary_stl_size(bytes)) return MeshFormat::StlBinary;
     const std::string extension = io::extension_of(source);
@@ -163,7 +229,10 @@ MeshFormat detect_mesh_format(const std::string& bytes, const std::string& sourc
         if (word == "OFF") return MeshFormat::Off;
         if (word == "solid") return MeshFormat::StlAscii;
         if (is_obj_record(word)) return MeshFormat::Obj;
+        if (looks_like_gltf_json(bytes)) return MeshFormat::Gltf;
     }
+    if (extension == "gltf") return MeshFormat::Gltf;
+    if (extension == "glb") return MeshFormat::Glb;
     if (extension == "obj") return MeshFormat::Obj;
     if (extension == "off") return MeshFormat::Off;
     if (extension == "ply") return MeshFormat::Ply;
@@ -172,16 +241,22 @@ MeshFormat detect_mesh_format(const std::string& bytes, const std::string& sourc
 }
 
 MeshResult read_mesh(const std::string& bytes, const std::string& source) {
+    return read_mesh(bytes, source, files_next_to(source));
+}
+
+MeshResult read_mesh(const std::string& bytes, const std::string& source, const ExternalFileLoader& load) {
     MeshResult result;
     switch (detect_mesh_format(bytes, source)) {
+        case MeshFormat::Gltf:
+        case MeshFormat::Glb: result = read_gltf_mesh(bytes, source, load); break;
         case MeshFormat::Obj: result = read_obj_mesh(bytes, source); break;
         case MeshFormat::Off: result = read_off_mesh(bytes, source); break;
         case MeshFormat::Ply: result = read_ply_mesh(bytes, source); break;
         case MeshFormat::StlAscii:
         case MeshFormat::StlBinary: result = read_stl_mesh(bytes, source); break;
         case MeshFormat::Unknown:
-            return io::mesh_error(source + (bytes.empty() ? ": empty file, expected a mesh (OBJ, OFF, PLY or STL)"
-                                                           : ": not a mesh file this reader knows (OBJ, OFF, PLY or STL)"));
+            return io::mesh_error(source + (bytes.empty() ? ": empty file, expected a mesh (OBJ, OFF, PLY, STL or glTF)"
+                                                           : ": not a mesh file this reader knows (OBJ, OFF, PLY, STL or glTF)"));
     }
     if (!result.ok()) return result;
     // read_off_mesh accepts any numbers; the other readers already refuse non-finite ones.
@@ -196,9 +271,10 @@ MeshResult read_mesh(const std::string& bytes, const std::string& source) {
 
 bool starts_like_mesh_file(const std::string& head, std::uint64_t size, const std::string& source) {
     const std::string extension = io::extension_of(source);
-    if (extension == "ply" || extension == "stl") return true;
+    if (extension == "ply" || extension == "stl" || extension == "gltf" || extension == "glb") return true;
     if (extension == "obj" || extension == "off") return false;
-    return starts_with_word(head, "ply") || starts_with_word(head, "solid") || io::has_binary_stl_size(head, size);
+    return starts_with_word(head, "ply") || starts_with_word(head, "solid") || head.compare(0, 4, "glTF") == 0 ||
+           io::has_binary_stl_size(head, size);
 }
 
 PointsResult read_points(const std::string& bytes, const std::string& source) {
@@ -208,26 +284,34 @@ PointsResult read_points(const std::string& bytes, const std::string& source) {
         format = MeshFormat::Ply;
     } else if (extension == "stl") {
         format = MeshFormat::StlBinary;
+    } else if (extension == "gltf" || extension == "glb") {
+        format = MeshFormat::Gltf;
     } else if (extension != "obj" && extension != "off") {
         format = detect_mesh_format(bytes, "");
     }
     PointsResult points;
     if (format == MeshFormat::Ply) return read_ply_points(bytes, source);
-    if (format != MeshFormat::StlAscii && format != MeshFormat::StlBinary) return parse_points(bytes, source);
-    MeshResult mesh = read_mesh(bytes, source);  // STL (ASCII or binary, by content)
+    if (format != MeshFormat::StlAscii && format != MeshFormat::StlBinary && format != MeshFormat::Gltf &&
+        format != MeshFormat::Glb) {
+        return parse_points(bytes, source);
+    }
+    MeshResult mesh = read_mesh(bytes, source);  // STL (ASCII or binary) or glTF (.gltf or .glb), by content
     points.error = std::move(mesh.error);
     points.xyz = std::move(mesh.xyz);
+    points.warnings = std::move(mesh.warnings);
     return points;
 }
 
 Points2Result read_points_2d(const std::string& bytes, const std::string& source) {
     const std::string extension = io::extension_of(source);
     const bool mesh_file = extension == "obj" || extension == "off" || extension == "ply" || extension == "stl" ||
+                           extension == "gltf" || extension == "glb" ||
                            detect_mesh_format(bytes, "") != MeshFormat::Unknown;
     if (!mesh_file) return parse_points_2d(bytes, source);
     const PointsResult points = read_points(bytes, source);
     Points2Result out;
     out.error = points.error;
+    out.warnings = points.warnings;
     out.xy.reserve(2 * points.count());
     for (std::size_t i = 0; i < points.count(); ++i) {
         out.xy.push_back(points.xyz[3 * i]);

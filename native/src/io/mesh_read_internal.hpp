@@ -75,6 +75,37 @@ bool has_binary_stl_size(std::string_view head, std::uint64_t size);
 /// or "endsolid" and no NUL byte in the first kilobyte.
 bool looks_like_ascii_stl(const std::string& bytes);
 
+/// Records a reader skipped, tallied by kind for the result's `warnings`: one entry per kind,
+/// with its count and the first line it was seen on. At most kMaxKinds kinds are named; the
+/// rest are counted together as "other".
+class SkippedRecords {
+public:
+    static constexpr std::size_t kMaxKinds = 8;
+
+    /// A record `word` skipped on `line`.
+    void add(std::string_view word, std::size_t line);
+    /// Appends the tally of a later piece of the same text whose lines are numbered from 1,
+    /// `line_base` lines into the text.
+    void merge(const SkippedRecords& later, std::size_t line_base);
+    bool empty() const { return kinds_.empty(); }
+    /// One message per kind: `skipped 2 unknown OBJ records "648" (first at line 1)`, where
+    /// `what` is "unknown OBJ record".
+    std::vector<std::string> messages(const char* what) const;
+
+private:
+    struct Kind {
+        std::string word;  ///< empty: the "other" kind
+        std::uint64_t count = 0;
+        std::size_t first_line = 0;
+    };
+    void add_kind(const std::string& word, std::uint64_t count, std::size_t first_line);
+    std::vector<Kind> kinds_;
+};
+
+/// Records that an OBJ file may hold and that carry nothing the readers use (texture and normal
+/// vertices, groups, materials, smoothing, polylines, free-form geometry, ...): skipped quietly.
+bool is_known_obj_record(std::string_view word);
+
 /// Appends the triangles of a fan over `corners` (v0 v1 v2, v0 v2 v3, ...).
 void append_fan(const std::vector<std::uint32_t>& corners, std::vector<std::uint32_t>* triangles);
 
@@ -172,6 +203,7 @@ struct PointPiece {
     bool at_limit = false;    ///< OFF: stopped after `limit` points (the rest of the file is faces)
     std::size_t error_line = 0;  ///< 0: no error; else the failing line, counted from the piece's first
     std::string error_what;      ///< what is wrong on that line
+    SkippedRecords skipped;      ///< OBJ: unknown records skipped, lines counted from the piece's first
 };
 
 /// Parses `text`, whole lines of the body of point text (of `header`'s format), appending the

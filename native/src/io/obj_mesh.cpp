@@ -1,27 +1,9 @@
-// OBJ meshes: vertices and faces, other records skipped.
+// OBJ meshes: vertices and faces, other records skipped (unknown ones with a warning).
 #include "hullkit/mesh_read.hpp"
 
 #include "mesh_read_internal.hpp"
 
 namespace hullkit {
-
-namespace {
-
-/// Records that carry no geometry we use (texture and normal vertices, grouping, materials,
-/// smoothing, polylines, points, free-form data).
-bool is_ignored_record(std::string_view word) {
-    static const char* const kIgnored[] = {"vt",  "vn",     "vp",   "o",    "g",    "s",   "mtllib",
-                                           "usemtl", "l",   "p",    "cstype", "deg", "bmat", "step",
-                                           "curv", "curv2", "surf", "parm", "trim", "hole", "scrv",
-                                           "sp",   "end",   "con",  "mg",   "lod",  "bevel", "c_interp",
-                                           "d_interp", "shadow_obj", "trace_obj", "ctech", "stech"};
-    for (const char* record : kIgnored) {
-        if (word == record) return true;
-    }
-    return false;
-}
-
-}  // namespace
 
 MeshResult read_obj_mesh(const std::string& text, const std::string& source) {
     MeshResult result;
@@ -35,6 +17,7 @@ MeshResult read_obj_mesh(const std::string& text, const std::string& source) {
         std::int64_t index;
     };
     std::vector<Pending> forward;
+    io::SkippedRecords skipped;
     auto fail = [&](const std::string& what) { return io::mesh_error(io::at_line(source, lines.line_number(), what)); };
 
     while (lines.next(&line)) {
@@ -81,8 +64,10 @@ MeshResult read_obj_mesh(const std::string& text, const std::string& source) {
                 corners.push_back(static_cast<std::uint32_t>(index));
             }
             io::append_fan(corners, &result.triangles);
-        } else if (!is_ignored_record(record)) {
-            return fail("unknown OBJ record " + io::quote(record));
+        } else if (!io::is_known_obj_record(record)) {
+            // As three.js's OBJLoader and tinyobjloader do: skip it (FCL's meshes start with a
+            // "V F" count line such as "648 1292"), and say so in the result's warnings.
+            skipped.add(record, lines.line_number());
         }
     }
     const std::int64_t count = static_cast<std::int64_t>(result.point_count());
@@ -94,6 +79,7 @@ MeshResult read_obj_mesh(const std::string& text, const std::string& source) {
         }
     }
     if (result.xyz.empty()) return io::mesh_error(source + ": no vertices (\"v x y z\" lines), expected an OBJ mesh");
+    result.warnings = skipped.messages("unknown OBJ record");
     return result;
 }
 

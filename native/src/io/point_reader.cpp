@@ -152,6 +152,8 @@ struct PointReader::Impl {
     std::vector<io::ByteBuffer> spare_buffers;  ///< text buffers no chunk holds, for the next ones
     std::uint64_t last_batch_points = 0;        ///< how many points the last batch had
     std::uint64_t bytes_per_point = 6;          ///< the first batch's guess, from the lines seen first
+    io::SkippedRecords skipped;                 ///< OBJ records skipped so far, for warnings()
+    std::vector<std::string> whole_warnings;    ///< what read_points said of an input read whole
 
     // PLY, and inputs read whole
     std::unique_ptr<io::PlyReader> ply;
@@ -192,7 +194,7 @@ struct PointReader::Impl {
         if (options.text_only) return Mode::Text;
         const std::string extension = io::extension_of(source);
         if (extension == "ply") return Mode::Ply;
-        if (extension == "stl") return Mode::Whole;
+        if (extension == "stl" || extension == "gltf" || extension == "glb") return Mode::Whole;
         if (extension == "obj" || extension == "off") return Mode::Text;
         // On the first 64 KiB detect_mesh_format decides as on the whole input, except that it
         // wants no NUL byte anywhere before it takes a first word "solid" for ASCII STL (reading
@@ -201,7 +203,9 @@ struct PointReader::Impl {
         switch (detect_mesh_format(std::string(head), "")) {
             case MeshFormat::Ply: return Mode::Ply;
             case MeshFormat::StlAscii:
-            case MeshFormat::StlBinary: return Mode::Whole;
+            case MeshFormat::StlBinary:
+            case MeshFormat::Gltf:
+            case MeshFormat::Glb: return Mode::Whole;
             default: break;
         }
         if (size_known) return io::has_binary_stl_size(head, size) ? Mode::Whole : Mode::Text;
@@ -467,6 +471,7 @@ struct PointReader::Impl {
             }
             c.start = static_cast<std::size_t>(before - parsed);
             before += c.piece.points;
+            skipped.merge(c.piece.skipped, line);
             line += c.piece.lines;
             if (c.piece.at_limit) {
                 ++joined;
@@ -554,6 +559,7 @@ struct PointReader::Impl {
             return;
         }
         whole = std::move(result.xyz);
+        whole_warnings = std::move(result.warnings);
         mode = Mode::Whole;
     }
 
@@ -608,6 +614,11 @@ bool PointReader::next(std::vector<double>* xyz) { return impl_->next(xyz, /*rep
 bool PointReader::append_next(std::vector<double>* xyz) { return impl_->next(xyz, /*replace=*/false); }
 
 const std::string& PointReader::error() const { return impl_->error; }
+std::vector<std::string> PointReader::warnings() const {
+    std::vector<std::string> out = impl_->whole_warnings;
+    for (std::string& message : impl_->skipped.messages("unknown OBJ record")) out.push_back(std::move(message));
+    return out;
+}
 std::uint64_t PointReader::points_read() const { return impl_->handed_out; }
 std::uint64_t PointReader::bytes_read() const { return impl_->input.offset(); }
 std::uint64_t PointReader::size() const { return impl_->size_known ? impl_->size : 0; }

@@ -112,6 +112,7 @@ public:
         return false;
     }
     const std::string& error() const { return error_; }
+    std::vector<std::string>& warnings() { return warnings_; }
 
     /// An object whose keys are all in `known` (a rotation key gets its own message).
     bool check_object(const json& value, const std::string& path, std::initializer_list<const char*> known) {
@@ -229,10 +230,19 @@ public:
         if (!load_mesh_) return fail(path, "mesh files cannot be read here");
         std::string bytes, why;
         if (!load_mesh_(file, &bytes, &why)) return fail(path, why);
-        MeshResult result = read_mesh(bytes, file);
+        // A glTF's buffer files are named relative to it, and fetched as the scene's meshes are.
+        const std::size_t slash = file.find_last_of('/');
+        const std::string directory = slash == std::string::npos ? "" : file.substr(0, slash + 1);
+        const MeshLoader& load = load_mesh_;
+        MeshResult result = read_mesh(bytes, file, [&load, directory](const std::string& uri, std::string* out, std::string* why) {
+            return load(!uri.empty() && uri[0] == '/' ? uri : directory + uri, out, why);
+        });
         if (!result.ok()) {
             // Bytes handed in by the JS layer are named after their field: no need to say it twice.
             return file == path ? fail("", result.error) : fail(path, result.error);
+        }
+        for (const std::string& warning : result.warnings) {
+            warnings_.push_back(terminal_safe(source_ + ": " + (file == path ? "" : path + ": ") + file + ": " + warning));
         }
         mesh->xyz = std::move(result.xyz);
         mesh->triangles = std::move(result.triangles);
@@ -308,6 +318,7 @@ private:
     std::string source_;
     const MeshLoader& load_mesh_;
     std::string error_;
+    std::vector<std::string> warnings_;
 };
 
 std::string directory_of(const std::string& path) {
@@ -347,6 +358,8 @@ SceneResult parse_scene(const std::string& json_text, const std::string& source,
     if (!parser.scene(root, options, &result.scene)) {
         result.scene = Scene{};
         result.error = terminal_safe(parser.error());
+    } else {
+        result.warnings = std::move(parser.warnings());
     }
     return result;
 }

@@ -1,0 +1,196 @@
+"""The Python package's benchmark (issue 15), one measurement per process: bench/python_run.sh
+starts this script once per row and alternates the contenders, so that every figure is a first
+call in a fresh process; it prints one JSON line.
+
+    python_bench.py hull --lib hullkit|scipy --n N              ConvexHull of N points on a sphere
+    python_bench.py delaunay --lib hullkit|scipy --n N          Delaunay of N uniform 2D points
+    python_bench.py conversions --n N                           hullkit.hull's time outside the core
+    python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
+    python_bench.py files --mode single|dask --dir D            the hull of those files
+    python_bench.py routes --mode single|dask --legs L --scene S --route R
+"""
+import argparse
+import glob
+import hashlib
+import json
+import os
+import resource
+import sys
+import time
+
+import numpy as np
+
+
+def peak_mb():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+
+
+def sphere(n, seed=15):
+    points = np.random.default_rng(seed).normal(size=(n, 3))
+    return points / np.linalg.norm(points, axis=1)[:, None]
+
+
+def digest(*arrays):
+    h = hashlib.sha256()
+    for a in arrays:
+        h.update(np.ascontiguousarray(a).tobytes())
+    return h.hexdigest()[:16]
+
+
+def run_hull(args):
+    points = sphere(args.n)
+    if args.lib == "hullkit":
+        from hullkit.spatial import ConvexHull
+    else:
+        from scipy.spatial import ConvexHull
+    start = time.perf_counter()
+    h = ConvexHull(points)
+    seconds = time.perf_counter() - start
+    return {"seconds": seconds, "vertices": int(len(h.vertices)), "simplices": int(len(h.simplices)),
+            "volume": float(h.volume), "vertex_set": digest(np.sort(h.vertices))}
+
+
+def run_delaunay(args):
+    points = np.random.default_rng(16).random((args.n, 2))
+    if args.lib == "hullkit":
+        from hullkit.spatial import Delaunay
+    else:
+        from scipy.spatial import Delaunay
+    start = time.perf_counter()
+    d = Delaunay(points)
+    seconds = time.perf_counter() - start
+    return {"seconds": seconds, "simplices": int(len(d.simplices)),
+            "triangle_set": digest(np.sort(np.sort(d.simplices, axis=1), axis=0))}
+
+
+def run_conversions(args):
+    """hullkit.hull's whole call against the core's own time (the same call without the Python
+    layer's conversion and wrapping): C float64 input (no copy) and float32 Fortran input (one
+    converting copy)."""
+    import hullkit
+    from hullkit import _core
+
+    out = {}
+    for name, points in (("float64 C", sphere(args.n)), ("float32 Fortran", np.asfortranarray(sphere(args.n).astype(np.float32)))):
+        start = time.perf_counter()
+        hullkit.hull(points)
+        whole = time.perf_counter() - start
+        converted = np.ascontiguousarray(points, dtype=np.float64)
+        start = time.perf_counter()
+        _core.hull(converted, "quickhull", False, 0)
+        core = time.perf_counter() - start
+        out[name] = {"whole": whole, "core": core, "outside": max(0.0, whole - core) / whole}
+    return out
+
+
+def run_write_ply(args):
+    os.makedirs(args.dir, exist_ok=True)
+    rng = np.random.default_rng(17)
+    per = args.n // args.files
+    for k in range(args.files):
+        count = per if k < args.files - 1 else args.n - per * (args.files - 1)
+        path = os.path.join(args.dir, f"ball-{k:02d}.ply")
+        with open(path, "wb") as f:
+            f.write(f"ply\nformat binary_little_endian 1.0\nelement vertex {count}\nproperty double x\n"
+                    f"property double y\nproperty double z\nend_header\n".encode())
+            left = count
+            while left:
+                m = min(left, 1 << 21)
+                p = rng.normal(size=(m, 3))
+                p *= (rng.random(m) ** (1 / 3) / np.linalg.norm(p, axis=1))[:, None]
+                f.write(np.ascontiguousarray(p, dtype="<f8").tobytes())
+                left -= m
+    return {"files": args.files, "points": args.n, "bytes": sum(os.path.getsize(p) for p in glob.glob(os.path.join(args.dir, "*.ply")))}
+
+
+def run_files(args):
+    import hullkit
+    import hullkit.dask
+
+    paths = sorted(glob.glob(os.path.join(args.dir, "ball-*.ply")))
+    if args.mode == "single":
+        # One process, one thread: each file streamed into its own HullBuilder (the map step, as
+        # a worker does), then the merge; the same work as the cluster's, on one core.
+        start = time.perf_counter()
+        partials = []
+        first = 0
+        for path in paths:
+            part = hullkit._core.hull_file(path, 1)
+            part["index"] = part["index"] + np.uint64(first)
+            first += part["point_count"]
+            partials.append(part)
+        merged = hullkit.dask._merge(partials, 1, final=True)
+        seconds = time.perf_counter() - start
+        h = hullkit.dask.DaskHull(merged)
+        worker_peaks = [peak_mb()]
+    else:
+        from distributed import Client, LocalCluster
+
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+        client = Client(cluster)
+        client.run(lambda: None)  # workers up before the clock starts
+        start = time.perf_counter()
+        h = hullkit.dask.hull(paths, client=client)
+        seconds = time.perf_counter() - start
+        worker_peaks = sorted(client.run(peak_mb).values())
+        client.close()
+        cluster.close()
+    return {"seconds": seconds, "points": h.point_count, "vertices": int(len(h.vertices)),
+            "triangles": digest(h.triangles), "volume_bits": float(h.volume).hex(), "peak_mb": worker_peaks,
+            "process_peak_mb": peak_mb()}
+
+
+def run_routes(args):
+    import hullkit
+    import hullkit.dask
+
+    with open(args.route) as f:
+        waypoints = np.array(json.load(f), dtype=np.float64)
+    # `legs` legs cycling through the route's waypoints, as routes of 10 legs each.
+    cycle = np.array([waypoints[k % len(waypoints)] for k in range(args.legs + 1)])
+    routes = [cycle[k:k + 11] for k in range(0, args.legs, 10)]
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    if args.mode == "single":
+        start = time.perf_counter()
+        checker = hullkit.RouteChecker(args.scene)
+        reports = [checker.check(r, threads=1) for r in routes]
+        seconds = time.perf_counter() - start
+    else:
+        from distributed import Client, LocalCluster
+
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+        client = Client(cluster)
+        client.run(lambda: None)
+        start = time.perf_counter()
+        reports = hullkit.dask.check_routes(args.scene, routes, client=client)
+        seconds = time.perf_counter() - start
+        client.close()
+        cluster.close()
+    text = json.dumps([strip(r) for r in reports], sort_keys=True)
+    return {"seconds": seconds, "legs": sum(len(r["legs"]) for r in reports),
+            "not_clear": sum(leg["status"] != "clear" for r in reports for leg in r["legs"]),
+            "reports": hashlib.sha256(text.encode()).hexdigest()[:16]}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("what", choices=["hull", "delaunay", "conversions", "write-ply", "files", "routes"])
+    parser.add_argument("--lib", default="hullkit")
+    parser.add_argument("--n", type=float, default=1e6)
+    parser.add_argument("--files", type=int, default=16)
+    parser.add_argument("--dir", default="bench/out/python")
+    parser.add_argument("--mode", default="single")
+    parser.add_argument("--legs", type=int, default=10000)
+    parser.add_argument("--scene")
+    parser.add_argument("--route")
+    args = parser.parse_args()
+    args.n = int(args.n)
+    result = {"hull": run_hull, "delaunay": run_delaunay, "conversions": run_conversions, "write-ply": run_write_ply,
+              "files": run_files, "routes": run_routes}[args.what](args)
+    print(json.dumps({"what": args.what, "lib": args.lib, "mode": args.mode, "n": args.n, **result,
+                      "peak_rss_mb": peak_mb()}))
+    sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# The Python package's benchmark (issue 15), side by side in one run; writes
+# bench/results-python.md. Every figure is the first call in a fresh process
+# (bench/python_bench.py, one process per measurement, contenders alternating):
+#   1. hullkit.spatial.ConvexHull against scipy.spatial.ConvexHull, 1e6 points on a sphere;
+#      target hullkit <= 0.2x scipy;
+#   2. hullkit.spatial.Delaunay against scipy.spatial.Delaunay, 1e6 uniform 2D points; target
+#      <= 0.1x scipy;
+#   3. hullkit.hull's time outside the C++ core (converting the input, wrapping the output), for
+#      float64 C input and float32 Fortran input; target <= 5%;
+#   4. the hull of 1e8 points in a ball as 16 binary PLY files: hullkit.dask.hull on a local
+#      cluster of 2 worker processes (1 thread each) against one process doing the same work on
+#      one thread; targets <= 0.65x, identical result, peak memory per worker <= 400 MB;
+#   5. 10 000 route legs (the route benchmark's scene, bench/make_route_scene.mjs):
+#      hullkit.dask.check_routes on the 2-worker cluster against one process, one thread;
+#      target <= 0.65x, identical reports.
+# Environment: HULLKIT_BENCH_QUICK=1 (a tenth of the sizes, one process each; the report goes to
+# bench/out/python/results-python.md), HULLKIT_BENCH_NO_BUILD=1 (use build/python-bench-venv as
+# it is).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+started=$(date +%s)
+quick=${HULLKIT_BENCH_QUICK:-0}
+work=bench/out/python
+mkdir -p "$work"
+say() { printf 'python bench: %s\n' "$*" >&2; }
+cleanup() { rm -rf "$work/ply"; }
+trap cleanup EXIT
+
+venv=build/python-bench-venv
+if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ] || [ ! -x "$venv/bin/python" ]; then
+  say "installing hullkit from ./python into $venv (Debian's /usr/bin/python3, its numpy, scipy, dask)"
+  rm -rf "$venv" python/build python/hullkit.egg-info
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  HULLKIT_BUILD_JOBS=$(nproc) "$venv/bin/pip" install --quiet --no-build-isolation --no-index ./python
+fi
+py() { (cd build && "../$venv/bin/python" ../bench/python_bench.py "$@"); }
+
+if [ "$quick" = 1 ]; then
+  n_hull=100000 n_del=100000 n_files=10000000 legs=1000 procs=1
+  report=$work/results-python.md results=$work/results-quick.jsonl
+else
+  n_hull=1000000 n_del=1000000 n_files=100000000 legs=10000 procs=3
+  report=bench/results-python.md results=$work/results.jsonl
+fi
+: > "$results"
+record() { tee -a "$results" >&2; }
+
+for ((k = 0; k < procs; k++)); do
+  for lib in hullkit scipy; do
+    say "[hull] $lib $n_hull on a sphere, process $((k + 1))"
+    py hull --lib "$lib" --n "$n_hull" | record
+    say "[delaunay] $lib $n_del uniform, process $((k + 1))"
+    py delaunay --lib "$lib" --n "$n_del" | record
+  done
+  say "[conversions] process $((k + 1))"
+  py conversions --n "$n_hull" | record
+done
+
+say "[files] writing $n_files points in a ball as 16 binary PLY files"
+py write-ply --n "$n_files" --files 16 --dir "../$work/ply" | record
+for mode in single dask dask single; do
+  [ "$quick" = 1 ] && [ "$mode" = single ] && [ -n "${did_single:-}" ] && continue
+  say "[files] $mode"
+  py files --mode "$mode" --dir "../$work/ply" | record
+  did_single=1
+done
+
+if [ ! -f bench/out/route-scene.json ]; then
+  say "[routes] writing the route benchmark's scene"
+  node bench/make_route_scene.mjs
+fi
+for ((k = 0; k < procs; k++)); do
+  for mode in single dask; do
+    say "[routes] $mode $legs legs, process $((k + 1))"
+    py routes --mode "$mode" --legs "$legs" --scene ../bench/out/route-scene.json --route ../bench/out/route-clear.json | record
+  done
+done
+
+elapsed=$(($(date +%s) - started))
+"$venv/bin/python" - "$results" "$report" "$elapsed" <<'EOF'
+import json, platform, statistics, subprocess, sys, time
+results, report, elapsed = sys.argv[1], sys.argv[2], int(sys.argv[3])
+rows = [json.loads(line) for line in open(results) if line.strip()]
+def pick(**kw):
+    return [r for r in rows if all(r.get(k) == v for k, v in kw.items())]
+def med(rs, key="seconds"):
+    return statistics.median(r[key] for r in rs) if rs else float("nan")
+def runs(rs, key="seconds"):
+    return ", ".join(f"{r[key]:.3g}" for r in rs)
+def status(ok):
+    return "met" if ok else "not met"
+commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+import numpy, scipy, dask, distributed
+out = [f"# Python package benchmark (issue 15)", "",
+       f"Written by `bash bench/python_run.sh` on {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} in {elapsed // 60} min {elapsed % 60} s. "
+       f"hullkit at commit {commit} plus the working tree, built by pip from ./python (-O3, -ffp-contract=off); Python {platform.python_version()}, "
+       f"numpy {numpy.__version__}, scipy {scipy.__version__} (Qhull), dask {dask.__version__}, distributed {distributed.__version__} (Debian). "
+       "Every figure is the first call in a fresh process (bench/python_bench.py), the contenders alternating; medians over processes, every run listed. "
+       "The machine has 2 cores and is shared: compare ratios.", ""]
+out += ["## 1. scipy.spatial against hullkit.spatial", "",
+        "| call | points | hullkit | scipy | hullkit ÷ scipy | target | same answer | runs hullkit | runs scipy |",
+        "|---|---:|---:|---:|---:|---|---|---|---|"]
+for what, target, key, label in (("hull", 0.2, "vertex_set", "ConvexHull, on a sphere"), ("delaunay", 0.1, "triangle_set", "Delaunay, uniform 2D")):
+    h, s = pick(what=what, lib="hullkit"), pick(what=what, lib="scipy")
+    ratio = med(h) / med(s)
+    same = "yes" if h and s and len({r[key] for r in h + s}) == 1 else "no"
+    out.append(f"| {label} | {h[0]['n'] if h else '-'} | {med(h):.3g} s | {med(s):.3g} s | {ratio:.3f} | <= {target}, {status(ratio <= target)} | {same} | {runs(h)} | {runs(s)} |")
+conv = pick(what="conversions")
+out += ["", "## 2. Time outside the core", "",
+        "`hullkit.hull(points)` against `hullkit._core.hull` on the already converted array (the C++ call alone), 1e6 points on a sphere; \"outside\" = (whole − core) / whole, the share spent converting the input and wrapping the output. Target: <= 5%.", "",
+        "| input | whole, median | core, median | outside, median | target |", "|---|---:|---:|---:|---|"]
+for name in ("float64 C", "float32 Fortran"):
+    if conv:
+        w = statistics.median(r[name]["whole"] for r in conv); c = statistics.median(r[name]["core"] for r in conv)
+        o = statistics.median(r[name]["outside"] for r in conv)
+        out.append(f"| {name} | {w:.3g} s | {c:.3g} s | {100 * o:.1f}% | <= 5%, {status(o <= 0.05)} |")
+files = pick(what="files")
+single, dsk = [r for r in files if r["mode"] == "single"], [r for r in files if r["mode"] == "dask"]
+written = pick(what="write-ply")
+if files:
+    ratio = med(dsk) / med(single)
+    same = "yes" if len({(r["triangles"], r["volume_bits"]) for r in files}) == 1 else "no"
+    worker_peak = max(max(r["peak_mb"]) for r in dsk) if dsk else float("nan")
+    out += ["", "## 3. Hull of files across a cluster", "",
+            f"{written[0]['points'] if written else '?'} points in a ball as {written[0]['files'] if written else '?'} binary little-endian float64 PLY files ({(written[0]['bytes'] / 1e9) if written else 0:.2f} GB). "
+            "dask: `hullkit.dask.hull(files, client)` on `LocalCluster(n_workers=2, threads_per_worker=1, processes=True)` (cluster start not timed); "
+            "single: one process doing the same work on one thread (each file streamed into its own HullBuilder, then the merge). "
+            "Peak memory: each worker process's peak RSS (ru_maxrss), Python, numpy and distributed included.", "",
+            "| run | wall, median | runs | peak RSS |", "|---|---:|---|---|",
+            f"| single process, 1 thread | {med(single):.3g} s | {runs(single)} | {max(r['peak_mb'][0] for r in single):.0f} MB |",
+            f"| dask, 2 workers | {med(dsk):.3g} s | {runs(dsk)} | workers {', '.join(f'{m:.0f}' for r in dsk for m in r['peak_mb'])} MB |",
+            "", "| target | figure | status |", "|---|---:|---|",
+            f"| dask <= 0.65 × single | {ratio:.3f} | {status(ratio <= 0.65)} |",
+            f"| identical result (triangles, volume bits) | {same} | {status(same == 'yes')} |",
+            f"| peak memory per worker <= 400 MB | {worker_peak:.0f} MB | {status(worker_peak <= 400)} |"]
+routes = pick(what="routes")
+if routes:
+    single, dsk = [r for r in routes if r["mode"] == "single"], [r for r in routes if r["mode"] == "dask"]
+    ratio = med(dsk) / med(single)
+    same = "yes" if len({r["reports"] for r in routes}) == 1 else "no"
+    out += ["", "## 4. Route batches across a cluster", "",
+            f"{routes[0]['legs']} legs (routes of 10 legs cycling through bench/out/route-clear.json's waypoints; {routes[0]['not_clear']} not clear) on the route benchmark's scene. "
+            "single: one RouteChecker, one thread, the whole call including building it; dask: `hullkit.dask.check_routes(scene, routes, client)` on the 2-worker cluster (scene made self-contained, sent once per worker, one checker per worker).", "",
+            "| run | wall, median | runs |", "|---|---:|---|",
+            f"| single process, 1 thread | {med(single):.3g} s | {runs(single)} |",
+            f"| dask, 2 workers | {med(dsk):.3g} s | {runs(dsk)} |",
+            "", "| target | figure | status |", "|---|---:|---|",
+            f"| dask <= 0.65 × single | {ratio:.3f} | {status(ratio <= 0.65)} |",
+            f"| identical reports | {same} | {status(same == 'yes')} |"]
+out += ["", f"Raw figures: `{results}` (one JSON line per process)."]
+open(report, "w").write("\n".join(out) + "\n")
+print(f"python bench: wrote {report}", file=sys.stderr)
+EOF
+say "all done in $elapsed s"

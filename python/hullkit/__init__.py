@@ -1,0 +1,313 @@
+"""hullkit: exact convex hulls in 3D, Delaunay triangulations in 2D and route checks with swept
+traverses, from hullkit's C++ core.
+
+Every decision is made by exact predicates, so flat, collinear, repeated and nearly degenerate
+inputs get an answer rather than an error. ``hullkit.spatial`` offers scipy.spatial's
+``ConvexHull`` and ``Delaunay`` on the same core; ``hullkit.dask`` spreads hulls and route checks
+over a Dask cluster.
+"""
+import json as _json
+import os as _os
+
+import numpy as _np
+
+from . import _core
+
+__all__ = [
+    "HullkitError", "Hull", "hull", "verify", "HullBuilder", "Delaunay", "delaunay", "verify_delaunay",
+    "check_route", "RouteChecker", "read_points", "read_mesh",
+]
+__version__ = "0.1.0"
+
+
+class HullkitError(ValueError):
+    """A problem with the input, as the C++ core words it. ``point`` is the index of the point to
+    blame, or None."""
+
+    def __init__(self, message, point=None):
+        super().__init__(message)
+        self.point = point
+
+
+class _translated:
+    """Turns the core's errors into HullkitError (argument errors from the binding too)."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, error, trace):
+        if kind is None:
+            return False
+        if issubclass(kind, _core.CoreError):
+            message, point = error.args
+            raise HullkitError(message, None if point < 0 else int(point)) from None
+        if issubclass(kind, (ValueError, TypeError)) and not issubclass(kind, HullkitError):
+            raise HullkitError(str(error)) from None
+        return False
+
+
+def as_points(points, dims, what="points"):
+    """The points as a C-ordered float64 array of shape (n, dims): converted once (anything numpy
+    converts; Fortran order and other dtypes are copied), or HullkitError naming the problem."""
+    try:
+        array = _np.ascontiguousarray(points, dtype=_np.float64)
+    except (TypeError, ValueError) as error:
+        raise HullkitError(f"{what} must be numbers convertible to float64: {error}") from None
+    if array.ndim != 2 or array.shape[1] != dims:
+        raise HullkitError(f"{what} must have shape (n, {dims}), got {array.shape}")
+    return array
+
+
+def _threads(threads):
+    if isinstance(threads, bool) or not isinstance(threads, (int, _np.integer)) or threads < 0:
+        raise HullkitError(f"threads must be a non-negative integer, got {threads!r}")
+    return int(threads)
+
+
+def _read_only(array):
+    array.flags.writeable = False
+    return array
+
+
+# ---- hulls ---------------------------------------------------------------------------------------
+
+class Hull:
+    """The convex hull of points in 3D, as the C++ core gives it.
+
+    ``dimension``: the affine dimension of the points (3 a polytope, 2 a polygon, 1 a segment,
+    0 one point, -1 none). ``triangles`` (m, 3) uint32, counter-clockwise seen from outside;
+    ``vertices`` uint32 (ascending for a polytope, in order around a polygon); ``volume`` and
+    ``area`` (a polygon: volume 0, area its area); ``normal`` for a polygon; with
+    ``merge_coplanar`` the planar faces as ``faces`` (a list of uint32 arrays), else None."""
+
+    def __init__(self, result, points):
+        self._result = result
+        self.points = points
+        self.dimension = int(result["dimension"])
+        self.triangles = result["triangles"].reshape(-1, 3)
+        self.vertices = result["vertices"]
+        self.volume = float(result["volume"])
+        self.area = float(result["area"])
+        self.normal = _np.array(result["normal"], dtype=_np.float64)
+        offsets, corners = result["face_offsets"], result["face_vertices"]
+        self.faces = [corners[offsets[k]: offsets[k + 1]] for k in range(len(offsets) - 1)] if len(offsets) else None
+
+    def __repr__(self):
+        return (f"hullkit.Hull(dimension={self.dimension}, vertices={len(self.vertices)}, "
+                f"triangles={len(self.triangles)}, volume={self.volume!r}, area={self.area!r})")
+
+
+def hull(points, algorithm="quickhull", merge_coplanar=False, threads=0):
+    """The exact convex hull of ``points`` (array-like, shape (n, 3)).
+
+    ``algorithm``: "quickhull" (default) or "giftwrap" (the seed's gift wrapping, O(n h)).
+    ``threads``: 0 every core, 1 the calling thread only; the result is the same bits for any
+    value. Raises HullkitError on NaN or infinite coordinates (naming the point), a wrong shape
+    or an unknown option."""
+    array = as_points(points, 3)
+    with _translated():
+        result = _core.hull(array, str(algorithm), bool(merge_coplanar), _threads(threads))
+    return Hull(result, array)
+
+
+def verify(points, hull_or_triangles):
+    """An exact check that a hull (a Hull, or triangles (m, 3) of a hull with volume) is the
+    convex hull of ``points``. Returns a dict: ok, problems (one line each), problem_count, notes,
+    checked_points, triangle_count, vertex_count, face_count, dimension."""
+    array = as_points(points, 3)
+    with _translated():
+        if isinstance(hull_or_triangles, Hull):
+            return _core.verify_hull(array, hull_or_triangles._result)
+        triangles = _np.ascontiguousarray(hull_or_triangles, dtype=_np.uint32)
+        return _core.verify_triangles(array, triangles)
+
+
+class HullBuilder:
+    """The hull of a cloud given in pieces (hullkit::HullBuilder): ``add(points, first_index)``
+    or ``add_indexed(points, indices)`` any number of times, then ``finish()``. Holds only the
+    running hull's vertices between calls. Indices are 64-bit. ``finish()`` returns a dict:
+    ``hull`` (a Hull over ``points``, the kept points), ``points`` (k, 3), ``index`` (k,) uint64
+    (the caller's index of each kept point), ``point_count``; the hull of the whole cloud has
+    triangle corners ``index[hull.triangles]``, the same arrays as hull() of the whole."""
+
+    def __init__(self, algorithm="quickhull", threads=0):
+        with _translated():
+            self._builder = _core.HullBuilder(str(algorithm), _threads(threads))
+
+    def add(self, points, first_index=0):
+        if isinstance(first_index, bool) or not isinstance(first_index, (int, _np.integer)) or first_index < 0:
+            raise HullkitError(f"first_index must be a non-negative integer, got {first_index!r}")
+        with _translated():
+            self._builder.add(as_points(points, 3), int(first_index))
+
+    def add_indexed(self, points, indices):
+        array = as_points(points, 3)
+        index = _np.ascontiguousarray(indices, dtype=_np.uint64)
+        if index.shape != (len(array),):
+            raise HullkitError(f"indices must have shape ({len(array)},), got {index.shape}")
+        with _translated():
+            self._builder.add_indexed(array, index)
+
+    def finish(self):
+        with _translated():
+            out = self._builder.finish()
+        out["hull"] = Hull(out["hull"], out["points"])
+        return out
+
+    @property
+    def points_added(self):
+        return self._builder.points_added
+
+
+# ---- Delaunay ------------------------------------------------------------------------------------
+
+class Delaunay:
+    """A Delaunay triangulation in delaunator's layout (as hullkit's JS ``delaunay``): flat
+    ``triangles`` (uint32, 3 per triangle, clockwise with y up), ``halfedges`` (int32, -1 on the
+    hull), ``hull`` (uint32 cycle), ``representative`` (uint32: each point's lowest identical
+    point), ``dimension`` (2, 1 collinear, 0 one point, -1 none). Arrays are read-only views."""
+
+    def __init__(self, core, points):
+        self._core = core
+        self.points = points
+        self.dimension = core.dimension
+        self.triangles = _read_only(core.triangles)
+        self.halfedges = _read_only(core.halfedges)
+        self.hull = _read_only(core.hull)
+        self.representative = _read_only(core.representative)
+        self.duplicate_count = core.duplicate_count
+        offsets, corners = core.polygon_offsets, core.polygon_vertices
+        self.polygons = [corners[offsets[k]: offsets[k + 1]] for k in range(len(offsets) - 1)] if len(offsets) else None
+
+    def find(self, x, y=None, start=-1):
+        """The index of the input point nearest to (x, y), exactly (ties: the lowest index); -1
+        without points. ``x`` may also be an (n, 2) array of queries: then an int64 array."""
+        if y is None:
+            queries = as_points(x, 2, "queries")
+            with _translated():
+                return self._core.find(queries, int(start))
+        with _translated():
+            return int(self._core.find(as_points([[x, y]], 2, "query"), int(start))[0])
+
+    def voronoi(self, bounds=None):
+        """Voronoi cells clipped to ``bounds`` (xmin, ymin, xmax, ymax; default the points'
+        bounding box): a list, per input point, of its cell's corners as an (k, 2) array,
+        counter-clockwise (empty for duplicates and cells outside the box)."""
+        if bounds is None:
+            if len(self.points) == 0:
+                return []
+            lo, hi = self.points.min(axis=0), self.points.max(axis=0)
+            pad = _np.where(hi > lo, 0.0, 1.0)
+            bounds = (lo[0] - pad[0], lo[1] - pad[1], hi[0] + pad[0], hi[1] + pad[1])
+        with _translated():
+            offsets, xy = self._core.voronoi(*map(float, bounds))
+        return [xy[offsets[i]: offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+    def __repr__(self):
+        return f"hullkit.Delaunay(points={len(self.points)}, triangles={len(self.triangles) // 3}, dimension={self.dimension})"
+
+
+def delaunay(points, algorithm="incremental", merge_cocircular=False, threads=0):
+    """The exact Delaunay triangulation of ``points`` (array-like, shape (n, 2)); see Delaunay.
+    ``algorithm``: "incremental" (default) or "giftwrap" (the seed's, on the lifted points)."""
+    array = as_points(points, 2)
+    with _translated():
+        core = _core.Triangulation(array, str(algorithm), bool(merge_cocircular), _threads(threads))
+    return Delaunay(core, array)
+
+
+def verify_delaunay(points, triangles):
+    """An exact check that flat ``triangles`` are a Delaunay triangulation of the distinct points
+    (empty circles by the exact in-circle test). A dict: ok, problems, problem_count,
+    distinct_points, hull_points."""
+    array = as_points(points, 2)
+    flat = _np.ascontiguousarray(triangles, dtype=_np.uint32).ravel()
+    with _translated():
+        return _core.verify_delaunay(array, flat)
+
+
+# ---- route checking ------------------------------------------------------------------------------
+
+def _scene_json(scene):
+    """(json text, source name, directory for mesh files) of a scene given as a dict (numpy
+    arrays allowed) or a path to a JSON file."""
+    if isinstance(scene, (str, _os.PathLike)):
+        path = _os.fspath(scene)
+        try:
+            with open(path, "rb") as file:
+                text = file.read().decode("utf-8")
+        except OSError as error:
+            raise HullkitError(f"{path}: cannot open: {error.strerror}") from None
+        except UnicodeDecodeError:
+            raise HullkitError(f"{path}: not UTF-8 text") from None
+        return text, path, _os.path.dirname(path) or "."
+    if isinstance(scene, dict):
+        def plain(value):
+            if isinstance(value, _np.ndarray):
+                return value.tolist()
+            if isinstance(value, (_np.integer, _np.floating)):
+                return value.item()
+            raise TypeError(f"{type(value).__name__} is not JSON")
+        try:
+            return _json.dumps(scene, default=plain, allow_nan=True), "scene", "."
+        except (TypeError, ValueError) as error:
+            raise HullkitError(f"scene: {error}") from None
+    raise HullkitError(f"a scene is a dict or the path of a JSON file, got {type(scene).__name__}")
+
+
+class RouteChecker:
+    """A scene prepared once (hulls, bounding-volume hierarchy) for many route checks, as the
+    page's dragging does. ``scene``: a dict in ``hullkit route``'s JSON format (meshes inline as
+    "vertices"/"triangles", numpy arrays allowed, or "mesh" files relative to the current
+    directory) or the path of a scene file (mesh files relative to it)."""
+
+    def __init__(self, scene):
+        text, source, directory = _scene_json(scene)
+        with _translated():
+            self._core = _core.RouteChecker(text, source, directory)
+
+    def check(self, route=None, clearance=True, samples=0, threads=0):
+        """The report of ``route`` (waypoints, shape (k, 3); default the scene's own) as a dict in
+        ``hullkit route``'s JSON format: clear, min_clearance, legs (each with status "clear",
+        "hit" or "start-overlap" and its details), build_seconds, seconds."""
+        waypoints = _np.zeros((0, 3)) if route is None else as_points(route, 3, "route")
+        if route is not None and len(waypoints) < 2:
+            raise HullkitError(f"a route needs at least 2 waypoints, got {len(waypoints)}")
+        if route is None and self._core.scene_waypoints == 0:
+            raise HullkitError("the scene has no route: pass one to check()")
+        if isinstance(samples, bool) or not isinstance(samples, (int, _np.integer)) or samples < 0:
+            raise HullkitError(f"samples must be a non-negative integer, got {samples!r}")
+        with _translated():
+            text = self._core.check(waypoints, bool(clearance), int(samples), _threads(threads))
+        return _json.loads(text)
+
+    @property
+    def build_seconds(self):
+        return self._core.build_seconds
+
+
+def check_route(scene, clearance=True, samples=0, threads=0):
+    """One check of a scene's own route: RouteChecker(scene).check(...)."""
+    return RouteChecker(scene).check(None, clearance=clearance, samples=samples, threads=threads)
+
+
+# ---- readers -------------------------------------------------------------------------------------
+
+def read_points(path, threads=0):
+    """Every point of a point file (xyz text, rbox, OBJ, OFF, PLY, STL) as an (n, 3) float64
+    array; text is parsed on ``threads`` threads (0: every core). Errors name file and line."""
+    with _translated():
+        return _core.read_points(_os.fspath(path), _threads(threads))
+
+
+def read_mesh(path):
+    """A triangle mesh file (OBJ, OFF, PLY, STL): (vertices (n, 3) float64, triangles (m, 3)
+    uint32). Errors name file and line."""
+    path = _os.fspath(path)
+    try:
+        with open(path, "rb") as file:
+            data = file.read()
+    except OSError as error:
+        raise HullkitError(f"{path}: cannot open: {error.strerror}") from None
+    with _translated():
+        return _core.read_mesh(data, path)

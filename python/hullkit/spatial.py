@@ -1,0 +1,220 @@
+"""scipy.spatial's ConvexHull and Delaunay on hullkit's exact core: switching is a change of
+import.
+
+    from hullkit.spatial import ConvexHull, Delaunay   # instead of: from scipy.spatial import ...
+
+The attributes have scipy's names, shapes, dtypes and conventions. Where scipy raises
+(QhullError on flat, collinear, repeated or too few points), hullkit answers, and ``dimension``
+(an attribute scipy lacks) says what the points span:
+
+* 3D points spanning a plane (``dimension`` 2): ``vertices`` the polygon's corners in order,
+  ``simplices`` the triangles fanning it, ``equations`` their plane (one row each, the normal
+  ``hullkit.hull`` reports), ``volume`` 0, ``area`` the polygon's area (one side).
+* points on a line (``dimension`` 1): ``vertices`` the two ends; in 2D ``simplices`` the segment
+  as a degenerate polygon (both directions), ``volume`` 0, ``area`` twice its length (the
+  perimeter); in 3D no simplices, ``volume`` and ``area`` 0.
+* one distinct point (``dimension`` 0) or none (-1): that point (or nothing) as ``vertices``, no
+  simplices.
+
+Delaunay (2D): ``simplices`` counter-clockwise, ``neighbors``, ``find_simplex`` (exact point
+location; -1 outside), ``convex_hull``, ``vertex_neighbor_vertices``, ``transform``, ``coplanar``
+(here: the exact duplicates, each with a simplex of the point that represents it and that
+point), ``points``, ``npoints``, ``ndim``, ``nsimplex``, ``min_bound``, ``max_bound``;
+and ``dimension``. Collinear points (``dimension`` 1) or one distinct point (0) give no
+simplices; ``convex_hull`` is then the chain of edges along the line (or empty),
+``vertex_neighbor_vertices`` links each point to its neighbours along it, and ``find_simplex``
+answers -1. Delaunay in 3D is not supported.
+
+Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
+point). Options scipy has and hullkit does not (qhull_options, incremental, furthest_site,
+dimensions beyond 3) raise a clear "not supported".
+"""
+import numpy as _np
+
+from . import HullkitError, _core, _translated, as_points, delaunay, hull
+
+__all__ = ["ConvexHull", "Delaunay"]
+
+
+def _not_supported(what, cls="ConvexHull"):
+    raise HullkitError(f"{what} is not supported by hullkit.spatial.{cls} (hullkit is exact; it has no Qhull options)")
+
+
+class ConvexHull:
+    """The convex hull of points in 2 or 3 dimensions (see the module's documentation).
+
+    Attributes (scipy's): points, vertices, simplices, neighbors, equations, volume, area,
+    npoints, ndim, min_bound, max_bound; and dimension."""
+
+    def __init__(self, points, incremental=False, qhull_options=None):
+        if incremental:
+            _not_supported("incremental=True")
+        if qhull_options is not None:
+            _not_supported(f"qhull_options={qhull_options!r}")
+        try:
+            array = _np.ascontiguousarray(points, dtype=_np.float64)
+        except (TypeError, ValueError) as error:
+            raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
+        if array.ndim != 2 or array.shape[1] not in (2, 3):
+            if array.ndim == 2 and array.shape[1] > 3:
+                _not_supported(f"a hull in {array.shape[1]} dimensions")
+            raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
+        self.points = array
+        self.npoints, self.ndim = array.shape
+        self.min_bound = array.min(axis=0) if len(array) else _np.full(self.ndim, _np.nan)
+        self.max_bound = array.max(axis=0) if len(array) else _np.full(self.ndim, _np.nan)
+        if self.ndim == 3:
+            self._from_3d(hull(as_points(array, 3)))
+        else:
+            self._from_2d(array)
+
+    # -- 3D ------------------------------------------------------------------------------------
+    def _from_3d(self, h):
+        self.dimension = h.dimension
+        # scipy: vertices "in input order" for 3D; a polygon's come in order around it.
+        self.vertices = h.vertices.astype(_np.int32)
+        self.simplices = h.triangles.astype(_np.int32)
+        self.volume, self.area = h.volume, h.area
+        with _translated():
+            neighbors, equations = _core.surface_extras(h.points, _np.ascontiguousarray(h.triangles))
+        self.neighbors = neighbors
+        if h.dimension == 2:
+            normal = h.normal
+            offset = -float(normal @ self.points[self.vertices[0]])
+            self.equations = _np.tile(_np.append(normal, offset), (len(self.simplices), 1))
+        else:
+            self.equations = equations
+
+    # -- 2D ------------------------------------------------------------------------------------
+    def _from_2d(self, xy):
+        lifted = _np.zeros((len(xy), 3))
+        lifted[:, :2] = xy
+        # A polygon in z = 0 comes counter-clockwise seen from +z (hullkit.Hull's rule: seen from
+        # the side of the normal's largest component), which is scipy's counter-clockwise in 2D.
+        h = hull(lifted)
+        self.dimension = h.dimension
+        self.vertices = h.vertices.astype(_np.int32)
+        m = len(self.vertices)
+        if h.dimension >= 1:
+            following = _np.roll(self.vertices, -1)
+            self.simplices = _np.stack([self.vertices, following], axis=1).astype(_np.int32)
+            edges = xy[following] - xy[self.vertices]
+            lengths = _np.hypot(edges[:, 0], edges[:, 1])
+            normals = _np.stack([edges[:, 1], -edges[:, 0]], axis=1) / lengths[:, None]
+            offsets = -_np.einsum("ij,ij->i", normals, xy[self.vertices])
+            self.equations = _np.concatenate([normals, offsets[:, None]], axis=1)
+            self.area = float(lengths.sum())
+            self.volume = float(h.area) if h.dimension == 2 else 0.0
+            # Edge k joins vertex k and k + 1: opposite its vertex 0 lies edge k + 1, opposite
+            # its vertex 1 edge k - 1.
+            k = _np.arange(m, dtype=_np.int32)
+            self.neighbors = _np.stack([(k + 1) % m, (k - 1) % m], axis=1).astype(_np.int32)
+        else:
+            self.simplices = _np.zeros((0, 2), dtype=_np.int32)
+            self.equations = _np.zeros((0, 3))
+            self.neighbors = _np.zeros((0, 2), dtype=_np.int32)
+            self.area = self.volume = 0.0
+
+    def __repr__(self):
+        return (f"hullkit.spatial.ConvexHull(npoints={self.npoints}, ndim={self.ndim}, dimension={self.dimension}, "
+                f"vertices={len(self.vertices)}, simplices={len(self.simplices)})")
+
+
+class Delaunay:
+    """The Delaunay triangulation of points in the plane, exact (see the module's documentation).
+
+    Attributes (scipy's): points, simplices, neighbors, convex_hull, vertex_neighbor_vertices,
+    transform, coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and dimension. Method:
+    find_simplex."""
+
+    def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
+        for flag, what in ((furthest_site, "furthest_site=True"), (incremental, "incremental=True")):
+            if flag:
+                _not_supported(what, "Delaunay")
+        if qhull_options is not None:
+            _not_supported(f"qhull_options={qhull_options!r}", "Delaunay")
+        try:
+            array = _np.ascontiguousarray(points, dtype=_np.float64)
+        except (TypeError, ValueError) as error:
+            raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
+        if array.ndim != 2 or array.shape[1] != 2:
+            if array.ndim == 2 and array.shape[1] >= 3:
+                _not_supported(f"Delaunay in {array.shape[1]} dimensions", "Delaunay")
+            raise HullkitError(f"points must have shape (n, 2), got {array.shape}")
+        self.points = array
+        self.npoints, self.ndim = array.shape
+        self.min_bound = array.min(axis=0) if len(array) else _np.full(2, _np.nan)
+        self.max_bound = array.max(axis=0) if len(array) else _np.full(2, _np.nan)
+        self._triangulation = d = delaunay(array)
+        self.dimension = d.dimension
+        # hullkit's triangles are clockwise with y up (delaunator's); scipy's counter-clockwise.
+        triangles = _np.asarray(d.triangles, dtype=_np.int32).reshape(-1, 3)
+        self.simplices = _np.ascontiguousarray(triangles[:, [0, 2, 1]])
+        self.nsimplex = len(self.simplices)
+        self.neighbors = self._neighbors(_np.asarray(d.halfedges, dtype=_np.int64))
+        hull_cycle = _np.asarray(d.hull, dtype=_np.int32)
+        if d.dimension == 2:
+            self.convex_hull = _np.stack([hull_cycle, _np.roll(hull_cycle, -1)], axis=1)
+        elif d.dimension == 1:  # the points in order along the line: the chain of edges
+            self.convex_hull = _np.stack([hull_cycle[:-1], hull_cycle[1:]], axis=1)
+        else:
+            self.convex_hull = _np.zeros((0, 2), dtype=_np.int32)
+        representative = _np.asarray(d.representative, dtype=_np.int64)
+        repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
+        simplex_of = _np.full(self.npoints, -1, dtype=_np.int64)
+        if self.nsimplex:
+            simplex_of[self.simplices.ravel()] = _np.repeat(_np.arange(self.nsimplex), 3)
+        self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
+                                  axis=1).astype(_np.int32) if len(repeats) else _np.zeros((0, 3), dtype=_np.int32)
+
+    def _neighbors(self, halfedges):
+        """neighbors[i, j]: the simplex opposite corner j of simplex i, -1 on the hull. Simplex i's
+        corners (scipy order) are hullkit's corners 0, 2, 1; opposite corner j lies hullkit's
+        half-edge 3i + (1, 0, 2)[j] (the edge joining the other two)."""
+        if self.nsimplex == 0:
+            return _np.zeros((0, 3), dtype=_np.int32)
+        across = halfedges.reshape(-1, 3)[:, [1, 0, 2]]
+        return _np.where(across >= 0, across // 3, -1).astype(_np.int32)
+
+    def find_simplex(self, xi, bruteforce=False, tol=None):
+        """The simplex containing each point of ``xi`` (shape (..., 2)), -1 outside the hull;
+        exact (a point on an edge gets one of the two simplices). ``bruteforce`` and ``tol`` are
+        accepted for scipy's signature and change nothing: the location is exact."""
+        array = _np.asarray(xi, dtype=_np.float64)
+        if array.shape[-1:] != (2,):
+            raise HullkitError(f"xi must have shape (..., 2), got {array.shape}")
+        flat = as_points(array.reshape(-1, 2), 2, "xi")
+        with _translated():
+            found = self._triangulation._core.locate(flat)
+        return found.astype(_np.int32).reshape(array.shape[:-1])
+
+    @property
+    def vertex_neighbor_vertices(self):
+        """(indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]]."""
+        if self.nsimplex:
+            s = self.simplices.astype(_np.int64)
+            edges = _np.concatenate([s[:, [0, 1]], s[:, [1, 2]], s[:, [2, 0]]])
+        else:
+            edges = self.convex_hull.astype(_np.int64)
+        both = _np.concatenate([edges, edges[:, ::-1]])
+        both = _np.unique(both, axis=0)
+        indptr = _np.searchsorted(both[:, 0], _np.arange(self.npoints + 1)).astype(_np.int32)
+        return indptr, both[:, 1].astype(_np.int32)
+
+    @property
+    def transform(self):
+        """Barycentric transforms (nsimplex, 3, 2): c = T^-1 (x - r) with T^-1 = transform[i, :2]
+        and r = transform[i, 2] (the simplex's last corner), as scipy's."""
+        if self.nsimplex == 0:
+            return _np.zeros((0, 3, 2))
+        corners = self.points[self.simplices]
+        r = corners[:, 2]
+        t = _np.stack([corners[:, 0] - r, corners[:, 1] - r], axis=2)  # columns: v0 - r, v1 - r
+        out = _np.empty((self.nsimplex, 3, 2))
+        out[:, :2] = _np.linalg.inv(t)
+        out[:, 2] = r
+        return out
+
+    def __repr__(self):
+        return (f"hullkit.spatial.Delaunay(npoints={self.npoints}, nsimplex={self.nsimplex}, "
+                f"dimension={self.dimension})")

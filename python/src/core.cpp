@@ -1,0 +1,571 @@
+// hullkit._core: the C++ core for Python (pybind11). Thin: numpy arrays in (float64, C order;
+// the Python layer converts once and checks shapes), numpy arrays out that own the core's vectors
+// (moved, not copied); the Python package (hullkit/__init__.py, spatial.py, dask.py) shapes the
+// API. Long calls release the GIL. Errors from the core raise CoreError(message, point), which the
+// Python layer turns into hullkit.HullkitError.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hullkit/delaunay.hpp"
+#include "hullkit/hull.hpp"
+#include "hullkit/mesh_read.hpp"
+#include "hullkit/point_reader.hpp"
+#include "hullkit/predicates.hpp"
+#include "hullkit/route.hpp"
+#include "hullkit/scene_io.hpp"
+#include "hullkit/verify.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using Points = py::array_t<double, py::array::c_style>;
+
+/// A numpy array of `shape` that takes over `values` (no copy): the vector lives in a capsule
+/// that the array keeps alive.
+template <class T>
+py::array_t<T> owned(std::vector<T>&& values, std::vector<py::ssize_t> shape = {}) {
+    auto* heap = new std::vector<T>(std::move(values));
+    py::capsule keeper(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    if (shape.empty()) shape = {static_cast<py::ssize_t>(heap->size())};
+    return py::array_t<T>(shape, heap->data(), keeper);
+}
+
+/// (n, 3) float64 from a flat x y z vector.
+py::array_t<double> owned_points(std::vector<double>&& xyz, py::ssize_t dims = 3) {
+    const auto n = static_cast<py::ssize_t>(xyz.size()) / dims;
+    return owned(std::move(xyz), {n, dims});
+}
+
+struct CoreError : std::runtime_error {
+    CoreError(const std::string& message, std::int64_t point_) : std::runtime_error(message), point(point_) {}
+    std::int64_t point;
+};
+
+std::size_t rows(const Points& points, py::ssize_t dims, const char* what) {
+    if (points.ndim() != 2 || points.shape(1) != dims)
+        throw std::invalid_argument(std::string(what) + " must have shape (n, " + std::to_string(dims) + ")");
+    return static_cast<std::size_t>(points.shape(0));
+}
+
+py::dict hull_dict(hullkit::Hull&& result) {
+    py::dict out;
+    out["dimension"] = result.dimension;
+    out["triangles"] = owned(std::move(result.triangles));
+    out["vertices"] = owned(std::move(result.vertices));
+    out["face_offsets"] = owned(std::move(result.face_offsets));
+    out["face_vertices"] = owned(std::move(result.face_vertices));
+    out["normal"] = py::make_tuple(result.normal[0], result.normal[1], result.normal[2]);
+    out["volume"] = result.volume;
+    out["area"] = result.area;
+    return out;
+}
+
+hullkit::HullOptions hull_options(const std::string& algorithm, bool merge_coplanar, unsigned threads) {
+    hullkit::HullOptions options;
+    if (!hullkit::parse_algorithm(algorithm, &options.algorithm))
+        throw std::invalid_argument("unknown algorithm \"" + algorithm + "\" (quickhull or giftwrap)");
+    options.merge_coplanar = merge_coplanar;
+    options.threads = threads;
+    return options;
+}
+
+py::dict hull(const Points& points, const std::string& algorithm, bool merge_coplanar, unsigned threads) {
+    const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+    const hullkit::HullOptions options = hull_options(algorithm, merge_coplanar, threads);
+    hullkit::Hull result;
+    {
+        py::gil_scoped_release unlocked;  // the arrays are only read; other Python threads may run
+        result = hullkit::hull(span, options);
+    }
+    if (!result.ok()) throw CoreError(result.error, result.error_point);
+    return hull_dict(std::move(result));
+}
+
+py::dict report_dict(const hullkit::VerifyReport& report) {
+    py::dict out;
+    out["ok"] = report.ok;
+    out["problems"] = report.lines();
+    out["problem_count"] = report.problem_count;
+    out["notes"] = report.notes;
+    out["checked_points"] = report.checked_points;
+    out["triangle_count"] = report.triangle_count;
+    out["vertex_count"] = report.vertex_count;
+    out["face_count"] = report.face_count;
+    out["dimension"] = report.dimension;
+    return out;
+}
+
+/// Checks triangles (m, 3) as the hull of points with volume.
+py::dict verify_triangles(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
+    const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+    if (triangles.ndim() != 2 || triangles.shape(1) != 3) throw std::invalid_argument("triangles must have shape (m, 3)");
+    hullkit::VerifyReport report;
+    {
+        py::gil_scoped_release unlocked;
+        report = hullkit::verify(span, triangles.data(), static_cast<std::size_t>(triangles.shape(0)));
+    }
+    return report_dict(report);
+}
+
+/// Checks a hull result (the dict hull() returned) of any dimension.
+py::dict verify_hull(const Points& points, const py::dict& result) {
+    const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+    hullkit::Hull h;
+    h.dimension = result["dimension"].cast<int>();
+    h.triangles = result["triangles"].cast<std::vector<std::uint32_t>>();
+    h.vertices = result["vertices"].cast<std::vector<std::uint32_t>>();
+    h.face_offsets = result["face_offsets"].cast<std::vector<std::uint32_t>>();
+    h.face_vertices = result["face_vertices"].cast<std::vector<std::uint32_t>>();
+    const auto normal = result["normal"].cast<std::vector<double>>();
+    for (std::size_t k = 0; k < 3 && k < normal.size(); ++k) h.normal[k] = normal[k];
+    h.volume = result["volume"].cast<double>();
+    h.area = result["area"].cast<double>();
+    hullkit::VerifyReport report;
+    {
+        py::gil_scoped_release unlocked;
+        report = hullkit::verify(span, h);
+    }
+    return report_dict(report);
+}
+
+/// scipy's ConvexHull extras for triangles (m, 3) of a closed (or open: -1 across the rim)
+/// oriented surface: neighbors[t][j], the triangle across the edge opposite corner j, found by
+/// matching each directed edge with its reverse through per-vertex lists (linear time); and
+/// equations[t], the outward unit normal and offset of t's plane (rounded).
+py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
+    const std::size_t n = rows(points, 3, "points");
+    if (triangles.ndim() != 2 || triangles.shape(1) != 3) throw std::invalid_argument("triangles must have shape (m, 3)");
+    const std::size_t m = static_cast<std::size_t>(triangles.shape(0));
+    const std::uint32_t* v = triangles.data();
+    for (std::size_t k = 0; k < 3 * m; ++k) {
+        if (v[k] >= n) throw std::invalid_argument("triangle corner out of range");
+    }
+    std::vector<std::int32_t> neighbors(3 * m, -1);
+    std::vector<double> equations(4 * m);
+    const double* xyz = points.data();
+    {
+        py::gil_scoped_release unlocked;
+        // Each half-edge keyed by its undirected edge (lower corner, higher corner), sorted by
+        // an LSD radix sort over the key bits in use (streaming passes: the random probing of
+        // per-vertex lists took seconds for 2e6 triangles); a half-edge and its reverse are
+        // then neighbours in the order.
+        struct Keyed {
+            std::uint64_t key;
+            std::uint32_t half;
+        };
+        std::vector<Keyed> keyed(3 * m), buffer(3 * m);
+        std::uint64_t used = 0;
+        for (std::size_t h = 0; h < 3 * m; ++h) {
+            const std::uint64_t a = v[h], b = v[h - h % 3 + (h % 3 + 1) % 3];
+            keyed[h] = {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(h)};
+            used |= keyed[h].key;
+        }
+        constexpr int kBits = 11;
+        std::vector<std::size_t> count(std::size_t{1} << kBits);
+        for (int shift = 0; shift < 64; shift += kBits) {
+            if (((used >> shift) & ((1u << kBits) - 1)) == 0) continue;
+            std::fill(count.begin(), count.end(), 0);
+            for (const Keyed& k : keyed) ++count[(k.key >> shift) & ((1u << kBits) - 1)];
+            std::size_t sum = 0;
+            for (std::size_t& c : count) sum += std::exchange(c, sum);
+            for (const Keyed& k : keyed) buffer[count[(k.key >> shift) & ((1u << kBits) - 1)]++] = k;
+            keyed.swap(buffer);
+        }
+        for (std::size_t i = 0; i + 1 < keyed.size();) {
+            if (keyed[i].key != keyed[i + 1].key) {
+                ++i;  // an edge on the rim of an open surface: no neighbour
+                continue;
+            }
+            const std::uint32_t h = keyed[i].half, g = keyed[i + 1].half;
+            // Across edge h (corners k, k + 1 of its triangle) lies g's triangle: opposite corner k + 2.
+            neighbors[h - h % 3 + (h % 3 + 2) % 3] = static_cast<std::int32_t>(g / 3);
+            neighbors[g - g % 3 + (g % 3 + 2) % 3] = static_cast<std::int32_t>(h / 3);
+            i += 2;
+        }
+        for (std::size_t t = 0; t < m; ++t) {
+            const double* a = xyz + 3 * v[3 * t];
+            const double* b = xyz + 3 * v[3 * t + 1];
+            const double* c = xyz + 3 * v[3 * t + 2];
+            const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+            const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+            double normal[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+            const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+            for (double& x : normal) x /= length;
+            double* out = &equations[4 * t];
+            std::copy(normal, normal + 3, out);
+            out[3] = -(normal[0] * a[0] + normal[1] * a[1] + normal[2] * a[2]);
+        }
+    }
+    const auto count = static_cast<py::ssize_t>(m);
+    return py::make_tuple(owned(std::move(neighbors), {count, 3}), owned(std::move(equations), {count, 4}));
+}
+
+/// A streaming hull (hullkit::HullBuilder): pieces with 64-bit indices in, the hull of all out.
+class Builder {
+public:
+    Builder(const std::string& algorithm, unsigned threads) : builder_(hull_options(algorithm, false, threads)) {}
+
+    void add(const Points& points, std::uint64_t first_index) {
+        const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+        bool ok = false;
+        {
+            py::gil_scoped_release unlocked;
+            ok = builder_.add(span, first_index);
+        }
+        if (!ok) throw CoreError(builder_.error(), -1);
+    }
+
+    void add_indexed(const Points& points, const py::array_t<std::uint64_t, py::array::c_style>& indices) {
+        const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+        if (indices.ndim() != 1 || static_cast<std::size_t>(indices.shape(0)) != span.count)
+            throw std::invalid_argument("indices must have one entry per point");
+        bool ok = false;
+        {
+            py::gil_scoped_release unlocked;
+            ok = builder_.add_indexed(span, indices.data());
+        }
+        if (!ok) throw CoreError(builder_.error(), -1);
+    }
+
+    /// {"hull": hull dict over `points`, "points": (k, 3), "index": (k,) uint64, "point_count"}.
+    py::dict finish() {
+        hullkit::StreamedHull streamed;
+        {
+            py::gil_scoped_release unlocked;
+            streamed = builder_.finish();
+        }
+        if (!streamed.ok()) throw CoreError(streamed.hull.error, -1);
+        py::dict out;
+        out["point_count"] = streamed.point_count;
+        out["hull"] = hull_dict(std::move(streamed.hull));
+        out["points"] = owned_points(std::move(streamed.points));
+        out["index"] = owned(std::move(streamed.index));
+        return out;
+    }
+
+    std::uint64_t points_added() const { return builder_.points_added(); }
+
+private:
+    hullkit::HullBuilder builder_;
+};
+
+/// A Delaunay triangulation with the points it was made from (kept alive, not copied).
+class Triangulation {
+public:
+    Triangulation(Points points, const std::string& algorithm, bool merge_cocircular, unsigned threads)
+        : points_(std::move(points)) {
+        const hullkit::PointSpan2 span = this->span();
+        hullkit::DelaunayOptions options;
+        if (!hullkit::parse_delaunay_algorithm(algorithm, &options.algorithm))
+            throw std::invalid_argument("unknown algorithm \"" + algorithm + "\" (incremental or giftwrap)");
+        options.merge_cocircular = merge_cocircular;
+        options.threads = threads;
+        {
+            py::gil_scoped_release unlocked;
+            result_ = hullkit::delaunay(span, options);
+        }
+        if (!result_.ok()) throw CoreError(result_.error, result_.error_point);
+    }
+
+    hullkit::PointSpan2 span() const { return hullkit::PointSpan2(points_.data(), rows(points_, 2, "points")); }
+    const hullkit::Delaunay& result() const { return result_; }
+    const Points& points() const { return points_; }
+
+    /// The nearest input point to each query (exact; ties to the lowest index), -1 without points.
+    py::array_t<std::int64_t> find(const Points& queries, std::int64_t start) {
+        const std::size_t n = rows(queries, 2, "queries");
+        std::vector<std::int64_t> found(n, -1);
+        if (result_.dimension >= 0) {
+            py::gil_scoped_release unlocked;
+            if (!locator_) locator_ = std::make_unique<hullkit::DelaunayLocator>(span(), result_);
+            for (std::size_t i = 0; i < n; ++i) {
+                found[i] = locator_->find(queries.data()[2 * i], queries.data()[2 * i + 1], i == 0 ? start : -1);
+            }
+        }
+        return owned(std::move(found));
+    }
+
+    /// The triangle containing each query (closed: on a shared edge, one of its two), or -1 outside
+    /// the hull, by a visibility walk with exact orient2d; points and queries are scaled together
+    /// by a power of two (exact) into the predicates' range.
+    py::array_t<std::int64_t> locate(const Points& queries) const {
+        const std::size_t n = rows(queries, 2, "queries");
+        std::vector<std::int64_t> found(n, -1);
+        const std::vector<std::uint32_t>& tri = result_.triangles;
+        const std::vector<std::int32_t>& twin = result_.halfedges;
+        if (result_.dimension < 2 || n == 0) return owned(std::move(found));
+        const hullkit::PointSpan2 p = span();
+        double largest = 0.0, smallest = INFINITY;
+        auto scan = [&](const double* xy, std::size_t count) {
+            for (std::size_t i = 0; i < 2 * count; ++i) {
+                const double a = std::fabs(xy[i]);
+                if (!(a <= 1.7976931348623157e308)) throw CoreError("query " + std::to_string(i / 2) + " has a non-finite coordinate", static_cast<std::int64_t>(i / 2));
+                largest = std::max(largest, a);
+                if (a != 0.0) smallest = std::min(smallest, a);
+            }
+        };
+        scan(p.xy, p.count);
+        scan(queries.data(), n);
+        int exponent = 0;
+        if (!hullkit::predicates_scale_exponent(largest, smallest, &exponent))
+            throw CoreError("the queries and the points span too many orders of magnitude for exact predicates", -1);
+        std::vector<double> scaled_points, scaled_queries;
+        const double* xy = p.xy;
+        const double* q = queries.data();
+        if (exponent != 0) {
+            scaled_points.resize(2 * p.count);
+            scaled_queries.resize(2 * n);
+            for (std::size_t i = 0; i < scaled_points.size(); ++i) scaled_points[i] = std::ldexp(p.xy[i], exponent);
+            for (std::size_t i = 0; i < scaled_queries.size(); ++i) scaled_queries[i] = std::ldexp(q[i], exponent);
+            xy = scaled_points.data();
+            q = scaled_queries.data();
+        }
+        {
+            py::gil_scoped_release unlocked;
+            const std::size_t triangles = tri.size() / 3;
+            std::size_t t = 0;  // each walk starts where the last ended: nearby queries walk little
+            for (std::size_t i = 0; i < n; ++i) {
+                const double qx = q[2 * i], qy = q[2 * i + 1];
+                std::int64_t answer = -1;
+                for (std::size_t steps = 0; steps <= triangles + 2; ++steps) {
+                    // Triangles are clockwise (y up): the inside is right of each edge; a query
+                    // strictly left of one is beyond it.
+                    std::int64_t beyond = -1;
+                    for (std::size_t k = 0; k < 3 && beyond < 0; ++k) {
+                        const std::size_t e = 3 * t + (k + steps % 3) % 3;
+                        const std::size_t f = e % 3 == 2 ? e - 2 : e + 1;
+                        const double* a = xy + 2 * tri[e];
+                        const double* b = xy + 2 * tri[f];
+                        if (hullkit::orient2d(a[0], a[1], b[0], b[1], qx, qy) > 0) beyond = static_cast<std::int64_t>(e);
+                    }
+                    if (beyond < 0) {
+                        answer = static_cast<std::int64_t>(t);
+                        break;
+                    }
+                    const std::int32_t across = twin[static_cast<std::size_t>(beyond)];
+                    if (across < 0) break;  // beyond a hull edge: outside the hull
+                    t = static_cast<std::size_t>(across) / 3;
+                }
+                found[i] = answer;
+            }
+        }
+        return owned(std::move(found));
+    }
+
+    py::tuple voronoi(double xmin, double ymin, double xmax, double ymax) const {
+        if (!(xmin < xmax) || !(ymin < ymax)) throw std::invalid_argument("voronoi bounds need xmin < xmax and ymin < ymax");
+        hullkit::VoronoiCells cells = hullkit::delaunay_voronoi(span(), result_, xmin, ymin, xmax, ymax);
+        return py::make_tuple(owned(std::move(cells.cell_offsets)), owned_points(std::move(cells.cell_xy), 2));
+    }
+
+private:
+    Points points_;
+    hullkit::Delaunay result_;
+    std::unique_ptr<hullkit::DelaunayLocator> locator_;
+};
+
+/// An array viewing a vector inside a Triangulation, which it keeps alive.
+template <class T>
+py::array_t<T> view(const std::vector<T>& values, py::handle owner) {
+    return py::array_t<T>({static_cast<py::ssize_t>(values.size())}, {static_cast<py::ssize_t>(sizeof(T))}, values.data(),
+                          owner);
+}
+
+py::dict verify_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
+    const hullkit::PointSpan2 span(points.data(), rows(points, 2, "points"));
+    if (triangles.ndim() != 1 || triangles.shape(0) % 3 != 0)
+        throw std::invalid_argument("triangles must be flat, 3 indices per triangle");
+    hullkit::DelaunayVerifyReport report;
+    {
+        py::gil_scoped_release unlocked;
+        report = hullkit::verify_delaunay(span, triangles.data(), static_cast<std::size_t>(triangles.shape(0) / 3));
+    }
+    py::dict out;
+    out["ok"] = report.ok;
+    out["problems"] = report.problems;
+    out["problem_count"] = report.problem_count;
+    out["distinct_points"] = report.distinct_points;
+    out["hull_points"] = report.hull_points;
+    return out;
+}
+
+/// Every point of a point file (any format hullkit reads), on `threads` threads for text.
+py::array_t<double> read_points(const std::string& path, unsigned threads) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) throw CoreError(path + ": cannot open: " + std::strerror(errno), -1);
+    std::vector<double> xyz;
+    std::string error;
+    {
+        py::gil_scoped_release unlocked;
+        hullkit::PointReaderOptions options;
+        options.threads = threads;
+        hullkit::PointReader reader(file, path, options);
+        while (reader.append_next(&xyz)) {
+        }
+        error = reader.error();
+    }
+    std::fclose(file);
+    if (!error.empty()) throw CoreError(error, -1);
+    return owned_points(std::move(xyz));
+}
+
+/// The hull of a point file read in batches into a HullBuilder (memory: one batch and the running
+/// hull), indices counted from 0 within the file: the map step of a hull across machines.
+py::dict hull_file(const std::string& path, unsigned threads) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) throw CoreError(path + ": cannot open: " + std::strerror(errno), -1);
+    hullkit::StreamedHull streamed;
+    std::string error;
+    {
+        py::gil_scoped_release unlocked;
+        hullkit::PointReaderOptions reading;
+        reading.threads = threads;
+        hullkit::PointReader reader(file, path, reading);
+        hullkit::HullBuilder builder(hull_options("quickhull", false, threads));
+        std::vector<double> xyz;
+        std::uint64_t first = 0;
+        while (error.empty() && reader.next(&xyz)) {
+            if (!builder.add(hullkit::PointSpan(xyz), first)) error = path + ": " + builder.error();
+            first += xyz.size() / 3;
+        }
+        if (error.empty()) error = reader.error();
+        if (error.empty()) {
+            streamed = builder.finish();
+            if (!streamed.ok()) error = path + ": " + streamed.hull.error;
+        }
+    }
+    std::fclose(file);
+    if (!error.empty()) throw CoreError(error, -1);
+    py::dict out;
+    out["point_count"] = streamed.point_count;
+    out["points"] = owned_points(std::move(streamed.points));
+    out["index"] = owned(std::move(streamed.index));
+    return out;
+}
+
+py::tuple read_mesh(const py::bytes& bytes, const std::string& source) {
+    const std::string data = bytes;
+    hullkit::MeshResult mesh = hullkit::read_mesh(data, source);
+    if (!mesh.ok()) throw CoreError(mesh.error, -1);
+    const auto triangles = static_cast<py::ssize_t>(mesh.triangles.size() / 3);
+    return py::make_tuple(owned_points(std::move(mesh.xyz)), owned(std::move(mesh.triangles), {triangles, 3}));
+}
+
+/// A RouteChecker built from a scene's JSON text, its mesh files relative to `directory`.
+class Checker {
+public:
+    /// Mesh files come from `files` (name as written in the scene -> bytes) when it is not empty,
+    /// else from `directory`.
+    Checker(const std::string& json, const std::string& source, const std::string& directory,
+            const std::map<std::string, std::string>& files) {
+        hullkit::SceneReadOptions options;
+        options.require_route = false;
+        hullkit::MeshLoader loader = hullkit::file_mesh_loader(directory);
+        if (!files.empty()) {
+            loader = [&files](const std::string& path, std::string* bytes, std::string* error) {
+                const auto it = files.find(path);
+                if (it == files.end()) {
+                    *error = path + ": not among the scene's files";
+                    return false;
+                }
+                *bytes = it->second;
+                return true;
+            };
+        }
+        hullkit::SceneResult scene = hullkit::parse_scene(json, source, loader, options);
+        if (!scene.ok()) throw CoreError(scene.error, -1);
+        checker_ = std::make_unique<hullkit::RouteChecker>(std::move(scene.scene));
+        if (!checker_->error().empty()) throw CoreError(source + ": " + checker_->error(), -1);
+    }
+
+    /// The report as JSON (hullkit route's format); `route` (k, 3), or the scene's own when empty.
+    std::string check(const Points& route, bool clearance, std::uint32_t samples, unsigned threads) const {
+        hullkit::RouteOptions options;
+        options.clearance = clearance;
+        options.samples = samples;
+        options.threads = threads;
+        const std::size_t waypoints = rows(route, 3, "route");
+        hullkit::RouteReport report;
+        {
+            py::gil_scoped_release unlocked;
+            report = waypoints == 0 ? checker_->check(options) : checker_->check(route.data(), waypoints, options);
+        }
+        if (!report.ok()) throw CoreError(report.error, -1);
+        return hullkit::write_report_json(checker_->scene(), report, options);
+    }
+
+    std::size_t scene_waypoints() const { return checker_->scene().route.size() / 3; }
+    double build_seconds() const { return checker_->build_seconds(); }
+
+private:
+    std::unique_ptr<hullkit::RouteChecker> checker_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "hullkit's C++ core (use the hullkit package, not this module)";
+    static py::exception<CoreError> core_error(m, "CoreError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const CoreError& e) {
+            // A tuple becomes the exception's args: (message, point index or -1).
+            PyErr_SetObject(core_error.ptr(), py::make_tuple(e.what(), e.point).ptr());
+        }
+    });
+    m.def("hull", &hull, py::arg("points"), py::arg("algorithm") = "quickhull", py::arg("merge_coplanar") = false,
+          py::arg("threads") = 0u);
+    m.def("verify_triangles", &verify_triangles);
+    m.def("surface_extras", &surface_extras);
+    m.def("verify_hull", &verify_hull);
+    m.def("verify_delaunay", &verify_delaunay);
+    m.def("read_points", &read_points, py::arg("path"), py::arg("threads") = 0u);
+    m.def("read_mesh", &read_mesh);
+    m.def("hull_file", &hull_file, py::arg("path"), py::arg("threads") = 0u);
+
+    py::class_<Builder>(m, "HullBuilder")
+        .def(py::init<const std::string&, unsigned>(), py::arg("algorithm") = "quickhull", py::arg("threads") = 0u)
+        .def("add", &Builder::add)
+        .def("add_indexed", &Builder::add_indexed)
+        .def("finish", &Builder::finish)
+        .def_property_readonly("points_added", &Builder::points_added);
+
+    py::class_<Triangulation>(m, "Triangulation")
+        .def(py::init<Points, const std::string&, bool, unsigned>())
+        .def_property_readonly("dimension", [](const Triangulation& t) { return t.result().dimension; })
+        .def_property_readonly("triangles", [](py::object self) { return view(self.cast<const Triangulation&>().result().triangles, self); })
+        .def_property_readonly("halfedges", [](py::object self) { return view(self.cast<const Triangulation&>().result().halfedges, self); })
+        .def_property_readonly("hull", [](py::object self) { return view(self.cast<const Triangulation&>().result().hull, self); })
+        .def_property_readonly("representative",
+                               [](py::object self) { return view(self.cast<const Triangulation&>().result().representative, self); })
+        .def_property_readonly("polygon_offsets",
+                               [](py::object self) { return view(self.cast<const Triangulation&>().result().polygon_offsets, self); })
+        .def_property_readonly("polygon_vertices",
+                               [](py::object self) { return view(self.cast<const Triangulation&>().result().polygon_vertices, self); })
+        .def_property_readonly("duplicate_count", [](const Triangulation& t) { return t.result().duplicate_count; })
+        .def("find", &Triangulation::find)
+        .def("locate", &Triangulation::locate)
+        .def("voronoi", &Triangulation::voronoi);
+
+    py::class_<Checker>(m, "RouteChecker")
+        .def(py::init<const std::string&, const std::string&, const std::string&, const std::map<std::string, std::string>&>(),
+             py::arg("json"), py::arg("source"), py::arg("directory"), py::arg("files") = std::map<std::string, std::string>{})
+        .def("check", &Checker::check)
+        .def_property_readonly("scene_waypoints", &Checker::scene_waypoints)
+        .def_property_readonly("build_seconds", &Checker::build_seconds);
+}

@@ -1,0 +1,136 @@
+// A TypeScript consumer of the packed `hullkit` package, compiled by scripts/type_test.sh with
+// --strict under several targets and libs (never skipLibCheck), then run with node. It uses the
+// API as the README shows it; every value is checked at run time too, so the types and the
+// runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
+import createHullkit, { HullkitError } from 'hullkit';
+import type {
+  DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData, RouteChecker, RouteLeg, RouteReport,
+  RouteScene, Vec3, VerifyReport, VoronoiCells,
+} from 'hullkit';
+
+function check(condition: boolean, what: string): void {
+  if (!condition) throw new Error(`type test consumer: ${what}`);
+}
+
+/** The bytes of an ASCII file's text (no TextEncoder: that needs the DOM or Node lib). */
+function ascii(text: string) {
+  const bytes = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+  return bytes;
+}
+
+const hullkit: Hullkit = await createHullkit();
+
+// hull and verify
+const xyz = new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.2, 0.2]);
+const result: HullResult = hullkit.hull(xyz);
+const { dimension, triangles, vertices, volume, area } = result;
+check(dimension === 3 && triangles.length === 12 && vertices.length === 4, 'hull of a tetrahedron');
+check(Math.abs(volume - 1 / 6) < 1e-12 && area > 0, 'hull volume and area');
+const merged = hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], { algorithm: 'giftwrap', mergeCoplanar: true });
+if (merged.dimension === 2 && merged.normal !== undefined) {
+  const normal: Float64Array = merged.normal;
+  check(Math.abs(Math.abs(normal[2] ?? 0) - 1) < 1e-12, 'a square lies in z = 0');
+}
+const faceOffsets: Uint32Array | undefined = merged.faceOffsets;
+check(faceOffsets !== undefined, 'mergeCoplanar gives faceOffsets');
+const report: VerifyReport = hullkit.verify(xyz, result);
+check(report.ok && report.problems.length === 0, 'verify accepts the hull');
+const algorithms: readonly ('quickhull' | 'giftwrap')[] = hullkit.algorithms;
+check(algorithms[0] === 'quickhull', 'default algorithm first');
+
+// the recorded gift wrap
+const trace: GiftwrapTrace = hullkit.giftwrapTrace(xyz, { scan: 'restart' });
+const last = trace.kindNames[trace.kinds[trace.kinds.length - 1] ?? 0];
+check(last === 'done' && hullkit.traceLimits['single-pass'] >= hullkit.traceLimits.restart, 'trace ends with done');
+
+// errors
+try {
+  hullkit.hull([0, 0, Number.NaN]);
+  check(false, 'NaN is refused');
+} catch (error) {
+  check(error instanceof HullkitError && error.pointIndex === 0 && error.name === 'HullkitError', 'HullkitError names the point');
+}
+const made = new HullkitError('made here', { pointIndex: 3 });
+check(made.pointIndex === 3 && made.message === 'made here', 'HullkitError constructor');
+
+// readers
+const points: Float64Array = hullkit.readPoints(ascii('0 0 0\n1 2 3\n4 5 6\n'), 'p.xyz');
+check(points.length === 9 && points[5] === 3, 'readPoints');
+const flat: Float64Array = hullkit.readPoints2d(ascii('0 0\n1 0\n0 1\n').buffer, 'p.txt');
+check(flat.length === 6, 'readPoints2d');
+const mesh: MeshData = hullkit.readMesh(ascii('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n'), 'tri.obj');
+check(mesh.vertices.length === 9 && mesh.triangles.length === 3, 'readMesh');
+try {
+  hullkit.readPoints(ascii('0 0 0\n1 x 2\n'), 'bad.xyz');
+  check(false, 'a bad line is refused');
+} catch (error) {
+  check(error instanceof HullkitError && error.line === 2, `readPoints names the line (${String(error)})`);
+}
+
+// Delaunay, find, Voronoi
+const xy = new Float64Array([0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.4]);
+const delaunay: DelaunayResult = hullkit.delaunay(xy);
+check(delaunay.dimension === 2 && delaunay.triangles.length % 3 === 0 && delaunay.halfedges instanceof Int32Array, 'delaunay');
+const nearest: number = hullkit.find(xy, delaunay, 0.9, 0.9);
+check(nearest === 3, 'find');
+const cells: VoronoiCells = hullkit.voronoi(xy, delaunay, [-1, -1, 2, 2]);
+check(cells.cellOffsets.length === xy.length / 2 + 1, 'voronoi');
+check(hullkit.delaunay(xy, { algorithm: 'giftwrap', mergeCocircular: true }).polygonOffsets !== undefined, 'polygons');
+
+// route checking: legs narrowed by their status
+const scene: RouteScene = {
+  traverse: { parts: [{ name: 'cube', box: { min: [0, 0, 0], max: [1, 1, 1] } }] },
+  route: [[0, 0, 0], [5, 0, 0]],
+  obstacles: [
+    { name: 'wall', box: { min: [3, -10, -10], max: [4, 10, 10] } },
+    { name: 'plate', vertices: new Float64Array([2.2, -5, -5, 2.2, 5, -5, 2.2, 0, 5]), triangles: new Uint32Array([0, 1, 2]) },
+  ],
+  margin: 0,
+};
+
+/** One line per leg; each branch reads fields only legs of that status have. */
+function describe(leg: RouteLeg): string {
+  if (leg.status === 'hit') {
+    const [lo, hi]: [number, number] = leg.fraction;
+    const at: Vec3 = leg.position;
+    return `hit ${leg.obstacle} triangle ${leg.triangle} by ${leg.part} in [${lo}, ${hi}] at x ${at[0]}`;
+  }
+  if (leg.status === 'clear') {
+    const clearance: number | null = leg.clearance;
+    return `clear by ${clearance ?? 'unknown'} from ${leg.obstacle ?? 'nothing'}`;
+  }
+  const overlap: 'start-overlap' = leg.status;
+  return `${overlap} ${leg.obstacle} ${leg.part}`;
+}
+
+const once: RouteReport = hullkit.checkRoute(scene, { samples: 4 });
+check(!once.clear && once.legs.length === 1, 'the cube hits');
+const [first] = once.legs;
+check(first !== undefined && describe(first).startsWith('hit plate'), 'first contact is the plate');
+check(typeof first?.sampled?.hit === 'boolean', 'samples give sampled');
+
+const { route: _ownRoute, ...withoutRoute } = scene; // a checker's scene may leave the route out
+const checker: RouteChecker = new hullkit.RouteChecker(withoutRoute);
+try {
+  const back = checker.check([[0, 0, 0], [-5, 0, 0]], { clearance: true });
+  const leg = back.legs[0];
+  check(back.clear && leg?.status === 'clear' && leg.clearance !== null && leg.clearance > 0, 'going back is clear');
+  check(checker.check(new Float64Array([0, 0, 0, 0, 3, 0])).legs.length === 1 && checker.buildSeconds >= 0, 'flat route');
+} finally {
+  checker.delete();
+}
+check(checker.deleted, 'deleted');
+
+// meshes as bytes and by name
+const withMeshBytes = hullkit.checkRoute(
+  { ...scene, obstacles: [{ name: 'tri', mesh: ascii('v 2 -5 -5\nv 2 5 -5\nv 2 0 5\nf 1 2 3\n') }] },
+  { clearance: false },
+);
+check(withMeshBytes.legs[0]?.status === 'hit', 'mesh bytes');
+const byName = hullkit.checkRoute(
+  { ...scene, obstacles: [{ mesh: 'tri.obj' }] },
+  { files: new Map([['tri.obj', ascii('v 2 -5 -5\nv 2 5 -5\nv 2 0 5\nf 1 2 3\n')]]) },
+);
+check(byName.legs[0]?.status === 'hit' && byName.legs[0].obstacle === 'obstacle 0', 'mesh by name');
+check(once.seconds >= 0 && once.build_seconds >= 0 && (once.min_clearance === null || typeof once.min_clearance === 'number'), 'report fields');

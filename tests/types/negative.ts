@@ -1,0 +1,35 @@
+// Lines that must NOT type-check: scripts/type_test.sh compiles this file expecting exactly one
+// error on every line marked "// error" and none elsewhere, so the types are shown to catch
+// mistakes (not to accept anything). Never run.
+import createHullkit from 'hullkit';
+import type { RouteLeg, RouteScene } from 'hullkit';
+
+const hullkit = await createHullkit();
+const xyz = new Float64Array(12);
+declare const leg: RouteLeg;
+declare const scene: RouteScene;
+
+hullkit.hull('0 0 0 1 1 1'); // error
+hullkit.hull(xyz, { algorithm: 'qhull' }); // error
+hullkit.hull(xyz, { mergeCoplanar: 'yes' }); // error
+const wrongType: Float64Array = hullkit.hull(xyz).triangles; // error
+hullkit.readMesh('cube.obj'); // error
+hullkit.delaunay(xyz, { algorithm: 'quickhull' }); // error
+hullkit.voronoi(xyz, { triangles: new Uint32Array(3) }, [0, 0, 1, 1]); // error
+const position = leg.position; // error
+if (leg.status === 'clear') {
+  const fromClear = leg.position; // error
+  const part = leg.part; // error
+}
+if (leg.status === 'hit') {
+  const clearance = leg.clearance; // error
+  const fractionOfHit: number = leg.fraction; // error
+}
+const unknownStatus = leg.status === 'miss'; // error
+hullkit.checkRoute(scene, { sample: 4 }); // error
+hullkit.checkRoute({ traverse: { parts: [] }, route: [[0, 0, 0], [1, 0, 0]] }); // error
+const checker = new hullkit.RouteChecker(scene);
+checker.check([[0, 0, 0], [1, 0]]); // error
+checker.dispose(); // error
+checker.deleted = true; // error
+hullkit.RouteChecker(scene); // error
