@@ -4,7 +4,7 @@ call in a fresh process; it prints one JSON line.
 
     python_bench.py hull --lib hullkit|scipy --n N              ConvexHull of N points on a sphere
     python_bench.py delaunay --lib hullkit|scipy --n N          Delaunay of N uniform 2D points
-    python_bench.py conversions --n N                           hullkit.hull's time outside the core
+    python_bench.py conversions --lib "float64 C"|"float32 Fortran" --n N   hullkit.hull outside the core
     python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
     python_bench.py files --mode single|dask --dir D            the hull of those files
     python_bench.py routes --mode single|dask --legs L --scene S --route R
@@ -64,23 +64,26 @@ def run_delaunay(args):
 
 
 def run_conversions(args):
-    """hullkit.hull's whole call against the core's own time (the same call without the Python
-    layer's conversion and wrapping): C float64 input (no copy) and float32 Fortran input (one
-    converting copy)."""
+    """The first hullkit.hull call of the process, in its parts: converting the input
+    (as_points: nothing to do for float64 C input, one converting copy for float32 Fortran), the
+    core (C++), and wrapping its arrays (Hull); "outside" = (convert + wrap) / whole."""
     import hullkit
     from hullkit import _core
 
-    out = {}
-    for name, points in (("float64 C", sphere(args.n)), ("float32 Fortran", np.asfortranarray(sphere(args.n).astype(np.float32)))):
-        start = time.perf_counter()
-        hullkit.hull(points)
-        whole = time.perf_counter() - start
-        converted = np.ascontiguousarray(points, dtype=np.float64)
-        start = time.perf_counter()
-        _core.hull(converted, "quickhull", False, 0)
-        core = time.perf_counter() - start
-        out[name] = {"whole": whole, "core": core, "outside": max(0.0, whole - core) / whole}
-    return out
+    name = args.lib  # "float64 C" or "float32 Fortran", one kind per process
+    points = sphere(args.n)
+    if name == "float32 Fortran":
+        points = np.asfortranarray(points.astype(np.float32))
+    start = time.perf_counter()
+    array = hullkit.as_points(points, 3)
+    converted = time.perf_counter()
+    result = _core.hull(array, "quickhull", False, 0)
+    cored = time.perf_counter()
+    h = hullkit.Hull(result, array)
+    done = time.perf_counter()
+    convert, core, wrap = converted - start, cored - converted, done - cored
+    return {"kind": name, "whole": done - start, "convert": convert, "core": core, "wrap": wrap,
+            "outside": (convert + wrap) / (done - start), "triangles": int(len(h.triangles))}
 
 
 def run_write_ply(args):
@@ -150,11 +153,16 @@ def run_routes(args):
     cycle = np.array([waypoints[k % len(waypoints)] for k in range(args.legs + 1)])
     routes = [cycle[k:k + 11] for k in range(0, args.legs, 10)]
     strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    # First call (the checker built, the scene sent), then the same routes again (warm: the
+    # checker reused, on the cluster one per worker).
     if args.mode == "single":
         start = time.perf_counter()
         checker = hullkit.RouteChecker(args.scene)
         reports = [checker.check(r, threads=1) for r in routes]
         seconds = time.perf_counter() - start
+        start = time.perf_counter()
+        again = [checker.check(r, threads=1) for r in routes]
+        warm = time.perf_counter() - start
     else:
         from distributed import Client, LocalCluster
 
@@ -164,10 +172,14 @@ def run_routes(args):
         start = time.perf_counter()
         reports = hullkit.dask.check_routes(args.scene, routes, client=client)
         seconds = time.perf_counter() - start
+        start = time.perf_counter()
+        again = hullkit.dask.check_routes(args.scene, routes, client=client)
+        warm = time.perf_counter() - start
         client.close()
         cluster.close()
+    assert [strip(r) for r in again] == [strip(r) for r in reports]
     text = json.dumps([strip(r) for r in reports], sort_keys=True)
-    return {"seconds": seconds, "legs": sum(len(r["legs"]) for r in reports),
+    return {"seconds": seconds, "warm_seconds": warm, "legs": sum(len(r["legs"]) for r in reports),
             "not_clear": sum(leg["status"] != "clear" for r in reports for leg in r["legs"]),
             "reports": hashlib.sha256(text.encode()).hexdigest()[:16]}
 

@@ -1,42 +1,40 @@
-# Builds hullkit's Python extension (hullkit._core) from the C++ sources in ../native with
-# pybind11, so that `pip install --no-build-isolation ./python` needs nothing from the network:
-# setuptools, pybind11 and numpy come from the system (Debian: python3-setuptools,
-# python3-pybind11, python3-numpy). The metadata is in pyproject.toml.
-import glob
+# Builds hullkit's Python extension (hullkit._core) with the project's CMake: the repository is
+# configured with -DHULLKIT_PYTHON=ON (python/CMakeLists.txt: pybind11_add_module linking the
+# hullkit static libraries) and that one target is built, so `pip install --no-build-isolation
+# ./python` needs nothing from the network: cmake, a C++17 compiler, pybind11 and numpy come from
+# the system (Debian: cmake, g++, pybind11-dev, python3-pybind11, python3-numpy, python3-dev).
+# The metadata is in pyproject.toml.
 import os
+import subprocess
+import sys
 
-from pybind11.setup_helpers import ParallelCompile, Pybind11Extension, build_ext
-from setuptools import setup
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
 
 here = os.path.dirname(os.path.abspath(__file__))
-native = os.path.normpath(os.path.join(here, "..", "native"))
+repository = os.path.dirname(here)
 
 
-class build_core(build_ext):
-    """Adds the core's C++ sources (outside this folder, which setuptools' file lists refuse to
-    name) when the extension is compiled."""
+class cmake_build(build_ext):
+    """Builds each extension with CMake instead of setuptools' compiler calls."""
 
-    def build_extensions(self):
-        if not os.path.isdir(os.path.join(native, "src")):
-            raise SystemExit(f"hullkit: the C++ sources are not at {native}; build from the hullkit repository")
-        # The core, Delaunay and route checking, in a stable order.
-        sources = sorted(
-            path for folder in ("", "io", "delaunay", "route") for path in glob.glob(os.path.join(native, "src", folder, "*.cpp")))
-        for extension in self.extensions:
-            extension.sources = [s for s in extension.sources if s not in sources] + sources
-        super().build_extensions()
+    def build_extension(self, extension):
+        if not os.path.isfile(os.path.join(repository, "CMakeLists.txt")):
+            raise SystemExit(f"hullkit: no CMakeLists.txt at {repository}; build from the hullkit repository")
+        target = os.path.abspath(self.get_ext_fullpath(extension.name))
+        build = os.path.abspath(os.path.join(self.build_temp, "cmake"))
+        os.makedirs(build, exist_ok=True)
+        jobs = os.environ.get("HULLKIT_BUILD_JOBS") or str(os.cpu_count() or 1)
+        configure = [
+            "cmake", "-S", repository, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+            "-DHULLKIT_PYTHON=ON", "-DHULLKIT_TESTS=OFF", "-DHULLKIT_BENCH=OFF", "-DHULLKIT_CLI=OFF",
+            "-DHULLKIT_INSTALL=OFF", f"-DPython_EXECUTABLE={sys.executable}",
+            f"-DHULLKIT_PYTHON_OUTPUT_DIR={os.path.dirname(target)}",
+        ]
+        subprocess.run(configure, check=True)
+        subprocess.run(["cmake", "--build", build, "--target", "hullkit_python", "-j", jobs], check=True)
+        if not os.path.exists(target):
+            raise SystemExit(f"hullkit: CMake did not produce {target}")
 
 
-core = Pybind11Extension(
-    "hullkit._core",
-    [os.path.join("src", "core.cpp")],
-    include_dirs=[os.path.join(native, "include")],
-    cxx_std=17,
-    # As the native and wasm builds: no FMA contraction, so every platform gives the same bits.
-    extra_compile_args=["-O3", "-ffp-contract=off"],
-)
-
-# Compile the sources on every core (HULLKIT_BUILD_JOBS overrides).
-ParallelCompile("HULLKIT_BUILD_JOBS", default=0).install()
-
-setup(ext_modules=[core], cmdclass={"build_ext": build_core})
+setup(ext_modules=[Extension("hullkit._core", sources=[])], cmdclass={"build_ext": cmake_build})

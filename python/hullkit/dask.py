@@ -159,6 +159,8 @@ def _self_contained(scene):
     """(scene JSON text, source name, {mesh file name: bytes}): every "mesh" file the scene names
     is read here, so that workers need no files; the text itself travels unchanged."""
     text, source, directory = _scene_json(scene)
+    if '"mesh"' not in text:  # no mesh files (parsing a large inline scene here would cost time)
+        return text, source, {}
     try:
         data = json.loads(text)
     except ValueError as error:
@@ -208,8 +210,7 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
             raise HullkitError(f"routes[{k}] must have shape (k, 3) with k >= 2, got {route.shape}")
     if not routes:
         return []
-    with _translated():  # a bad scene fails here, with its message, before any task
-        _core.RouteChecker(*shipped[:2], ".", shipped[2])
+    # A bad scene fails on the workers with the core's message (HullkitError), as it would here.
     if batch is None:
         workers = len(client.scheduler_info()["workers"]) if client is not None else os.cpu_count() or 1
         batch = max(1, math.ceil(len(routes) / (4 * max(1, workers))))

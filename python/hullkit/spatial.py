@@ -159,13 +159,15 @@ class Delaunay:
             self.convex_hull = _np.stack([hull_cycle[:-1], hull_cycle[1:]], axis=1)
         else:
             self.convex_hull = _np.zeros((0, 2), dtype=_np.int32)
-        representative = _np.asarray(d.representative, dtype=_np.int64)
-        repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
-        simplex_of = _np.full(self.npoints, -1, dtype=_np.int64)
-        if self.nsimplex:
-            simplex_of[self.simplices.ravel()] = _np.repeat(_np.arange(self.nsimplex), 3)
-        self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
-                                  axis=1).astype(_np.int32) if len(repeats) else _np.zeros((0, 3), dtype=_np.int32)
+        self.coplanar = _np.zeros((0, 3), dtype=_np.int32)
+        if d.duplicate_count:
+            representative = _np.asarray(d.representative, dtype=_np.int64)
+            repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
+            simplex_of = _np.full(self.npoints, -1, dtype=_np.int64)
+            if self.nsimplex:
+                simplex_of[self.simplices.ravel()] = _np.repeat(_np.arange(self.nsimplex), 3)
+            self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
+                                      axis=1).astype(_np.int32)
 
     def _neighbors(self, halfedges):
         """neighbors[i, j]: the simplex opposite corner j of simplex i, -1 on the hull. Simplex i's

@@ -87,6 +87,9 @@ def test_route_batches_equal_local_checks(client):
     assert any(not r["clear"] for r in reports) and any(r["clear"] for r in reports)
     with pytest.raises(hullkit.HullkitError, match="routes\\[1\\]"):
         hullkit.dask.check_routes(scene, [routes[0], np.zeros((1, 3))], client=client)
+    bad = {"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": [], "margn": 1}
+    with pytest.raises(hullkit.HullkitError, match="margn"):  # raised on a worker, with the core's message
+        hullkit.dask.check_routes(bad, routes[:3], client=client)
 
 
 def test_a_worker_killed_mid_job_changes_nothing(client):
