@@ -32,7 +32,7 @@ import numpy as np
 import dask
 from dask import delayed
 
-from . import Hull, HullBuilder, HullkitError, _core, _scene_json, _translated
+from . import HullBuilder, HullkitError, _core, _scene_json, _translated
 
 __all__ = ["hull", "hull_graph", "check_routes", "DaskHull"]
 
@@ -149,7 +149,6 @@ def hull(source, client=None, threads=1, fan_in=4):
     task."""
     graph = hull_graph(source, threads=threads, fan_in=fan_in)
     merged = client.compute(graph).result() if client is not None else dask.compute(graph)[0]
-    merged["hull"] = Hull(merged["hull"], merged["points"]) if isinstance(merged["hull"], dict) else merged["hull"]
     return DaskHull(merged)
 
 
