@@ -19,8 +19,8 @@
 #                  verify_delaunay(), against gift wrapping and merge_cocircular, and by
 #                  nearest-point queries
 # A failed check aborts. Each target is built in build/fuzz with -fsanitize=fuzzer,address,undefined
-# and linked with every library source (native/src/*.cpp, io/, delaunay/, route/; objects in
-# build/fuzz/obj named FILE.o, SUBFOLDER_FILE.o for a subfolder, rebuilt when the source or any
+# and linked with every library source (native/src/{exact,hull,io,delaunay,route}/; objects in
+# build/fuzz/obj named FOLDER_FILE.o, rebuilt when the source or any
 # header is newer; a target is relinked when its source, an object or a public header is newer). The
 # seed corpus is tests/data/ and all its subfolders (libFuzzer reads directories recursively; every
 # file is read as the target's input); what libFuzzer adds goes to build/fuzz/corpus/TARGET.
@@ -45,11 +45,8 @@ rm -f "$out/compile-failed"
 
 # Every library source, rebuilt when it or any header is newer than its object.
 objects=()
-for src in native/src/*.cpp native/src/io/*.cpp native/src/delaunay/*.cpp native/src/route/*.cpp; do
-  dir=$(dirname "$src")
-  prefix=""
-  [ "$dir" != native/src ] && prefix="$(basename "$dir")_"
-  obj="$out/obj/$prefix$(basename "${src%.cpp}").o"
+for src in native/src/*/*.cpp; do
+  obj="$out/obj/$(basename "$(dirname "$src")")_$(basename "${src%.cpp}").o"
   if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find native/include native/src -name '*.hpp' -newer "$obj" | head -n 1)" ]; then
     echo "fuzz: compiling $src" >&2
     pool

@@ -197,16 +197,18 @@ export interface Hullkit {
    */
   delaunayGiftwrapTrace(xy: Float64Array | ArrayLike<number>): GiftwrapTrace;
   /**
-   * Checks a traverse moved along the scene's route (straight translations) against its obstacles,
-   * one exact check per leg: the convex hull of each part at both ends of a leg contains all it
+   * Checks a traverse moved along the scene's route against its obstacles, one check per leg. A
+   * straight translation: the convex hull of each part at both ends of a leg contains all it
    * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
-   * hits (no contact invented for non-convex parts). Returns the same report as `hullkit route`.
+   * hits (no contact invented for non-convex parts). A leg that turns: the same hulls grown by the
+   * interpolation bound over adaptive sub-intervals, a hit only at a pose found in contact.
+   * Returns the same report as `hullkit route`.
    * Meshes may be inline, bytes (`mesh: Uint8Array`), or file names looked up in `options.files`.
    *
    * @throws {HullkitError} for a malformed scene or mesh (the message names the field, e.g.
    *   "checkRoute: scene: obstacles[2].box.min: expected 3 numbers [x, y, z], got 2 values", or
-   *   the mesh and its line), fewer than two waypoints, a non-finite number, a rotation, or an
-   *   unknown option.
+   *   the mesh and its line), fewer than two waypoints, a non-finite number, a malformed rotation
+   *   (not a unit quaternion, a zero axis, a rotation key outside a waypoint), or an unknown option.
    */
   checkRoute(scene: RouteScene, options?: RouteCheckOptions & RouteSceneOptions): RouteReport;
   /**
@@ -405,14 +407,31 @@ export interface RouteShape {
   mesh?: Uint8Array | ArrayBuffer | string;
 }
 
-/** The scene: the same object as the JSON `hullkit route` reads. No rotations: translations only. */
+/**
+ * An orientation: a unit quaternion (length 1 within 1e-9), a turn of `degrees` about `axis`
+ * (right-handed), or yaw about z, then pitch about the turned y, then roll about the turned x.
+ */
+export type RouteRotation =
+  | { quaternion: [number, number, number, number] }
+  | { axis: Vec3; degrees: number }
+  | { yaw_pitch_roll_degrees: Vec3 };
+
+/**
+ * A waypoint: a translation offset, or an offset with an orientation (the traverse turned about
+ * its pivot). Between waypoints the offset moves linearly and the orientation turns at constant
+ * angular speed along the shorter arc.
+ */
+export type RouteWaypoint = Vec3 | { position: Vec3; rotation?: RouteRotation };
+
+/** The scene: the same object as the JSON `hullkit route` reads. */
 export interface RouteScene {
-  traverse: { parts: RouteShape[] };
+  /** `pivot`: the point the traverse turns about, in its own coordinates (default [0, 0, 0]). */
+  traverse: { parts: RouteShape[]; pivot?: Vec3 };
   /**
-   * Waypoints: translation offsets applied to every traverse vertex; waypoint k to k + 1 is leg k.
-   * At least two (optional for a RouteChecker, whose check() takes the route).
+   * Waypoints: offsets applied to every traverse vertex (and orientations); waypoint k to k + 1 is
+   * leg k. At least two (optional for a RouteChecker, whose check() takes the route).
    */
-  route?: Vec3[] | Float64Array;
+  route?: RouteWaypoint[] | Float64Array;
   obstacles: RouteShape[];
   /** Required clearance (default 0): a leg is clear only when the traverse stays more than this away. */
   margin?: number;
@@ -442,10 +461,20 @@ export type RouteLeg =
       /** Index of the obstacle's triangle in contact. */
       triangle: number;
       part: string;
-      /** Brackets the first contact: hi - lo <= 1e-9, lo never after the true first contact. */
+      /**
+       * Brackets the first contact: hi - lo <= 1e-9 (1e-7 on a turning leg), lo never after the
+       * true first contact.
+       */
       fraction: [number, number];
       /** The traverse offset at fraction[0]. */
       position: Vec3;
+      /** The orientation (w, x, y, z) at fraction[0]: present when the route has rotations. */
+      rotation?: [number, number, number, number];
+      /**
+       * Present (true) when a turning leg passes closer than the bounds resolve without a pose
+       * found in contact: not certified clear, so reported as a hit.
+       */
+      grazing?: true;
       sampled?: RouteSampled;
     }
   | {
@@ -514,7 +543,7 @@ export interface RouteChecker extends DisposableIfSupported {
    * against the prepared scene.
    * @throws {HullkitError} for fewer than two waypoints, a non-finite one, or after delete().
    */
-  check(route?: Vec3[] | Float64Array, options?: RouteCheckOptions): RouteReport;
+  check(route?: RouteWaypoint[] | Float64Array, options?: RouteCheckOptions): RouteReport;
   /** Seconds spent preparing the scene. */
   readonly buildSeconds: number;
   /** True once delete() was called. */

@@ -2,7 +2,9 @@
 //
 // The scene is the same object as the JSON that `hullkit route` reads. It crosses into wasm as
 // JSON text; meshes given as bytes (Uint8Array / ArrayBuffer) or through options.files go in as
-// named blobs; routes to re-check go in as a Float64Array. The report is the CLI's JSON, parsed.
+// named blobs; routes to re-check go in as a Float64Array, or as JSON text when their waypoints
+// carry rotations ({position, rotation}, parsed by the scene reader's rules). The report is the
+// CLI's JSON, parsed.
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, toFloat64 } from './internal.js';
 
 const CHECK_OPTIONS = ['samples', 'clearance'];
@@ -97,10 +99,15 @@ function loadScene(core, scene, files, requireRoute, where) {
   }
 }
 
+/** A waypoint with an orientation, {position, rotation}: such routes go to the C++ parser as JSON. */
+function isPose(waypoint) {
+  return waypoint !== null && typeof waypoint === 'object' && !Array.isArray(waypoint) && !ArrayBuffer.isView(waypoint);
+}
+
 /** Waypoints as a flat Float64Array from [[x, y, z], ...] or a flat array / Float64Array. */
 function routeArray(route, where) {
   if (route == null || typeof route.length !== 'number' || typeof route === 'string') {
-    throw new TypeError(`${where}: the route must be an array of waypoints [[x, y, z], ...] or a Float64Array x0 y0 z0 x1 ...`);
+    throw new TypeError(`${where}: the route must be an array of waypoints [[x, y, z] or {position, rotation}, ...] or a Float64Array x0 y0 z0 x1 ...`);
   }
   let flat = route;
   if (!(route instanceof Float64Array) && route.length > 0 && typeof route[0] === 'object') {
@@ -108,7 +115,7 @@ function routeArray(route, where) {
     for (let i = 0; i < route.length; i++) {
       const p = route[i];
       if (p == null || p.length !== 3) {
-        throw new HullkitError(`${where}: route[${i}]: expected 3 numbers [x, y, z] (a translation; rotations are not supported)`);
+        throw new HullkitError(`${where}: route[${i}]: expected 3 numbers [x, y, z] or {"position": [x, y, z], "rotation": ...}`);
       }
       flat[3 * i] = p[0];
       flat[3 * i + 1] = p[1];
@@ -140,6 +147,13 @@ function runCheck(core, handle, route, options, where) {
   if (route === undefined) {
     if (handle.routeWaypoints() === 0) throw new HullkitError(`${where}: no route given and the scene has none`);
     text = handle.check(0, 0, clearance, samples);
+  } else if (Array.isArray(route) && route.some(isPose)) {
+    const json = JSON.stringify(route);
+    if (json.includes('null')) {
+      const path = nonFinitePath(route, 'route');
+      if (path) throw new HullkitError(`${where}: ${path}: expected a finite number`);
+    }
+    text = handle.checkJson(json, where, clearance, samples);
   } else {
     const points = routeArray(route, where);
     const address = copyIn(core, points, where);
@@ -149,7 +163,10 @@ function runCheck(core, handle, route, options, where) {
       core._free(address);
     }
   }
-  if (!text) throw new HullkitError(`${where}: ${handle.error()}`);
+  if (!text) {
+    const message = handle.error();  // the route parser's messages start with `where` already
+    throw new HullkitError(message.startsWith(`${where}: `) ? message : `${where}: ${message}`);
+  }
   return JSON.parse(text);
 }
 

@@ -56,16 +56,29 @@ public:
             error_ = "no scene loaded";
             return "";
         }
-        hullkit::RouteOptions options;
-        options.clearance = clearance;
-        options.samples = samples;
-        hullkit::RouteReport report = count == 0 ? checker_->check(options)
-                                                 : checker_->check(reinterpret_cast<const double*>(xyz), count, options);
-        if (!report.ok()) {
-            error_ = report.error;
+        const hullkit::RouteOptions options = options_of(clearance, samples);
+        return report_json(count == 0 ? checker_->check(options)
+                                      : checker_->check(reinterpret_cast<const double*>(xyz), count, options),
+                           clearance, samples);
+    }
+
+    /// Checks a route given as the JSON array of a scene's "route" (waypoints with rotations);
+    /// `source` starts its error messages. Returns the report JSON, or "" with error() set.
+    std::string check_json(const std::string& route_json, const std::string& source, bool clearance,
+                           std::uint32_t samples) {
+        error_.clear();
+        if (!checker_) {
+            error_ = "no scene loaded";
             return "";
         }
-        return hullkit::write_report_json(checker_->scene(), report, options);
+        const hullkit::RouteResult route = hullkit::parse_route(route_json, source);
+        if (!route.ok()) {
+            error_ = route.error;
+            return "";
+        }
+        return report_json(checker_->check(route.route.data(), route.rotations.empty() ? nullptr : route.rotations.data(),
+                                           route.route.size() / 3, options_of(clearance, samples)),
+                           clearance, samples);
     }
 
     std::string error() const { return error_; }
@@ -76,6 +89,21 @@ public:
     }
 
 private:
+    static hullkit::RouteOptions options_of(bool clearance, std::uint32_t samples) {
+        hullkit::RouteOptions options;
+        options.clearance = clearance;
+        options.samples = samples;
+        return options;
+    }
+
+    std::string report_json(const hullkit::RouteReport& report, bool clearance, std::uint32_t samples) {
+        if (!report.ok()) {
+            error_ = report.error;
+            return "";
+        }
+        return hullkit::write_report_json(checker_->scene(), report, options_of(clearance, samples));
+    }
+
     std::map<std::string, std::string> files_;
     std::unique_ptr<hullkit::RouteChecker> checker_;
     std::string error_;
@@ -89,6 +117,7 @@ EMSCRIPTEN_BINDINGS(hullkit_route) {
         .function("addFile", &RouteCheckerHandle::add_file)
         .function("load", &RouteCheckerHandle::load)
         .function("check", &RouteCheckerHandle::check)
+        .function("checkJson", &RouteCheckerHandle::check_json)
         .function("error", &RouteCheckerHandle::error)
         .function("buildSeconds", &RouteCheckerHandle::build_seconds)
         .function("routeWaypoints", &RouteCheckerHandle::route_waypoints);

@@ -8,6 +8,16 @@
 
 namespace hullkit_cli {
 
+constexpr int kExitOk = 0;
+constexpr int kExitInternal = 1;  ///< a bug or out of memory
+constexpr int kExitUsage = 2;     ///< a usage or input problem
+
+/// A failure to report as "hullkit: <message>" with the given exit code (main() prints it).
+struct CliError : std::runtime_error {
+    int exit_code;
+    CliError(const std::string& message, int code = kExitUsage) : std::runtime_error(message), exit_code(code) {}
+};
+
 /// A usage or input problem: reported as one line "hullkit: <what>" and exit status 2.
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;

@@ -25,13 +25,16 @@ constexpr int kExitClear = 0;
 constexpr int kExitNotClear = 1;  // bad input exits 2 through the shared error path (cli_io)
 
 const char* const kRouteDescription =
-    "Checks a traverse moved along a route of straight translations against obstacles, one exact\n"
-    "check per leg (swept convex hulls, exact predicates): no contact is missed and none is\n"
-    "invented. Writes the report as JSON: per leg \"clear\" (with its clearance), \"hit\" (the first\n"
-    "contact as a fraction of the leg, the obstacle, triangle and part) or \"start-overlap\".\n"
-    "Scene: {\"traverse\": {\"parts\": [...]}, \"route\": [[x,y,z], ...], \"obstacles\": [...],\n"
-    "\"margin\": m}; a part or obstacle is {\"box\": {\"min\", \"max\"}}, {\"vertices\", \"triangles\"} or\n"
-    "{\"mesh\": FILE} (OBJ, OFF, PLY, STL, glTF; relative to the scene file). See README.md.\n"
+    "Checks a traverse moved along a route of straight translations, or of legs that turn while they\n"
+    "move, against obstacles, one check per leg (swept convex hulls, exact predicates): no contact\n"
+    "is missed and none is invented. Writes the report as JSON: per leg \"clear\" (with its\n"
+    "clearance), \"hit\" (the first contact as a fraction of the leg, the obstacle, triangle and\n"
+    "part) or \"start-overlap\".\n"
+    "Scene: {\"traverse\": {\"parts\": [...], \"pivot\": [x,y,z]}, \"route\": [WAYPOINT, ...],\n"
+    "\"obstacles\": [...], \"margin\": m}; a WAYPOINT is [x,y,z] or {\"position\": [x,y,z],\n"
+    "\"rotation\": {\"quaternion\": [w,x,y,z]} or {\"axis\": [x,y,z], \"degrees\": a}}; a part or\n"
+    "obstacle is {\"box\": {\"min\", \"max\"}}, {\"vertices\", \"triangles\"} or {\"mesh\": FILE}\n"
+    "(OBJ, OFF, PLY, STL, glTF; relative to the scene file). See README.md.\n"
     "Exit status: 0 every leg clear, 1 some leg not clear, 2 a usage or input problem.";
 
 }  // namespace

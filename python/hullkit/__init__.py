@@ -266,19 +266,24 @@ class RouteChecker:
         with _translated():
             self._core = _core.RouteChecker(text, source, directory)
 
-    def check(self, route=None, clearance=True, samples=0, threads=0):
+    def check(self, route=None, clearance=True, samples=0, threads=0, rotations=None):
         """The report of ``route`` (waypoints, shape (k, 3); default the scene's own) as a dict in
         ``hullkit route``'s JSON format: clear, min_clearance, legs (each with status "clear",
-        "hit" or "start-overlap" and its details), build_seconds, seconds."""
+        "hit" or "start-overlap" and its details), build_seconds, seconds. ``rotations``: the
+        traverse's orientation at each waypoint, shape (k, 4), unit quaternions w x y z (legs
+        between different orientations turn; see the README's route section)."""
         waypoints = _np.zeros((0, 3)) if route is None else as_points(route, 3, "route")
         if route is not None and len(waypoints) < 2:
             raise HullkitError(f"a route needs at least 2 waypoints, got {len(waypoints)}")
+        if rotations is not None and route is None:
+            raise HullkitError("rotations need a route: pass both to check()")
+        turns = _np.zeros((0, 4)) if rotations is None else as_points(rotations, 4, "rotations")
         if route is None and self._core.scene_waypoints == 0:
             raise HullkitError("the scene has no route: pass one to check()")
         if isinstance(samples, bool) or not isinstance(samples, (int, _np.integer)) or samples < 0:
             raise HullkitError(f"samples must be a non-negative integer, got {samples!r}")
         with _translated():
-            text = self._core.check(waypoints, bool(clearance), int(samples), _threads(threads))
+            text = self._core.check(waypoints, turns, bool(clearance), int(samples), _threads(threads))
         return _json.loads(text)
 
     @property

@@ -492,17 +492,25 @@ public:
         if (!checker_->error().empty()) throw CoreError(source + ": " + checker_->error(), -1);
     }
 
-    /// The report as JSON (hullkit route's format); `route` (k, 3), or the scene's own when empty.
-    std::string check(const Points& route, bool clearance, std::uint32_t samples, unsigned threads) const {
+    /// The report as JSON (hullkit route's format); `route` (k, 3), or the scene's own when empty;
+    /// `rotations` (k, 4) quaternions w x y z, or (0, 4) for none.
+    std::string check(const Points& route, const Points& rotations, bool clearance, std::uint32_t samples,
+                      unsigned threads) const {
         hullkit::RouteOptions options;
         options.clearance = clearance;
         options.samples = samples;
         options.threads = threads;
         const std::size_t waypoints = rows(route, 3, "route");
+        const std::size_t turns = rows(rotations, 4, "rotations");
+        if (turns != 0 && turns != waypoints) {
+            throw std::invalid_argument("rotations must have one row per waypoint: " + std::to_string(turns) + " for " +
+                                        std::to_string(waypoints) + " waypoints");
+        }
         hullkit::RouteReport report;
         {
             py::gil_scoped_release unlocked;
-            report = waypoints == 0 ? checker_->check(options) : checker_->check(route.data(), waypoints, options);
+            report = waypoints == 0 ? checker_->check(options)
+                                    : checker_->check(route.data(), turns ? rotations.data() : nullptr, waypoints, options);
         }
         if (!report.ok()) throw CoreError(report.error, -1);
         return hullkit::write_report_json(checker_->scene(), report, options);

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "../cli_support.hpp"
+#include "cli/cli_support.hpp"
 #include "delaunay_checks.hpp"
 #include "hullkit/mesh_io.hpp"
 

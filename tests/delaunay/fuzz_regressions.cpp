@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "../cli_support.hpp"
+#include "cli/cli_support.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/mesh_io.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "../cli_support.hpp"
+#include "cli/cli_support.hpp"
 #include "hullkit/mesh_io.hpp"
 
 namespace {

@@ -5,11 +5,13 @@
 // requiring a route. Checked:
 //  - a scene: at least one part, every mesh with whole index triples in range, at least one
 //    triangle and finite coordinates, a route of at least 2 finite waypoints (when required),
-//    a finite margin >= 0; written back as JSON with inline meshes and read again, the same scene;
+//    a finite margin >= 0, no rotations or a unit quaternion per waypoint, a finite pivot;
+//    written back as JSON with inline meshes and read again, the same scene;
 //  - an error: no scene, one line starting with the file name, no control characters and only
 //    well-formed UTF-8 (no raw byte of the input reaches a terminal);
 //  - no exception of any kind escapes.
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -132,17 +134,37 @@ void run(const std::string& text, const std::string* mesh_bytes, bool require_ro
         if (!std::isfinite(x)) std::abort();
     }
     if (!std::isfinite(scene.margin) || scene.margin < 0) std::abort();
+    // Rotations: none, or one unit quaternion per waypoint; a finite pivot.
+    if (!scene.rotations.empty() && scene.rotations.size() != scene.route.size() / 3 * 4) std::abort();
+    for (std::size_t i = 0; i < scene.rotations.size(); i += 4) {
+        const double* q = &scene.rotations[i];
+        const double length2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (!(std::fabs(length2 - 1.0) <= 1e-12)) std::abort();
+    }
+    for (double c : scene.pivot) {
+        if (!std::isfinite(c)) std::abort();
+    }
 
     // Written back with inline meshes and read again: the same scene, and no file asked for.
     if (scene.parts.size() + scene.obstacles.size() > 50) return;
-    std::string json = "{\"traverse\":{\"parts\":" + json_parts(scene.parts) + "},\"obstacles\":" +
+    std::string json = "{\"traverse\":{\"parts\":" + json_parts(scene.parts) + ",\"pivot\":[" +
+                       hullkit::format_json_number(scene.pivot[0]) + "," + hullkit::format_json_number(scene.pivot[1]) +
+                       "," + hullkit::format_json_number(scene.pivot[2]) + "]},\"obstacles\":" +
                        json_parts(scene.obstacles) + ",\"margin\":" + hullkit::format_json_number(scene.margin);
     if (!scene.route.empty()) {
         json += ",\"route\":[";
         for (std::size_t i = 0; i < scene.route.size(); i += 3) {
-            json += std::string(i ? "," : "") + "[" + hullkit::format_json_number(scene.route[i]) + "," +
-                    hullkit::format_json_number(scene.route[i + 1]) + "," +
-                    hullkit::format_json_number(scene.route[i + 2]) + "]";
+            const std::string position = "[" + hullkit::format_json_number(scene.route[i]) + "," +
+                                         hullkit::format_json_number(scene.route[i + 1]) + "," +
+                                         hullkit::format_json_number(scene.route[i + 2]) + "]";
+            std::string waypoint = position;
+            if (!scene.rotations.empty()) {
+                const double* q = &scene.rotations[i / 3 * 4];
+                waypoint = "{\"position\":" + position + ",\"rotation\":{\"quaternion\":[" +
+                           hullkit::format_json_number(q[0]) + "," + hullkit::format_json_number(q[1]) + "," +
+                           hullkit::format_json_number(q[2]) + "," + hullkit::format_json_number(q[3]) + "]}}";
+            }
+            json += std::string(i ? "," : "") + waypoint;
         }
         json += "]";
     }
@@ -151,8 +173,13 @@ void run(const std::string& text, const std::string* mesh_bytes, bool require_ro
     const hullkit::SceneResult back = hullkit::parse_scene(json, "back.json", loader, options);
     if (!back.ok() || loads != before || !same_meshes(back.scene.parts, scene.parts) ||
         !same_meshes(back.scene.obstacles, scene.obstacles) || back.scene.route != scene.route ||
-        back.scene.margin != scene.margin) {
+        back.scene.margin != scene.margin || back.scene.rotations.size() != scene.rotations.size() ||
+        !std::equal(scene.pivot, scene.pivot + 3, back.scene.pivot)) {
         std::abort();
+    }
+    // Normalizing a unit quaternion again may move its last bits.
+    for (std::size_t i = 0; i < scene.rotations.size(); ++i) {
+        if (!(std::fabs(back.scene.rotations[i] - scene.rotations[i]) <= 1e-15)) std::abort();
     }
 }
 

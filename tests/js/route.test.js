@@ -174,6 +174,47 @@ test('RouteChecker: one scene, many routes; delete and dispose', () => {
   assert.throws(() => disposable.check(), /the checker was deleted/);
 });
 
+test('checkRoute and RouteChecker: legs that turn, as hullkit route reports them', () => {
+  // A bar 3 long along y, turned towards x while it passes a slot 1 wide at x in [5, 6].
+  const slot = {
+    traverse: { parts: [{ name: 'bar', box: { min: [-0.2, -1.5, -0.2], max: [0.2, 1.5, 0.2] } }], pivot: [0, 0, 0] },
+    obstacles: [
+      { name: 'low', box: { min: [5, -10, -1], max: [6, -0.5, 1] } },
+      { name: 'high', box: { min: [5, 0.5, -1], max: [6, 10, 1] } },
+    ],
+  };
+  const turnedFirst = [
+    [0, 0, 0],
+    { position: [0, 0, 0], rotation: { axis: [0, 0, 1], degrees: 90 } },
+    { position: [12, 0, 0], rotation: { yaw_pitch_roll_degrees: [90, 0, 0] } },
+  ];
+  const turnedWhilePassing = [[0, 0, 0], { position: [12, 0, 0], rotation: { quaternion: [Math.SQRT1_2, 0, 0, Math.SQRT1_2] } }];
+  for (const route of [turnedFirst, turnedWhilePassing]) {
+    const scene = { ...slot, route };
+    const expected = cliReport(scene, ['--samples', '8']);
+    assertSameReport(hullkit.checkRoute(scene, { samples: 8 }), expected, JSON.stringify(route));
+    const checker = new hullkit.RouteChecker(slot);
+    assertSameReport(checker.check(route, { samples: 8 }), expected, 'RouteChecker');
+    checker.delete();
+  }
+  const first = hullkit.checkRoute({ ...slot, route: turnedFirst });
+  assert.equal(first.clear, true);
+  const [leg] = hullkit.checkRoute({ ...slot, route: turnedWhilePassing }).legs;
+  assert.equal(leg.status, 'hit');
+  assert.ok(leg.fraction[1] - leg.fraction[0] <= 1e-7);
+  assert.equal(leg.rotation.length, 4);
+  assert.equal(leg.grazing, undefined);
+  // Rotation errors name the waypoint's field, from checkRoute and from RouteChecker.check.
+  const checker = new hullkit.RouteChecker(slot);
+  assert.throws(() => checker.check([[0, 0, 0], { position: [1, 0, 0], rotation: { axis: [0, 0, 0], degrees: 5 } }]),
+    (e) => e instanceof HullkitError && e.message === 'RouteChecker.check: route[1].rotation.axis: a zero axis has no direction');
+  assert.throws(() => checker.check([[0, 0, 0], { position: [1, 0, NaN] }]),
+    (e) => e instanceof HullkitError && e.message === 'RouteChecker.check: route[1].position[2]: expected a finite number');
+  checker.delete();
+  assert.throws(() => hullkit.checkRoute({ ...slot, route: [[0, 0, 0], { position: [1, 0, 0], rotation: { quaternion: [1, 0, 0, 0.1] } }] }),
+    (e) => e instanceof HullkitError && /^checkRoute: scene: route\[1\]\.rotation\.quaternion: not a unit quaternion/.test(e.message));
+});
+
 test('checkRoute and RouteChecker: bad scenes and arguments throw one clear message', () => {
   const good = cubeScene([[0, 0, 0], [1, 0, 0]]);
   const cases = [
@@ -182,9 +223,9 @@ test('checkRoute and RouteChecker: bad scenes and arguments throw one clear mess
     [{ ...good, route: [[0, 0, 0], [1, NaN, 0]] }, {}, 'checkRoute: scene: route[1][1]: expected a finite number, got NaN'],
     [{ ...good, margin: Infinity }, {}, 'checkRoute: scene: margin: expected a finite number, got Infinity'],
     [{ ...good, route: [[0, 0, 0], [1, 0, 0, 0, 0, 90]] }, {},
-      'checkRoute: scene: route[1]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), got 6 values'],
+      'checkRoute: scene: route[1]: expected 3 numbers [x, y, z] or {"position": [x, y, z], "rotation": ...}, got 6 values'],
     [{ ...good, rotation: [0, 0, 1] }, {},
-      'checkRoute: scene: rotation: rotations are not supported: a route is translations only (waypoints [x, y, z])'],
+      'checkRoute: scene: rotation: a rotation belongs to a waypoint: {"position": [x, y, z], "rotation": {"quaternion": [w, x, y, z]}} (or "axis" with "degrees", or "yaw_pitch_roll_degrees")'],
     [{ ...good, obstacles: [{ box: { min: [0, 0], max: [1, 1, 1] } }] }, {},
       'checkRoute: scene: obstacles[0].box.min: expected 3 numbers [x, y, z], got 2 values'],
     [{ ...good, obstacles: [{ mesh: new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 7\n') }] }, {},

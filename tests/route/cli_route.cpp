@@ -2,7 +2,7 @@
 // worked out by hand, the exit status, the report on stdout or in a file, --samples and
 // --no-clearance, --threads (the same report for every thread count) and --quiet, and every
 // malformed scene of the issue giving exit 2 and its one-line message.
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -307,7 +307,7 @@ TEST_CASE("cli route: every malformed scene of the issue gives exit 2 and its me
         {scene("[[0,0,0],[1,NaN,0]]", "[]"),
          "invalid JSON: parse error at line 1, column 107: syntax error while parsing value - invalid literal; last read: '1,N'"},
         {scene("[[0,0,0],[1,\"NaN\",0]]", "[]"),
-         "route[1]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), entry 1 is a string"},
+         "route[1]: expected 3 numbers [x, y, z] or {\"position\": [x, y, z], \"rotation\": ...}, entry 1 is a string"},
         {scene("[[0,0,0],[1,0,0]]", "[]", R"(, "margin": 1e400)"), "invalid JSON: number overflow parsing '1e400'"},
         {scene(ok_route, R"([{"mesh": "missing.stl"}])"),
          "obstacles[0].mesh: " + dir.file("missing.stl") + ": cannot open: No such file or directory"},
@@ -319,9 +319,11 @@ TEST_CASE("cli route: every malformed scene of the issue gives exit 2 and its me
          "obstacles[0].triangles[0][2]: index 3 out of range (3 vertices)"},
         {scene(ok_route, R"([{"box": {"min": [0,0], "max": [1,1,1]}}])"), "obstacles[0].box.min: expected 3 numbers [x, y, z], got 2 values"},
         {scene("[[0,0,0],{\"translation\": [1,0,0], \"rotation\": [0,0,90]}]", "[]"),
-         "route[1].rotation: rotations are not supported: a route is translations only (waypoints [x, y, z])"},
+         "route[1].translation: unknown key (known here: position, rotation)"},
+        {scene("[[0,0,0],{\"position\": [1,0,0], \"rotation\": [0,0,90]}]", "[]"),
+         "route[1].rotation: expected {\"quaternion\": [w, x, y, z]}, {\"axis\": [x, y, z], \"degrees\": a} or {\"yaw_pitch_roll_degrees\": [yaw, pitch, roll]}, got an array"},
         {scene("[[0,0,0,0,0,0],[1,0,0,0,0,90]]", "[]"),
-         "route[0]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), got 6 values"},
+         "route[0]: expected 3 numbers [x, y, z] or {\"position\": [x, y, z], \"rotation\": ...}, got 6 values"},
         {scene(ok_route, "[]", R"(, "margin": -1)"), "margin: must be >= 0"},
         {scene(ok_route, "[]", R"(, "clearance": 1)"), "clearance: unknown key (known here: traverse, route, obstacles, margin)"},
     };

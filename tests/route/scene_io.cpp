@@ -3,7 +3,7 @@
 // independent JSON parser.
 #include "hullkit/scene_io.hpp"
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -171,17 +171,17 @@ TEST_CASE("scene_io: every malformed scene gives one message naming the field", 
         {scene_with(part, "[]"), "s.json: route: needs at least 2 waypoints, got 0"},
         {scene_with(part, "{\"from\": 1}"), "s.json: route: expected an array of waypoints [x, y, z], got an object"},
         {scene_with(part, "[[0,0,0],[1,0]]"),
-         "s.json: route[1]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), got 2 values"},
+         "s.json: route[1]: expected 3 numbers [x, y, z] or {\"position\": [x, y, z], \"rotation\": ...}, got 2 values"},
         {scene_with(part, "[[0,0,0],[1,0,0,0,0,0,1]]"),
-         "s.json: route[1]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), got 7 values"},
+         "s.json: route[1]: expected 3 numbers [x, y, z] or {\"position\": [x, y, z], \"rotation\": ...}, got 7 values"},
         {scene_with(part, "[[0,0,0],[1,\"2\",0]]"),
-         "s.json: route[1]: expected 3 numbers [x, y, z] (a translation; rotations are not supported), entry 1 is a string"},
+         "s.json: route[1]: expected 3 numbers [x, y, z] or {\"position\": [x, y, z], \"rotation\": ...}, entry 1 is a string"},
         {scene_with(part, "[[0,0,0],{\"position\": [1,0,0], \"rotation\": [0,0,0,1]}]"),
-         "s.json: route[1].rotation: rotations are not supported: a route is translations only (waypoints [x, y, z])"},
+         "s.json: route[1].rotation: expected {\"quaternion\": [w, x, y, z]}, {\"axis\": [x, y, z], \"degrees\": a} or {\"yaw_pitch_roll_degrees\": [yaw, pitch, roll]}, got an array"},
         {scene_with(R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "orientation": [0,0,1]})"),
-         "s.json: traverse.parts[0].orientation: rotations are not supported: a route is translations only (waypoints [x, y, z])"},
+         "s.json: traverse.parts[0].orientation: a rotation belongs to a waypoint: {\"position\": [x, y, z], \"rotation\": {\"quaternion\": [w, x, y, z]}} (or \"axis\" with \"degrees\", or \"yaw_pitch_roll_degrees\")"},
         {R"({"transform": [1,0,0], "traverse": {"parts": [)" + part + R"(]}, "route": [[0,0,0],[1,0,0]], "obstacles": []})",
-         "s.json: transform: rotations are not supported: a route is translations only (waypoints [x, y, z])"},
+         "s.json: transform: a rotation belongs to a waypoint: {\"position\": [x, y, z], \"rotation\": {\"quaternion\": [w, x, y, z]}} (or \"axis\" with \"degrees\", or \"yaw_pitch_roll_degrees\")"},
         {scene_with(part, "[[0,0,0],[1,0,0]]", R"("obstacles": [], "margn": 0.1)"),
          "s.json: margn: unknown key (known here: traverse, route, obstacles, margin)"},
         {scene_with(R"({"name": "a", "verts": [[0,0,0]]})"),

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 #include "hullkit/route.hpp"
 #include "hullkit/scene_io.hpp"
 #include "random_scenes.hpp"
@@ -47,6 +47,7 @@ std::string hex(double x) {
 std::string first_difference(const RouteReport& a, const RouteReport& b) {
     if (a.error != b.error) return "error: '" + a.error + "' vs '" + b.error + "'";
     if (a.clear != b.clear) return "clear";
+    if (a.turned != b.turned) return "turned";
     if (bits_of(a.min_clearance) != bits_of(b.min_clearance)) {
         return "min_clearance: " + hex(a.min_clearance) + " vs " + hex(b.min_clearance);
     }
@@ -64,6 +65,7 @@ std::string first_difference(const RouteReport& a, const RouteReport& b) {
         if (x.triangle != y.triangle) return leg + "triangle";
         if (x.part != y.part) return leg + "part";
         if (x.sampled_hit != y.sampled_hit) return leg + "sampled_hit";
+        if (x.grazing != y.grazing) return leg + "grazing";
         const struct {
             const char* name;
             double x, y;
@@ -75,6 +77,10 @@ std::string first_difference(const RouteReport& a, const RouteReport& b) {
             {"position[2]", x.position[2], y.position[2]},
             {"clearance", x.clearance, y.clearance},
             {"sampled_fraction", x.sampled_fraction, y.sampled_fraction},
+            {"rotation[0]", x.rotation[0], y.rotation[0]},
+            {"rotation[1]", x.rotation[1], y.rotation[1]},
+            {"rotation[2]", x.rotation[2], y.rotation[2]},
+            {"rotation[3]", x.rotation[3], y.rotation[3]},
         };
         for (const auto& field : doubles) {
             if (bits_of(field.x) != bits_of(field.y)) {
@@ -187,6 +193,31 @@ TEST_CASE("threads: the oracle's random scenes give the same report on any threa
     for (int scene_index = 0; scene_index < 40; ++scene_index) {
         CAPTURE(scene_index);
         require_same_for_every_thread_count(route_test::random_scene(rng, scene_index).scene);
+    }
+}
+
+TEST_CASE("threads: turning legs give the same report on any thread count", "[threads]") {
+    // The oracle's random scenes with an orientation per waypoint: turns of 0 to 180 degrees about
+    // random axes, the middle one repeated (a leg of one orientation: the turned parts translated).
+    std::mt19937_64 rng(route_test::kRandomSceneSeed + 3);
+    std::normal_distribution<double> normal;
+    for (int scene_index = 0; scene_index < 20; ++scene_index) {
+        CAPTURE(scene_index);
+        Scene scene = route_test::random_scene(rng, scene_index).scene;
+        scene.pivot[0] = 0.25 * scene_index;
+        const std::size_t waypoints = scene.route.size() / 3;
+        scene.route.insert(scene.route.begin() + 6, scene.route.begin() + 3, scene.route.begin() + 6);  // waypoint 1 twice
+        for (std::size_t k = 0; k <= waypoints; ++k) {
+            if (k == 2) {
+                scene.rotations.insert(scene.rotations.end(), scene.rotations.end() - 4, scene.rotations.end());
+                scene.route[3 * k] += 0.5;  // then moved along x, turned
+                continue;
+            }
+            double q[4] = {normal(rng), normal(rng), normal(rng), normal(rng)};
+            const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+            for (double c : q) scene.rotations.push_back(c / length);
+        }
+        require_same_for_every_thread_count(scene, 8);
     }
 }
 

@@ -54,11 +54,24 @@ struct TriangleMesh {
 };
 
 /// What a route check needs: the traverse's parts, the obstacles, the waypoints (translation
-/// offsets applied to every traverse vertex) and the required clearance.
+/// offsets applied to every traverse vertex, and optionally orientations) and the required
+/// clearance.
+///
+/// Orientations (legs that turn). With `rotations` a traverse vertex v is placed at waypoint k at
+/// c + R_k (v - c) + o_k (c the pivot, o_k the waypoint, R_k the rotation of the unit quaternion
+/// rotations[4k .. 4k + 4) = w x y z); between two waypoints the offset moves linearly and the
+/// orientation turns at constant angular speed along the shorter arc (slerp), both over the same
+/// fraction t in [0, 1]. A leg whose two orientations are equal (the same quaternion or its
+/// negative, bit for bit) is a translation of the rotated traverse, checked exactly as before;
+/// without rotations, or with identity orientations, the results are those of a plain route.
 struct Scene {
     std::vector<TriangleMesh> parts;
     std::vector<TriangleMesh> obstacles;
     std::vector<double> route;  ///< waypoints, flat x y z; at least 2
+    /// Empty (no rotations) or 4 numbers w x y z per waypoint: unit quaternions (within 1e-9;
+    /// normalized before use).
+    std::vector<double> rotations;
+    double pivot[3] = {0.0, 0.0, 0.0};  ///< the point the traverse turns about, own coordinates
     double margin = 0.0;        ///< required clearance, >= 0
 };
 
@@ -79,11 +92,18 @@ struct LegReport {
     std::int64_t triangle = -1;
     std::int64_t part = -1;
     /// Hit: [lo, hi] brackets the first moment the traverse comes within the margin; hi - lo <= 1e-9
-    /// and lo is never after the true first contact. StartOverlap: [0, 0].
+    /// (1e-7 on a turning leg) and lo is never after the true first contact. StartOverlap: [0, 0].
     /// Clear: both are the fraction at which the minimum clearance occurs.
     double fraction_lo = 0.0;
     double fraction_hi = 0.0;
     double position[3] = {0.0, 0.0, 0.0};  ///< the traverse offset at fraction_lo
+    /// The traverse's orientation at fraction_lo (w x y z; the identity without rotations).
+    double rotation[4] = {1.0, 0.0, 0.0, 0.0};
+    /// Hit on a turning leg only: the bounds could neither separate the traverse from the obstacle
+    /// over [fraction_lo, fraction_hi] nor find the pose at fraction_hi in contact (a tangential
+    /// graze, closer than the bounds resolve). The leg is not certified clear, so it is reported
+    /// as a hit; fraction_lo is still never after a true first contact.
+    bool grazing = false;
     /// Clear: the minimum distance over the leg, correct to 1e-9 relative (infinity without
     /// obstacles; NaN when RouteOptions::clearance is off). Hit: the distance of the contact pair
     /// at fraction_hi (at most the margin; 0 at margin 0). StartOverlap: the distance of the pair
@@ -117,6 +137,7 @@ struct RouteOptions {
 
 struct RouteReport {
     bool clear = true;  ///< every leg clear
+    bool turned = false;  ///< the route checked had orientations (LegReport::rotation is meaningful)
     double min_clearance = std::numeric_limits<double>::infinity();  ///< over all legs
     std::vector<LegReport> legs;
     double build_seconds = 0.0;  ///< preparing the scene (hulls, BVH) after reading it
@@ -161,6 +182,10 @@ public:
     /// scene's margin. Fewer than 2 waypoints or a non-finite one is an error in the report.
     RouteReport check(const double* route_xyz, std::size_t waypoint_count,
                       const RouteOptions& options = {}) const;
+    /// The same with an orientation per waypoint: `rotations_wxyz` holds 4 numbers per waypoint
+    /// (unit quaternions w x y z, within 1e-9), or is null for none. See Scene::rotations.
+    RouteReport check(const double* route_xyz, const double* rotations_wxyz, std::size_t waypoint_count,
+                      const RouteOptions& options = {}) const;
     /// Checks the scene's own route.
     RouteReport check(const RouteOptions& options = {}) const;
 
@@ -168,11 +193,23 @@ public:
     /// the scene's margin; `want_distance` also computes the minimum distance (costlier). On a bad
     /// scene or a non-finite offset: contact true, distance NaN.
     StaticContact static_contact(const double offset[3], bool want_distance = false) const;
+    /// The same at a turned pose: the traverse turned by the unit quaternion `rotation_wxyz` about
+    /// the scene's pivot, then translated by `offset` (see Scene). A non-unit rotation (beyond
+    /// 1e-9) counts as a bad offset.
+    StaticContact static_contact(const double offset[3], const double rotation_wxyz[4],
+                                 bool want_distance = false) const;
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+/// The pose at fraction t in [0, 1] of a leg from (offset o0, orientation q0) to (o1, q1), as the
+/// checker moves the traverse: offset o0 + t (o1 - o0), orientation turning at constant angular
+/// speed along the shorter arc (slerp); exactly the end poses at t = 0 and t = 1. Orientations are
+/// unit quaternions w x y z (normalized here).
+void leg_pose(const double o0[3], const double q0[4], const double o1[3], const double q1[4], double t,
+              double offset[3], double rotation[4]);
 
 /// Same as checker.static_contact(offset, want_distance).
 StaticContact static_contact(const RouteChecker& checker, const double offset[3],

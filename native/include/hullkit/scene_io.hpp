@@ -2,14 +2,23 @@
 // layer read and write).
 //
 // Scene:
-//   {"traverse": {"parts": [PART, ...]}, "route": [[x,y,z], ...], "obstacles": [PART, ...], "margin": m}
+//   {"traverse": {"parts": [PART, ...], "pivot": [x,y,z]}, "route": [WAYPOINT, ...],
+//    "obstacles": [PART, ...], "margin": m}
 // where PART is {"name": "...", and exactly one of
 //   "box": {"min": [x,y,z], "max": [x,y,z]}                       an axis-aligned box, 12 triangles
 //   "vertices": [[x,y,z], ...], "triangles": [[i,j,k], ...]      an inline triangle mesh
-//   "mesh": "file.stl"                                            OBJ, OFF, PLY or STL, see mesh_read.hpp
-// }. "margin" is optional (default 0). Parts without a name are called "part K", obstacles
-// "obstacle K" (K their index). Rotations are not supported: a key "rotation", "orientation",
-// "transform" (or similar) anywhere, or a waypoint that is not 3 numbers, is rejected as such.
+//   "mesh": "file.stl"                                            OBJ, OFF, PLY, STL or glTF, see mesh_read.hpp
+// }. "margin" is optional (default 0), "pivot" too (default [0, 0, 0], the traverse's own origin).
+// Parts without a name are called "part K", obstacles "obstacle K" (K their index).
+// WAYPOINT is [x, y, z] (a translation of the traverse) or {"position": [x, y, z], "rotation": R}
+// with "rotation" optional (the identity) and R exactly one of
+//   {"quaternion": [w, x, y, z]}          a unit quaternion (length 1 within 1e-9; normalized)
+//   {"axis": [x, y, z], "degrees": a}      a turn by a degrees about the axis (right-handed)
+//   {"yaw_pitch_roll_degrees": [y, p, r]}  yaw about z, then pitch about the turned y, then roll
+//                                          about the turned x (intrinsic z-y'-x''): Rz Ry Rx
+// The traverse turns about its pivot: a vertex v goes to pivot + R (v - pivot) + position; see
+// route.hpp for the motion between waypoints. A rotation key anywhere else ("rotation",
+// "orientation", "transform", ...) is rejected with a message saying where rotations go.
 // Every problem gives one line naming the JSON path: "scene.json: obstacles[2].box.min: expected
 // 3 numbers"; unknown keys are errors too (a misspelt "margn" must not silently mean margin 0).
 #pragma once
@@ -49,6 +58,16 @@ struct SceneResult {
 SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
                         const SceneReadOptions& options = {});
 
+/// A route on its own: the JSON array of a scene's "route" (same rules and messages).
+struct RouteResult {
+    std::vector<double> route;      ///< flat x y z
+    std::vector<double> rotations;  ///< empty, or w x y z per waypoint
+    std::string error;
+
+    bool ok() const { return error.empty(); }
+};
+RouteResult parse_route(const std::string& json_text, const std::string& source);
+
 /// Reads a scene file; mesh paths are relative to the scene file's directory. "-" reads standard
 /// input (mesh paths then relative to the current directory).
 SceneResult read_scene_file(const std::string& path, const SceneReadOptions& options = {});
@@ -57,6 +76,8 @@ SceneResult read_scene_file(const std::string& path, const SceneReadOptions& opt
 ///   {"clear": bool, "min_clearance": d|null, "legs": [LEG, ...], "build_seconds": b, "seconds": s}
 /// with LEG one of
 ///   {"status":"hit","obstacle":NAME,"triangle":i,"part":NAME,"fraction":[lo,hi],"position":[x,y,z]}
+///   (plus "rotation":[w,x,y,z], the orientation at lo, when the route checked has rotations, and
+///   "grazing":true when the hit is a graze the bounds could not resolve; see LegReport)
 ///   {"status":"clear","clearance":d|null,"obstacle":NAME|null,"fraction":f|null}
 ///   {"status":"start-overlap","obstacle":NAME,"part":NAME,"triangle":i}
 /// plus "sampled": {"hit": bool, "fraction": f|null} on every leg when options.samples > 0.

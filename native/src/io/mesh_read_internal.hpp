@@ -1,9 +1,9 @@
-// Private helpers of the readers (native/src/io and mesh_io.cpp): splitting text into numbered
-// lines and fields, strict number parsing, the one-line error messages, and the pieces that
-// PointReader (point_reader.cpp) streams through: an input read in chunks, the point-text header
-// and body parser of mesh_io.cpp, and the PLY body reader of ply.cpp.
-// (mesh_io.cpp has similar line and number helpers for the point readers in an anonymous
-// namespace; these are the few the mesh readers need.)
+// Private helpers of the readers (native/src/io): splitting text into numbered lines and
+// fields, strict number parsing, the one-line error messages, and the pieces that PointReader
+// (point_reader.cpp) streams through: an input read in chunks, the point-text header and body
+// parser of point_text.cpp, and the PLY body reader of ply.cpp.
+// (text_fields.hpp has similar line and number helpers for the point readers, in io::text;
+// these are the few the mesh readers need.)
 #pragma once
 
 #include "hullkit/mesh_io.hpp"
@@ -176,7 +176,7 @@ private:
 /// How far reading a header got in the input seen so far.
 enum class ReadStatus { Done, NeedMore, Failed };
 
-// ---- point text: xyz, rbox, OBJ, OFF (mesh_io.cpp) ----
+// ---- point text: xyz, rbox, OBJ, OFF (point_text.cpp) ----
 
 enum class PointTextFormat { Xyz, Rbox, Obj, Off };
 

@@ -54,6 +54,18 @@ std::size_t size_of(ScalarType type) {
 
 bool is_integer(ScalarType type) { return type != ScalarType::Float32 && type != ScalarType::Float64; }
 
+/// The range of an integer type, for ascii values ("300" is not a uchar, "1e300" not a uint).
+void integer_range(ScalarType type, double* low, double* high) {
+    switch (type) {
+        case ScalarType::Int8: *low = -128.0, *high = 127.0; return;
+        case ScalarType::UInt8: *low = 0.0, *high = 255.0; return;
+        case ScalarType::Int16: *low = -32768.0, *high = 32767.0; return;
+        case ScalarType::UInt16: *low = 0.0, *high = 65535.0; return;
+        case ScalarType::Int32: *low = -2147483648.0, *high = 2147483647.0; return;
+        default: *low = 0.0, *high = 4294967295.0; return;  // UInt32
+    }
+}
+
 /// An integral value read from the file, for messages. An ascii body may hold any magnitude
 /// ("1e300"), which a cast to an integer type cannot hold.
 std::string integer_text(double value) {
@@ -209,8 +221,14 @@ public:
             if (next_word_ >= words_.size()) return fail(where() + " has too few values");
             std::string_view word = words_[next_word_++];
             if (!io::parse_finite(word, out)) return fail(where() + ": value " + io::quote(word) + " is not a finite number");
-            if (is_integer(type) && *out != std::floor(*out)) {
-                return fail(where() + ": value " + io::quote(word) + " is not an integer");
+            if (is_integer(type)) {
+                if (*out != std::floor(*out)) return fail(where() + ": value " + io::quote(word) + " is not an integer");
+                double low, high;
+                integer_range(type, &low, &high);
+                if (*out < low || *out > high) {
+                    return fail(where() + ": value " + io::quote(word) + " is outside the declared type's range [" +
+                                integer_text(low) + ", " + integer_text(high) + "]");
+                }
             }
             return true;
         }

@@ -1,6 +1,6 @@
 // PointReader: point files read in batches, text parsed in pieces on threads (point_reader.hpp).
 //
-// Text (xyz, rbox, OBJ, OFF): the header is read once (mesh_io.cpp's read_point_text_header);
+// Text (xyz, rbox, OBJ, OFF): the header is read once (point_text.cpp's read_point_text_header);
 // then each batch, about batch_bytes of whole lines, is taken in chunks of whole lines that
 // threads claim in input order and parse at once (parse_point_piece), each into its own array;
 // the arrays are joined in input order. A chunk knows only its own lines: the join numbers them
@@ -12,8 +12,8 @@
 
 #include "hullkit/mesh_read.hpp"
 
-#include "../large_array.hpp"
-#include "../parallel.hpp"
+#include "hull/large_array.hpp"
+#include "hull/parallel.hpp"
 #include "mesh_read_internal.hpp"
 
 #include <algorithm>

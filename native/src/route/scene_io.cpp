@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "motion.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -77,7 +79,8 @@ std::string terminal_safe(const std::string& text) {
     return out;
 }
 
-/// Keys that would describe a rotation; refused with a message that says so.
+/// Keys that would describe a rotation; outside a waypoint they get a message that says where
+/// rotations go.
 bool is_rotation_key(const std::string& key) {
     static const char* const kKeys[] = {"rotation", "rotations", "orientation", "orientations", "transform",
                                         "transforms", "quaternion", "matrix", "pose", "poses", "euler", "angle",
@@ -87,6 +90,10 @@ bool is_rotation_key(const std::string& key) {
     }
     return false;
 }
+
+const char* const kRotationPlace =
+    "a rotation belongs to a waypoint: {\"position\": [x, y, z], \"rotation\": {\"quaternion\": [w, x, y, z]}} "
+    "(or \"axis\" with \"degrees\", or \"yaw_pitch_roll_degrees\")";
 
 const char* type_name(const json& value) {
     switch (value.type()) {
@@ -123,9 +130,7 @@ public:
             for (const char* name : known) ok = ok || key == name;
             if (ok) continue;
             const std::string where = path.empty() ? key : path + "." + key;
-            if (is_rotation_key(key)) {
-                return fail(where, "rotations are not supported: a route is translations only (waypoints [x, y, z])");
-            }
+            if (is_rotation_key(key)) return fail(where, kRotationPlace);
             std::string list;
             for (const char* name : known) list += std::string(list.empty() ? "" : ", ") + name;
             return fail(where, "unknown key (known here: " + list + ")");
@@ -143,14 +148,6 @@ public:
     /// [x, y, z], appended to *out.
     bool vec3(const json& value, const std::string& path, std::vector<double>* out, const char* hint = "") {
         if (!value.is_array() || value.size() != 3) {
-            if (value.is_object()) {
-                for (auto it = value.begin(); it != value.end(); ++it) {
-                    if (is_rotation_key(it.key())) {
-                        return fail(path + "." + it.key(),
-                                    "rotations are not supported: a route is translations only (waypoints [x, y, z])");
-                    }
-                }
-            }
             return fail(path, std::string("expected 3 numbers [x, y, z]") + hint + ", got " +
                                   (value.is_array() ? std::to_string(value.size()) + " values" : type_name(value)));
         }
@@ -163,6 +160,107 @@ public:
             if (!finite_number(value[axis], path + "[" + std::to_string(axis) + "]", &x)) return false;
             out->push_back(x);
         }
+        return true;
+    }
+
+    /// n finite numbers, into out[0 .. n).
+    bool numbers(const json& value, const std::string& path, std::size_t n, const char* shape, double* out) {
+        if (!value.is_array() || value.size() != n) {
+            return fail(path, std::string("expected ") + shape + ", got " +
+                                  (value.is_array() ? std::to_string(value.size()) + " values" : type_name(value)));
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!finite_number(value[k], path + "[" + std::to_string(k) + "]", &out[k])) return false;
+        }
+        return true;
+    }
+
+    /// A waypoint's "rotation", as a unit quaternion w x y z.
+    bool rotation(const json& value, const std::string& path, double q[4]) {
+        if (!value.is_object()) {
+            return fail(path, std::string("expected {\"quaternion\": [w, x, y, z]}, {\"axis\": [x, y, z], \"degrees\": a} "
+                                          "or {\"yaw_pitch_roll_degrees\": [yaw, pitch, roll]}, got ") + type_name(value));
+        }
+        if (!check_object(value, path, {"quaternion", "axis", "degrees", "yaw_pitch_roll_degrees"})) return false;
+        const int kinds = int(value.contains("quaternion")) + int(value.contains("axis") || value.contains("degrees")) +
+                          int(value.contains("yaw_pitch_roll_degrees"));
+        if (kinds != 1) {
+            return fail(path, std::string(kinds == 0 ? "needs" : "give only") +
+                                  " one of \"quaternion\": [w, x, y, z], \"axis\": [x, y, z] with \"degrees\": a, "
+                                  "and \"yaw_pitch_roll_degrees\": [yaw, pitch, roll]");
+        }
+        if (value.contains("quaternion")) {
+            const std::string where = path + ".quaternion";
+            if (!numbers(value["quaternion"], where, 4, "4 numbers [w, x, y, z]", q)) return false;
+            const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+            if (!(std::fabs(length - 1.0) <= 1e-9)) {
+                return fail(where, "not a unit quaternion (its length is " + format_json_number(length) +
+                                       "; allowed: 1 within 1e-9)");
+            }
+            for (int k = 0; k < 4; ++k) q[k] /= length;
+            return true;
+        }
+        if (value.contains("axis")) {
+            if (!value.contains("degrees")) return fail(path, "\"axis\" without \"degrees\"");
+            double axis[3], degrees;
+            if (!numbers(value["axis"], path + ".axis", 3, "3 numbers [x, y, z]", axis)) return false;
+            if (!finite_number(value["degrees"], path + ".degrees", &degrees)) return false;
+            const double length = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+            if (!(length > 0.0)) return fail(path + ".axis", "a zero axis has no direction");
+            if (!std::isfinite(length)) return fail(path + ".axis", "too long (its length overflows)");
+            double sine, cosine;
+            route_detail::sin_cos_degrees(0.5 * degrees, &sine, &cosine);
+            q[0] = cosine;
+            for (int k = 0; k < 3; ++k) q[k + 1] = sine / length * axis[k];
+            return true;
+        }
+        if (value.contains("degrees")) return fail(path, "\"degrees\" without \"axis\"");
+        // Yaw about z, then pitch about the turned y, then roll about the turned x (intrinsic
+        // z-y'-x''): q = q_z(yaw) q_y(pitch) q_x(roll).
+        double angles[3];
+        if (!numbers(value["yaw_pitch_roll_degrees"], path + ".yaw_pitch_roll_degrees", 3, "3 numbers [yaw, pitch, roll]",
+                     angles)) {
+            return false;
+        }
+        double sy, cy, sp, cp, sr, cr;
+        route_detail::sin_cos_degrees(0.5 * angles[0], &sy, &cy);
+        route_detail::sin_cos_degrees(0.5 * angles[1], &sp, &cp);
+        route_detail::sin_cos_degrees(0.5 * angles[2], &sr, &cr);
+        q[0] = cy * cp * cr + sy * sp * sr;
+        q[1] = cy * cp * sr - sy * sp * cr;
+        q[2] = cy * sp * cr + sy * cp * sr;
+        q[3] = sy * cp * cr - cy * sp * sr;
+        return true;
+    }
+
+    /// A waypoint: [x, y, z] or {"position": [x, y, z], "rotation": R}; *turned tells whether it
+    /// had a rotation (else q is the identity).
+    bool waypoint(const json& value, const std::string& path, std::vector<double>* xyz, double q[4], bool* turned) {
+        q[0] = 1.0, q[1] = q[2] = q[3] = 0.0;
+        *turned = false;
+        if (!value.is_object()) return vec3(value, path, xyz, " or {\"position\": [x, y, z], \"rotation\": ...}");
+        if (!check_object(value, path, {"position", "rotation"})) return false;
+        if (!value.contains("position")) return fail(path, "missing \"position\"");
+        if (!vec3(value["position"], path + ".position", xyz)) return false;
+        if (!value.contains("rotation")) return true;
+        *turned = true;
+        return rotation(value["rotation"], path + ".rotation", q);
+    }
+
+    /// "route": at least 2 waypoints; *rotations stays empty when none has a rotation.
+    bool waypoints(const json& route, std::vector<double>* xyz, std::vector<double>* rotations) {
+        if (!route.is_array()) return fail("route", std::string("expected an array of waypoints [x, y, z], got ") + type_name(route));
+        bool any_turned = false;
+        std::vector<double> turns;
+        for (std::size_t k = 0; k < route.size(); ++k) {
+            double q[4];
+            bool turned;
+            if (!waypoint(route[k], "route[" + std::to_string(k) + "]", xyz, q, &turned)) return false;
+            any_turned = any_turned || turned;
+            turns.insert(turns.end(), q, q + 4);
+        }
+        if (any_turned) *rotations = std::move(turns);
+        if (route.size() < 2) return fail("route", "needs at least 2 waypoints, got " + std::to_string(route.size()));
         return true;
     }
 
@@ -283,23 +381,17 @@ public:
         if (!check_object(root, "", {"traverse", "route", "obstacles", "margin"})) return false;
         if (!root.contains("traverse")) return fail("", "missing \"traverse\"");
         const json& traverse = root["traverse"];
-        if (!check_object(traverse, "traverse", {"parts"})) return false;
+        if (!check_object(traverse, "traverse", {"parts", "pivot"})) return false;
         if (!traverse.contains("parts")) return fail("traverse", "missing \"parts\"");
         if (!shapes(traverse["parts"], "traverse.parts", "part", &out->parts)) return false;
         if (out->parts.empty()) return fail("traverse.parts", "no parts (the traverse needs at least one)");
+        if (traverse.contains("pivot") && !numbers(traverse["pivot"], "traverse.pivot", 3, "3 numbers [x, y, z]", out->pivot)) {
+            return false;
+        }
 
         if (root.contains("route")) {
             const json& route = root["route"];
-            if (!route.is_array()) return fail("route", std::string("expected an array of waypoints [x, y, z], got ") + type_name(route));
-            for (std::size_t k = 0; k < route.size(); ++k) {
-                if (!vec3(route[k], "route[" + std::to_string(k) + "]", &out->route,
-                          " (a translation; rotations are not supported)")) {
-                    return false;
-                }
-            }
-            if (route.size() < 2) {
-                return fail("route", "needs at least 2 waypoints, got " + std::to_string(route.size()));
-            }
+            if (!waypoints(route, &out->route, &out->rotations)) return false;
         } else if (options.require_route) {
             return fail("", "missing \"route\"");
         }
@@ -339,21 +431,44 @@ MeshLoader file_mesh_loader(const std::string& directory) {
     };
 }
 
+namespace {
+
+/// Parses JSON text into *root, or sets *error ("SOURCE: invalid JSON: ...").
+bool parse_json(const std::string& json_text, const std::string& source, const char* expected, json* root,
+                std::string* error) {
+    if (json_text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        *error = source + ": empty file, expected " + expected;
+        return false;
+    }
+    LocatingParser handler(*root);
+    if (!json::sax_parse(json_text, &handler, json::input_format_t::json, true, false) || !handler.message.empty()) {
+        *error = terminal_safe(source + ": invalid JSON: " +
+                               (handler.message.empty() ? std::string("cannot parse") : readable_parse_error(handler.message)));
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+RouteResult parse_route(const std::string& json_text, const std::string& source) {
+    RouteResult result;
+    json root;
+    if (!parse_json(json_text, source, "a JSON route", &root, &result.error)) return result;
+    const MeshLoader no_meshes;
+    SceneParser parser(source, no_meshes);
+    if (!parser.waypoints(root, &result.route, &result.rotations)) {
+        result = RouteResult{};
+        result.error = terminal_safe(parser.error());
+    }
+    return result;
+}
+
 SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
                         const SceneReadOptions& options) {
     SceneResult result;
-    if (json_text.find_first_not_of(" \t\r\n") == std::string::npos) {
-        result.error = source + ": empty file, expected a JSON scene";
-        return result;
-    }
     json root;
-    LocatingParser handler(root);
-    if (!json::sax_parse(json_text, &handler, json::input_format_t::json, true, false) || !handler.message.empty()) {
-        result.error = terminal_safe(source + ": invalid JSON: " +
-                                     (handler.message.empty() ? std::string("cannot parse")
-                                                              : readable_parse_error(handler.message)));
-        return result;
-    }
+    if (!parse_json(json_text, source, "a JSON scene", &root, &result.error)) return result;
     SceneParser parser(source, load_mesh);
     if (!parser.scene(root, options, &result.scene)) {
         result.scene = Scene{};
@@ -399,6 +514,11 @@ std::string write_report_json(const Scene& scene, const RouteReport& report, con
                 entry["part"] = name_of(scene.parts, leg.part);
                 entry["fraction"] = ordered::array({number(leg.fraction_lo), number(leg.fraction_hi)});
                 entry["position"] = ordered::array({number(leg.position[0]), number(leg.position[1]), number(leg.position[2])});
+                if (report.turned) {
+                    entry["rotation"] = ordered::array({number(leg.rotation[0]), number(leg.rotation[1]),
+                                                        number(leg.rotation[2]), number(leg.rotation[3])});
+                }
+                if (leg.grazing) entry["grazing"] = true;
                 break;
             case LegStatus::Clear:
                 entry["clearance"] = number(leg.clearance);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the degenerate-input corpus of tests/degenerate.cpp into this directory.
+"""Writes the degenerate-input corpus of tests/hull/degenerate.cpp into this directory.
 
 Every file is plain text: two '#' comment lines (what the file reproduces, and the exact affine
 dimension of its points as "# dimension: N", computed here with rational arithmetic), then one
@@ -366,7 +366,7 @@ def from_bug_reports():
 README_INTRO = """# Degenerate inputs
 
 Point sets that exercise the degenerate cases of 3D convex hulls: coplanar, collinear, cospherical
-and repeated points, near-degenerate rounding, and extreme scales. `tests/degenerate.cpp` computes
+and repeated points, near-degenerate rounding, and extreme scales. `tests/hull/degenerate.cpp` computes
 the hull of every `*.txt` file here with both algorithms, with and without merged coplanar faces,
 checks each result with `hullkit::verify` and with the independent GMP checks, and requires both
 algorithms to agree on the dimension, the vertices and the merged faces.

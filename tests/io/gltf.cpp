@@ -5,7 +5,7 @@
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/mesh_read.hpp"
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "hull_checks.hpp"
+#include "hull/hull_checks.hpp"
 
 using hullkit_test::Cloud;
 using hullkit_test::read_text;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 #include "hull_checks.hpp"
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_io.hpp"

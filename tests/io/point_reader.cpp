@@ -7,7 +7,7 @@
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/mesh_read.hpp"
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -521,7 +521,7 @@ void put_value(std::string* out, const std::string& format, const PlyType& type,
 std::string ply_file(const std::string& format, const PlyType& type, std::size_t count, bool element_before, bool faces,
                      std::uint64_t seed) {
     std::mt19937_64 random(seed);
-    std::string out = "ply\nformat " + format + " 1.0\ncomment made by tests/point_reader.cpp\n";
+    std::string out = "ply\nformat " + format + " 1.0\ncomment made by tests/io/point_reader.cpp\n";
     if (element_before) out += "element camera 2\nproperty uchar id\nproperty double scale\n";
     out += "element vertex " + std::to_string(count) + "\nproperty " + type.name + " x\nproperty ushort confidence\n" +
            "property " + type.name + " y\nproperty " + type.name + " z\n";

@@ -2,7 +2,7 @@
 // back, the format detection, and every error path with its message.
 #include "hullkit/mesh_read.hpp"
 
-#include "cli_support.hpp"
+#include "cli/cli_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -340,6 +340,14 @@ TEST_CASE("mesh_read: PLY errors", "[mesh_read]") {
     CHECK(error_of(text.substr(0, face_start) + "2 0 1" + text.substr(face_end), "a.ply") ==
           "a.ply:" + std::to_string(face_line) + ": face 0: a face needs at least 3 vertices, got 2");
     CHECK(error_of(ascii + "1 2\n", "a.ply").find(": content after the last element") != std::string::npos);
+    // Ascii integers must fit their declared type: a uchar count of 1e300 or 300, an int index of 1e10.
+    CHECK(error_of(text.substr(0, face_start) + "1e300 0 1 2" + text.substr(face_end), "a.ply") ==
+          "a.ply:" + std::to_string(face_line) + ": face 0: value \"1e300\" is outside the declared type's range [0, 255]");
+    CHECK(error_of(text.substr(0, face_start) + "300 0 1 2" + text.substr(face_end), "a.ply") ==
+          "a.ply:" + std::to_string(face_line) + ": face 0: value \"300\" is outside the declared type's range [0, 255]");
+    CHECK(error_of(text.substr(0, face_start) + "3 0 1 1e10" + text.substr(face_end), "a.ply") ==
+          "a.ply:" + std::to_string(face_line) +
+              ": face 0: value \"1e10\" is outside the declared type's range [-2147483648, 2147483647]");
 
     // Binary: cut short, or with bytes left over.
     const std::string binary = write_ply(mesh, "binary_little_endian");
@@ -447,11 +455,15 @@ TEST_CASE("mesh_read: regression inputs from fuzzing (tests/data/fuzz) give a cl
     // A 19-digit index overflowed int64 while it was parsed (undefined behaviour).
     CHECK(read("obj-face-index-19-digits.obj").error ==
           "obj-face-index-19-digits.obj:4: face corner \"9999999999999999999\" is not a vertex index (1-based, or negative)");
-    // Ascii PLY values of any magnitude were cast to long long for the message (undefined behaviour).
+    // Ascii PLY values of any magnitude were cast to long long for the message, and a list count of
+    // 1e300 to uint64 for the loop (undefined behaviour): integers must fit their declared type.
     CHECK(read("ply-ascii-list-count-minus-1e300.ply").error ==
-          "ply-ascii-list-count-minus-1e300.ply:13: face 0: a list count is negative: -1e+300");
+          "ply-ascii-list-count-minus-1e300.ply:13: face 0: value \"-1e300\" is outside the declared type's range [0, 255]");
+    CHECK(read("ply-ascii-list-count-1e300.ply").error ==
+          "ply-ascii-list-count-1e300.ply:13: face 0: value \"1e300\" is outside the declared type's range [0, 255]");
     CHECK(read("ply-ascii-face-index-1e300.ply").error ==
-          "ply-ascii-face-index-1e300.ply:13: face 0: index 1e+300 out of range (3 vertices)");
+          "ply-ascii-face-index-1e300.ply:13: face 0: value \"1e300\" is outside the declared type's range "
+          "[-2147483648, 2147483647]");
     // Bytes of the file in a message: printable ASCII only (0xff 0xfe used to be echoed raw).
     // (Now a skipped record, so the file has no vertices; with some, its warning is printable too.)
     const std::string name = "obj-unknown-record-escape-and-high-bytes.obj";

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "hull_checks.hpp"
+#include "hull/hull_checks.hpp"
 
 using hullkit::collinear3d;
 using hullkit::kPredicateMaxMagnitude;

@@ -1,0 +1,602 @@
+// Legs that turn: RouteChecker's check of a leg whose two orientations differ. motion.hpp has the
+// motion (linear offset, slerp orientation, about the traverse's pivot) and the bound this rests
+// on: over a sub-interval [t0, t1] every point of the traverse within r of the rotation axis stays
+// within delta = r (theta (t1 - t0))^2 / 8 of the convex hull of its two end positions.
+//
+//   start      the exact static test at the leg's first pose (surfaces within the margin, then
+//              containment by ray parity), as for a translation;
+//   certify    [t0, t1] is clear when, for every part triangle and obstacle triangle, some
+//              direction keeps the triangle's 6 end-pose vertices more than its delta plus the
+//              margin (plus the tolerance) away from the obstacle triangle; broad phase: the part's
+//              BVH nodes placed at both poses, their box grown by the node's own delta, against the
+//              obstacles' BVH;
+//   subdivide  an interval not certified is halved, earlier half first, down to kTurnStep; the
+//              certified intervals form the clear prefix [0, lo];
+//   bracket    at the first interval still uncertain at that width, the exact static test at its
+//              end (and up to kTurnLookAhead steps further, while within 1e-7 of lo) finds a pose in
+//              contact: hi. When none is, the traverse passes closer than the bounds can resolve
+//              without a pose found in contact: reported as a hit with `grazing`, [lo, lo + step].
+//   clearance  of a clear leg: branch and bound over sub-intervals; lower bounds from the same
+//              separating directions minus delta, upper bounds from distances at exact poses.
+// Every "contact" reported is a pose whose rounded coordinates the exact static test finds within
+// the margin; "clear" is reported only when every sub-interval was certified.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "checker_internal.hpp"
+#include "motion.hpp"
+
+namespace hullkit {
+
+using namespace route_detail;
+
+namespace {
+
+/// The narrowest sub-interval (2.98e-8 of the leg): with kTurnLookAhead more steps a bracket stays
+/// within the promised 1e-7.
+constexpr double kTurnStep = 0x1p-25;
+constexpr int kTurnLookAhead = 2;
+
+/// The axis-aligned box of `body` (the traverse's own coordinates) placed at `pose`, before the
+/// rounding allowance the caller adds.
+Box placed_box(const Box& body, const Pose& pose, const Vec& pivot) {
+    if (pose.rotation.identity) return body.shifted(pose.offset);
+    const Vec c = (body.lo + body.hi) * 0.5, h = (body.hi - body.lo) * 0.5;
+    const Vec centre = place(pose, pivot, c);
+    const Rotation& r = pose.rotation;
+    const Vec reach(glm::dot(glm::abs(r.row[0]), h), glm::dot(glm::abs(r.row[1]), h), glm::dot(glm::abs(r.row[2]), h));
+    return {centre - reach, centre + reach};
+}
+
+double box_size2(const Box& b) {
+    const Vec d = b.hi - b.lo;
+    return glm::dot(d, d);
+}
+
+using NodePairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+/// Walks the part's BVH (node boxes placed by `node_box(n)`) against the obstacles' BVH, depth
+/// first, opening the larger box of a pair; `keep(part_box, obstacle_box)` says whether a pair of
+/// nodes may hold what is sought, `leaves(part_leaf, obstacle_leaf)` visits a pair of leaves and
+/// returns true to stop the walk (then dual_walk returns true).
+template <typename NodeBox, typename Keep, typename Leaves>
+bool dual_walk(const Bvh& part_bvh, const Bvh& obstacles, NodePairs& stack, NodeBox&& node_box, Keep&& keep,
+               Leaves&& leaves) {
+    if (part_bvh.nodes.empty() || obstacles.nodes.empty()) return false;
+    stack.clear();
+    stack.emplace_back(0u, 0u);
+    while (!stack.empty()) {
+        const auto [pn, on] = stack.back();
+        stack.pop_back();
+        const Box& pb = node_box(pn);
+        const BvhNode& onode = obstacles.nodes[on];
+        if (!keep(pb, onode.box)) continue;
+        const BvhNode& pnode = part_bvh.nodes[pn];
+        if (pnode.count == 0 && (onode.count != 0 || box_size2(pb) >= box_size2(onode.box))) {
+            stack.emplace_back(pnode.first, on);
+            stack.emplace_back(pnode.first + 1, on);
+        } else if (onode.count == 0) {
+            stack.emplace_back(pn, onode.first);
+            stack.emplace_back(pn, onode.first + 1);
+        } else if (leaves(pnode, onode)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Whether the direction n keeps the points a[0..3), b[0..3) more than `grow` (times |n|) away
+/// from triangle q, on either side; *gap gets the distance along the unit direction (negative when
+/// they overlap along it).
+bool apart_along(const Vec& n, const Vec* a, const Vec* b, const Vec* q, double grow, double* gap) {
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) {
+        *gap = -kInf;
+        return false;
+    }
+    double lo = kInf, hi = -kInf;
+    for (int k = 0; k < 3; ++k) {
+        const double x = glm::dot(n, a[k]), y = glm::dot(n, b[k]);
+        lo = std::min({lo, x, y});
+        hi = std::max({hi, x, y});
+    }
+    const double q0 = glm::dot(n, q[0]), q1 = glm::dot(n, q[1]), q2 = glm::dot(n, q[2]);
+    const double qlo = std::min({q0, q1, q2}), qhi = std::max({q0, q1, q2});
+    *gap = std::max(qlo - hi, lo - qhi) / len;
+    return *gap > grow;
+}
+
+/// The largest gap found between the hull of a[0..3) u b[0..3) (a triangle's two end poses) and
+/// triangle q along the candidate directions: q's normal, the end poses' normals, the directions
+/// between their closest points, and the cross products of q's edges with the hull's possible
+/// edges. Any direction's gap is a lower bound of the true distance. Stops as soon as a gap exceeds
+/// `enough`.
+double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
+    double best = -kInf, gap;
+    auto consider = [&](const Vec& n) {
+        if (apart_along(n, a, b, q, enough, &gap)) return true;
+        best = std::max(best, gap);
+        return false;
+    };
+    const Vec eq[3] = {q[1] - q[0], q[2] - q[1], q[0] - q[2]};
+    if (consider(glm::cross(eq[0], eq[1]))) return gap;
+    if (consider(glm::cross(a[1] - a[0], a[2] - a[0]))) return gap;
+    if (consider(glm::cross(b[1] - b[0], b[2] - b[0]))) return gap;
+    for (const Vec* end : {a, b}) {
+        double wp[3], wq[3];
+        triangle_distance2(end, q, wp);
+        triangle_distance2(q, end, wq);
+        const Vec on_end = wp[0] * end[0] + wp[1] * end[1] + wp[2] * end[2];
+        const Vec on_q = wq[0] * q[0] + wq[1] * q[1] + wq[2] * q[2];
+        if (consider(on_q - on_end)) return gap;
+    }
+    // The hull's edges are among the segments between its 6 points.
+    const Vec pts[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
+    for (int i = 0; i < 6; ++i) {
+        for (int j = i + 1; j < 6; ++j) {
+            const Vec e = pts[j] - pts[i];
+            for (const Vec& f : eq) {
+                if (consider(glm::cross(e, f))) return gap;
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+namespace route_detail {
+
+struct TurnState {
+    struct PerPart {
+        std::vector<double> node_radius;  ///< per BVH node: largest distance from the axis
+        std::vector<double> tri_radius;   ///< per triangle slot
+        std::vector<Box> boxes;           ///< per node: placed at both poses, grown
+        std::vector<Vec> placed;          ///< per slot: 3 vertices at t0, then 3 at t1
+        std::vector<std::uint32_t> box_stamp, tri_stamp;
+    };
+    const LegMotion& motion;
+    std::vector<PerPart> parts;
+    NodePairs stack;
+    double t0 = 0.0, t1 = 0.0, tol = 0.0;
+    Pose p0, p1;
+    std::uint32_t stamp = 0;
+    // The pair that kept the last interval from being certified.
+    std::size_t part = 0;
+    std::uint32_t part_slot = 0, slot = 0;
+
+    explicit TurnState(const LegMotion& m) : motion(m) {}
+
+    /// Part node n's box placed at both poses of the interval, grown by the node's delta, the
+    /// tolerance and `extra`; cached for the interval (which uses one `extra` throughout).
+    const Box& node_box(const Part& part, PerPart& pp, std::uint32_t n, double extra) {
+        if (pp.box_stamp[n] != stamp) {
+            Box b = placed_box(part.bvh.nodes[n].box, p0, motion.pivot);
+            b.add(placed_box(part.bvh.nodes[n].box, p1, motion.pivot));
+            pp.boxes[n] = b.inflated(motion.deviation(pp.node_radius[n], t1 - t0) + tol + extra);
+            pp.box_stamp[n] = stamp;
+        }
+        return pp.boxes[n];
+    }
+};
+
+}  // namespace route_detail
+
+void RouteChecker::Impl::turn_prepare(TurnState& st) const {
+    st.parts.resize(parts.size());
+    for (std::size_t pi = 0; pi < parts.size(); ++pi) {
+        const Part& part = parts[pi];
+        TurnState::PerPart& pp = st.parts[pi];
+        pp.node_radius.resize(part.bvh.nodes.size());
+        for (std::size_t n = 0; n < part.bvh.nodes.size(); ++n) {
+            pp.node_radius[n] = st.motion.radius(part.bvh.nodes[n].box.lo, part.bvh.nodes[n].box.hi);
+        }
+        const std::size_t slots = part.tris.size() / 3;
+        pp.tri_radius.resize(slots);
+        for (std::size_t s = 0; s < slots; ++s) {
+            double r = 0.0;
+            for (int k = 0; k < 3; ++k) r = std::max(r, st.motion.radius(part.tris[3 * s + k]));
+            pp.tri_radius[s] = r * (1.0 + 1e-12);
+        }
+        pp.boxes.resize(part.bvh.nodes.size());
+        pp.box_stamp.assign(part.bvh.nodes.size(), 0);
+        pp.placed.resize(2 * part.tris.size());
+        pp.tri_stamp.assign(slots, 0);
+    }
+}
+
+void RouteChecker::Impl::turn_interval(TurnState& st, double t0, double t1) const {
+    st.t0 = t0;
+    st.t1 = t1;
+    st.p0 = st.motion.at(t0);
+    st.p1 = st.motion.at(t1);
+    const Vec m = glm::max(glm::abs(st.p0.offset), glm::abs(st.p1.offset));
+    st.tol = tolerance(std::max({m.x, m.y, m.z}) + glm::length(st.motion.pivot));
+    ++st.stamp;
+}
+
+bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
+    const Part& part = parts[pi];
+    TurnState::PerPart& pp = st.parts[pi];
+    if (bvh.nodes.empty() || part.bvh.nodes.empty()) return true;
+    const double span = st.t1 - st.t0;
+    const Vec& pivot = st.motion.pivot;
+    auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, margin); };
+    auto placed = [&](std::uint32_t ps) -> const Vec* {
+        Vec* out = &pp.placed[6 * ps];
+        if (pp.tri_stamp[ps] != st.stamp) {
+            for (int k = 0; k < 3; ++k) {
+                out[k] = place(st.p0, pivot, part.tris[3 * ps + k]);
+                out[3 + k] = place(st.p1, pivot, part.tris[3 * ps + k]);
+            }
+            pp.tri_stamp[ps] = st.stamp;
+        }
+        return out;
+    };
+    const bool uncertain = dual_walk(part.bvh, bvh, st.stack, node_box, [](const Box& a, const Box& b) { return a.overlaps(b); },
+                                     [&](const BvhNode& pnode, const BvhNode& onode) {
+        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
+            const Vec* p = placed(ps);
+            const double grow = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
+            Box tb = triangle_box(p);
+            tb.add(triangle_box(p + 3));
+            tb = tb.inflated(grow);
+            if (!tb.overlaps(onode.box)) continue;
+            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
+                const Vec* q = &tris[3 * s];
+                if (!tb.overlaps(triangle_box(q))) continue;
+                if (hull_gap(p, p + 3, q, grow) > grow) continue;
+                st.part = pi;
+                st.part_slot = ps;
+                st.slot = s;
+                return true;
+            }
+        }
+        return false;
+    });
+    return !uncertain;
+}
+
+std::vector<Part> RouteChecker::Impl::turned_parts(const Quat& q) const {
+    Pose pose;
+    pose.rotation = rotation_of(q);
+    std::vector<Part> out(parts.size());
+    for (std::size_t pi = 0; pi < parts.size(); ++pi) {
+        // The turned vertices without the offset: a translation by w then adds it, giving place().
+        TriangleMesh mesh = scene.parts[pi];
+        for (std::size_t i = 0; i < mesh.xyz.size(); i += 3) {
+            const Vec v(mesh.xyz[i], mesh.xyz[i + 1], mesh.xyz[i + 2]);
+            const Vec turned = pivot + pose.rotation.apply(v - pivot);
+            mesh.xyz[i] = turned.x, mesh.xyz[i + 1] = turned.y, mesh.xyz[i + 2] = turned.z;
+        }
+        build_part(mesh, out[pi]);
+    }
+    return out;
+}
+
+StaticContact RouteChecker::Impl::posed_contact(const Pose& pose, bool want_distance) const {
+    return contact_with(
+        want_distance, [&](std::size_t pi, Found* found) { return posed_touch(pi, pose, found); },
+        [&](std::size_t pi, Nearest* best) { posed_nearest(pi, pose, 0.0, best); });
+}
+
+void RouteChecker::Impl::place_part(std::size_t pi, const Pose& pose, std::vector<Vec>* out) const {
+    const Part& part = parts[pi];
+    out->resize(part.tris.size());
+    for (std::size_t k = 0; k < part.tris.size(); ++k) (*out)[k] = place(pose, pivot, part.tris[k]);
+}
+
+bool RouteChecker::Impl::posed_touch(std::size_t pi, const Pose& pose, Found* found) const {
+    if (pose.rotation.identity) return static_touch(parts[pi], pi, pose.offset, found);
+    const Part& part = parts[pi];
+    const Vec m = glm::abs(pose.offset);
+    const double tol = tolerance(std::max({m.x, m.y, m.z}) + glm::length(pivot));
+    std::vector<Vec> placed;
+    place_part(pi, pose, &placed);
+    const Box placed_all = placed_box(part.box, pose, pivot).inflated(tol);
+    // Surfaces within the margin: the part's nodes placed, against the obstacles' BVH.
+    std::vector<Box> boxes(part.bvh.nodes.size());
+    for (std::size_t n = 0; n < boxes.size(); ++n) {
+        boxes[n] = placed_box(part.bvh.nodes[n].box, pose, pivot).inflated(margin + tol);
+    }
+    NodePairs stack;
+    const bool hit = dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) -> const Box& { return boxes[n]; },
+                               [](const Box& a, const Box& b) { return a.overlaps(b); },
+                               [&](const BvhNode& pnode, const BvhNode& onode) {
+        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
+            const Vec* p = &placed[3 * ps];
+            const Box pbox = triangle_box(p).inflated(margin + tol);
+            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
+                const Vec* q = &tris[3 * s];
+                if (!pbox.overlaps(triangle_box(q))) continue;
+                double w[3];
+                if (margin == 0.0 ? !triangles_meet(p, q) : triangle_distance2(p, q, w) > margin * margin) continue;
+                found->slot = s;
+                found->part_slot = ps;
+                found->obstacle = tri_obstacle[s];
+                found->triangle = tri_index[s];
+                return true;
+            }
+        }
+        return false;
+    });
+    if (hit) {
+        found->containment = false;
+        found->part = static_cast<std::int64_t>(pi);
+        return true;
+    }
+    // No surfaces meet: one vertex per connected piece decides containment.
+    auto contained = [&](std::int64_t obstacle, std::int64_t triangle) {
+        *found = Found{};
+        found->containment = true;
+        found->obstacle = obstacle;
+        found->triangle = triangle;
+        found->part = static_cast<std::int64_t>(pi);
+        return true;
+    };
+    if (part.closed) {
+        for (const Component& c : obstacle_components) {
+            if (placed_all.contains(c.box) && inside_placed(placed, c.rep, placed_all, tol)) return contained(c.mesh, c.triangle);
+        }
+    }
+    for (std::uint32_t o = 0; o < obstacle_closed.size(); ++o) {
+        if (!obstacle_closed[o] || !obstacle_box[o].inflated(tol).contains(placed_all)) continue;
+        for (const Component& c : part.components) {
+            if (inside_obstacle(o, place(pose, pivot, c.rep), tol)) return contained(o, 0);
+        }
+    }
+    return false;
+}
+
+bool RouteChecker::Impl::inside_placed(const std::vector<Vec>& placed, const Vec& x, const Box& box, double tol) const {
+    // Ray parity over every placed triangle (a static test at a turned pose is rare: a leg's start,
+    // a bracket's end, samples), with the same rays and the same doubt rule as parity_inside.
+    const double reach = 4.0 * (glm::length(box.hi - box.lo) + glm::length(x - box.lo)) + 1.0;
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        const Vec far = x + reach * ray_direction(attempt);
+        Box ray;
+        ray.add(x);
+        ray.add(far);
+        ray = ray.inflated(tol);
+        int crossings = 0;
+        bool degenerate = false;
+        for (std::size_t s = 0; s < placed.size() && !degenerate; s += 3) {
+            if (!ray.overlaps(triangle_box(&placed[s]))) continue;
+            const int r = ray_crossing(x, far, &placed[s]);
+            if (r < 0) degenerate = true;
+            crossings += std::max(r, 0);
+        }
+        if (!degenerate) return crossings % 2 == 1;
+    }
+    return true;
+}
+
+double RouteChecker::Impl::placed_pair_distance(std::size_t pi, std::uint32_t part_slot, std::uint32_t slot,
+                                                const Pose& pose) const {
+    const Vec* p = &parts[pi].tris[3 * part_slot];
+    const Vec placed[3] = {place(pose, pivot, p[0]), place(pose, pivot, p[1]), place(pose, pivot, p[2])};
+    double w[3];
+    return triangle_distance(placed, &tris[3 * slot], w);
+}
+
+void RouteChecker::Impl::posed_nearest(std::size_t pi, const Pose& pose, double t, Nearest* best) const {
+    const Part& part = parts[pi];
+    if (bvh.nodes.empty() || part.bvh.nodes.empty()) return;
+    std::vector<Vec> placed;
+    place_part(pi, pose, &placed);
+    std::vector<Box> boxes(part.bvh.nodes.size());
+    for (std::size_t n = 0; n < boxes.size(); ++n) boxes[n] = placed_box(part.bvh.nodes[n].box, pose, pivot);
+    NodePairs stack;
+    // The placed boxes are short of the rounded vertices by a few ulps at most: a lower bound
+    // slightly too high only costs a pair whose distance ties the best to the last bits.
+    dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) -> const Box& { return boxes[n]; },
+              [&](const Box& a, const Box& b) { return a.distance(b) < best->distance; },
+              [&](const BvhNode& pnode, const BvhNode& onode) {
+        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
+            const Vec* p = &placed[3 * ps];
+            const Box pbox = triangle_box(p);
+            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
+                const Vec* q = &tris[3 * s];
+                if (pbox.distance(triangle_box(q)) >= best->distance) continue;
+                double w[3];
+                const double d = triangle_distance(p, q, w);
+                if (d < best->distance) {
+                    best->distance = d;
+                    best->fraction = t;
+                    best->obstacle = tri_obstacle[s];
+                    best->triangle = tri_index[s];
+                    best->part = static_cast<std::int64_t>(pi);
+                }
+            }
+        }
+        return false;
+    });
+}
+
+double RouteChecker::Impl::turn_lower_bound(TurnState& st, std::size_t pi, double cutoff) const {
+    const Part& part = parts[pi];
+    TurnState::PerPart& pp = st.parts[pi];
+    if (bvh.nodes.empty() || part.bvh.nodes.empty()) return kInf;
+    const double span = st.t1 - st.t0;
+    const Vec& pivot = st.motion.pivot;
+    // Boxes grown by delta and the tolerance only: their distance is a lower bound.
+    auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, 0.0); };
+    double lowest = cutoff;
+    dual_walk(part.bvh, bvh, st.stack, node_box, [&](const Box& a, const Box& b) { return a.distance(b) < lowest; },
+              [&](const BvhNode& pnode, const BvhNode& onode) {
+        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
+            Vec p[6];
+            for (int k = 0; k < 3; ++k) {
+                p[k] = place(st.p0, pivot, part.tris[3 * ps + k]);
+                p[3 + k] = place(st.p1, pivot, part.tris[3 * ps + k]);
+            }
+            const double grow = st.motion.deviation(pp.tri_radius[ps], span) + st.tol;
+            Box tb = triangle_box(p);
+            tb.add(triangle_box(p + 3));
+            tb = tb.inflated(grow);
+            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
+                const Vec* q = &tris[3 * s];
+                const double box_bound = tb.distance(triangle_box(q));
+                if (box_bound >= lowest) continue;
+                const double bound = std::max(box_bound, hull_gap(p, p + 3, q, lowest + grow) - grow);
+                lowest = std::min(lowest, std::max(bound, 0.0));
+            }
+        }
+        return false;
+    });
+    return lowest;
+}
+
+void RouteChecker::Impl::turn_clearance(const LegMotion& motion, LegReport* leg) const {
+    // Branch and bound over sub-intervals: the best distance found at exact poses is an upper
+    // bound of the minimum, each interval's hull bound a lower bound; intervals whose lower bound
+    // cannot improve the best by more than 1e-6 of it are dropped, the lowest one is split next.
+    Nearest best;
+    auto sample = [&](double t) {
+        const Pose pose = motion.at(t);
+        for (std::size_t pi = 0; pi < parts.size(); ++pi) posed_nearest(pi, pose, t, &best);
+    };
+    sample(0.0);
+    sample(1.0);
+    TurnState st(motion);
+    turn_prepare(st);
+    auto bound = [&](double t0, double t1) {
+        turn_interval(st, t0, t1);
+        double lowest = best.distance;
+        for (std::size_t pi = 0; pi < parts.size(); ++pi) lowest = std::min(lowest, turn_lower_bound(st, pi, lowest));
+        return lowest;
+    };
+    auto settled = [&](double lower) { return lower * (1.0 + 1e-6) >= best.distance; };
+    // (lower bound, t0, t1), lowest bound on top.
+    std::vector<std::tuple<double, double, double>> heap;
+    auto push = [&](double t0, double t1) {
+        const double lower = bound(t0, t1);
+        if (settled(lower)) return;
+        heap.emplace_back(lower, t0, t1);
+        std::push_heap(heap.begin(), heap.end(), std::greater<>());
+    };
+    push(0.0, 1.0);
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+        const auto [lower, t0, t1] = heap.back();
+        heap.pop_back();
+        if (settled(lower)) break;
+        if (t1 - t0 <= kTurnStep) continue;  // as fine as the bounds go: the best stands
+        const double mid = 0.5 * (t0 + t1);
+        sample(mid);
+        push(t0, mid);
+        push(mid, t1);
+    }
+    leg->clearance = best.distance;
+    leg->obstacle = best.obstacle;
+    leg->triangle = best.triangle;
+    leg->part = best.part;
+    leg->fraction_lo = leg->fraction_hi = best.obstacle >= 0 ? best.fraction : 0.0;
+    const Pose pose = motion.at(leg->fraction_lo);
+    const Quat q = motion.orientation(leg->fraction_lo);
+    leg->position[0] = pose.offset.x, leg->position[1] = pose.offset.y, leg->position[2] = pose.offset.z;
+    leg->rotation[0] = q.w, leg->rotation[1] = q.x, leg->rotation[2] = q.y, leg->rotation[3] = q.z;
+}
+
+LegReport RouteChecker::Impl::check_turning_leg(const LegMotion& motion, const RouteOptions& options) const {
+    LegReport leg;
+    auto set_pose = [&](double t) {
+        const Pose pose = motion.at(t);
+        const Quat q = motion.orientation(t);
+        leg.position[0] = pose.offset.x, leg.position[1] = pose.offset.y, leg.position[2] = pose.offset.z;
+        leg.rotation[0] = q.w, leg.rotation[1] = q.x, leg.rotation[2] = q.y, leg.rotation[3] = q.z;
+    };
+    auto touch_at = [&](const Pose& pose, Found* found) {
+        for (std::size_t pi = 0; pi < parts.size(); ++pi) {
+            if (posed_touch(pi, pose, found)) return true;
+        }
+        return false;
+    };
+
+    Found found;
+    const Pose start = motion.at(0.0);
+    if (touch_at(start, &found)) {
+        leg.status = LegStatus::StartOverlap;
+        leg.fraction_lo = leg.fraction_hi = 0.0;
+        set_pose(0.0);
+        leg.clearance = found.containment ? 0.0 : placed_pair_distance(found.part, found.part_slot, found.slot, start);
+    } else {
+        TurnState st(motion);
+        turn_prepare(st);
+        double lo = 0.0;
+        std::vector<std::pair<double, double>> intervals{{0.0, 1.0}};
+        while (!intervals.empty()) {
+            const auto [t0, t1] = intervals.back();
+            intervals.pop_back();
+            turn_interval(st, t0, t1);
+            bool clear = true;
+            for (std::size_t pi = 0; pi < parts.size() && clear; ++pi) clear = turn_certify(st, pi);
+            if (clear) {
+                lo = t1;
+                continue;
+            }
+            if (t1 - t0 > kTurnStep) {
+                const double mid = 0.5 * (t0 + t1);
+                intervals.emplace_back(mid, t1);
+                intervals.emplace_back(t0, mid);
+                continue;
+            }
+            // Uncertain at the finest step: a pose in contact at its end, or a little further.
+            leg.status = LegStatus::Hit;
+            leg.fraction_lo = lo;
+            bool touch = false;
+            for (int k = 0; k <= kTurnLookAhead && !touch; ++k) {
+                const double t = std::min(1.0, t1 + k * kTurnStep);
+                const Pose pose = motion.at(t);
+                Found f;
+                if (touch_at(pose, &f)) {
+                    touch = true;
+                    found = f;
+                    leg.fraction_hi = t;
+                    leg.clearance = f.containment ? 0.0 : std::min(margin, placed_pair_distance(f.part, f.part_slot, f.slot, pose));
+                }
+                if (t == 1.0) break;
+            }
+            if (!touch) {
+                leg.grazing = true;
+                leg.fraction_hi = t1;
+                found.part = static_cast<std::int64_t>(st.part);
+                found.part_slot = st.part_slot;
+                found.slot = st.slot;
+                found.obstacle = tri_obstacle[st.slot];
+                found.triangle = tri_index[st.slot];
+                leg.clearance = placed_pair_distance(st.part, st.part_slot, st.slot, motion.at(t1));
+            }
+            found.found = true;
+            set_pose(lo);
+            break;
+        }
+    }
+    if (found.found || leg.status == LegStatus::StartOverlap) {
+        leg.obstacle = found.obstacle;
+        leg.triangle = found.triangle;
+        leg.part = found.part;
+    } else if (options.clearance) {
+        turn_clearance(motion, &leg);
+    } else {
+        set_pose(0.0);
+    }
+    if (options.samples > 0) {
+        for (std::uint32_t k = 0; k <= options.samples; ++k) {
+            const double t = k == options.samples ? 1.0 : static_cast<double>(k) / options.samples;
+            Found f;
+            if (touch_at(motion.at(t), &f)) {
+                leg.sampled_hit = true;
+                leg.sampled_fraction = t;
+                break;
+            }
+        }
+    }
+    return leg;
+}
+
+}  // namespace hullkit
