@@ -23,9 +23,11 @@
 // worker -> main  {type: 'result', id, kinds, args, kindNames, triangles, dimension, ms}: the
 //                 events of the real gift wrapping (hullkit.giftwrapTrace / delaunayGiftwrapTrace)
 // main -> worker  {type: 'route', id, scene, route, samples}
-// worker -> main  {type: 'result', id, report, sweeps: [{leg, part, triangles}], ms}
-//                 (sweeps: each part's swept hull per leg, from hullkit.hull of the part's
-//                 vertices at both ends of the leg: indices into [vertices + a, vertices + b])
+// worker -> main  {type: 'result', id, report, sweeps: [{leg, sub, of, part, points, triangles}], ms}
+//                 (sweeps: each part's swept hull per sub-interval `sub` of `of` of a leg (one
+//                 for a leg that does not turn), from hullkit.hull of the part's hull vertices
+//                 placed at both ends of the sub-interval: `points` (Float32Array x y z ...) and
+//                 `triangles` indexing them; buffers transferred)
 //   kind: 'input'    the input was rejected (by the library or the text parser)
 //         'load'     the hullkit module could not be loaded / instantiated
 //         'internal' anything else (wasm trap, malformed result, bug)
@@ -38,6 +40,7 @@
 //               lacks), added (count of seed hull vertices that are not extreme)}
 import { generatePoints, parsePoints } from './distributions.js';
 import { partVertices } from './route-scenes.js';
+import { legMotion, poseAt, subintervalCount, placeVertices } from './route-poses.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
 
@@ -412,41 +415,62 @@ function traceJob({ id, xyz, xy, lifted = false, scan }) {
 
 // ---------------------------------------------------------------- Route view
 
-let checker = null; // {key, instance}: the last scene's RouteChecker, reused while dragging
+// The last scene's RouteChecker, reused while dragging, and the vertices of its traverse parts'
+// own hulls (what the swept hulls are made of): {key, instance, parts: [Float64Array]}.
+let prepared = null;
 
 function routeJob({ id, scene, route, samples }) {
   return withHullkit(id, (hullkit) => {
     const t0 = performance.now();
     const key = JSON.stringify({ ...scene, route: undefined });
-    if (!checker || checker.key !== key) {
-      checker?.instance.delete();
-      checker = null;
-      checker = { key, instance: new hullkit.RouteChecker(scene) };
+    if (!prepared || prepared.key !== key) {
+      prepared?.instance.delete();
+      prepared = null;
+      prepared = { key, instance: new hullkit.RouteChecker(scene), parts: scene.traverse.parts.map((part) => hullVertices(hullkit, part)) };
     }
-    const report = checker.instance.check(route, { samples, clearance: true });
+    const report = prepared.instance.check(route, { samples, clearance: true });
     const ms = performance.now() - t0;
-    self.postMessage({ type: 'result', id, report, sweeps: sweptHulls(hullkit, scene, route), ms });
+    const sweeps = sweptHulls(hullkit, prepared.parts, scene.traverse.pivot ?? [0, 0, 0], route);
+    const transfer = sweeps.flatMap((s) => [s.points.buffer, s.triangles.buffer]);
+    self.postMessage({ type: 'result', id, report, sweeps, ms }, transfer);
   });
 }
 
-/** Each traverse part's swept hull per leg: hullkit.hull of its vertices at both ends. */
-function sweptHulls(hullkit, scene, route) {
+/** A part's hull vertices (all its vertices when the hull has none to offer), flat. */
+function hullVertices(hullkit, part) {
+  const all = partVertices(part);
+  let extreme;
+  try {
+    extreme = hullkit.hull(Float64Array.from(all)).vertices;
+  } catch {
+    return Float64Array.from(all);
+  }
+  if (!extreme?.length) return Float64Array.from(all);
+  const out = new Float64Array(3 * extreme.length);
+  extreme.forEach((v, i) => out.set(all.slice(3 * v, 3 * v + 3), 3 * i));
+  return out;
+}
+
+/**
+ * Each traverse part's swept hulls per leg: a leg is split into sub-intervals (one per
+ * SUBINTERVAL_DEGREES turned, one for a leg that does not turn), each drawn as hullkit.hull of the
+ * part's vertices placed at both of its ends.
+ */
+function sweptHulls(hullkit, parts, pivot, route) {
   const sweeps = [];
-  scene.traverse.parts.forEach((part, p) => {
-    const vertices = partVertices(part);
-    const m = vertices.length / 3;
-    const both = new Float64Array(6 * m);
-    for (let leg = 0; leg + 1 < route.length; leg++) {
-      const [a, b] = [route[leg], route[leg + 1]];
-      for (let i = 0; i < m; i++) {
-        for (let k = 0; k < 3; k++) {
-          both[3 * i + k] = vertices[3 * i + k] + a[k];
-          both[3 * (m + i) + k] = vertices[3 * i + k] + b[k];
-        }
-      }
-      const hull = hullkit.hull(both);
-      sweeps.push({ leg, part: p, triangles: hull.triangles });
+  for (let leg = 0; leg + 1 < route.length; leg++) {
+    const motion = legMotion(route[leg], route[leg + 1]);
+    const n = subintervalCount(motion);
+    for (let sub = 0; sub < n; sub++) {
+      const [from, to] = [poseAt(motion, sub / n), poseAt(motion, (sub + 1) / n)];
+      parts.forEach((vertices, part) => {
+        const both = new Float64Array(2 * vertices.length);
+        placeVertices(vertices, pivot, from, both, 0);
+        placeVertices(vertices, pivot, to, both, vertices.length);
+        const hull = hullkit.hull(both);
+        sweeps.push({ leg, sub, of: n, part, points: Float32Array.from(both), triangles: ownedCopy(hull.triangles, Uint32Array, 'triangles') });
+      });
     }
-  });
+  }
   return sweeps;
 }

@@ -1,8 +1,9 @@
 // The page's three views in headless Debian Chromium: each opens from its URL and from the view
 // switch, draws on the canvas (pixels, at desktop and phone width) with no console error,
 // back/forward move between views; the Delaunay view's counts obey 2n − h − 2; the Route view's
-// thin plate is a hit that 20-step sampling misses. Saves docs/hull.png, docs/delaunay.png and
-// docs/route.png.
+// thin plate is a hit that 20-step sampling misses; its turning presets show the verdicts of
+// hullkit.checkRoute, a waypoint's yaw ring turns it and a link keeps the turn. Saves
+// docs/hull.png, docs/delaunay.png and docs/route.png.
 //
 //   node --test tests/browser/
 import { test } from 'node:test';
@@ -11,6 +12,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { ROOT, openBrowser, decodePng, pixel, averageColor } from './helpers.js';
+import createHullkit from '../../wasm/hullkit.js';
+import { presetScene } from '../../web/route-scenes.js';
 
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
@@ -279,6 +282,181 @@ test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
         await phone.screenshot({ path: path.join(os.tmpdir(), `hullkit-${view}-phone.png`) });
       }
       await phone.close();
+    });
+
+    await t.test('no console errors, page errors or outside requests', () => {
+      assert.deepEqual(errors, []);
+    });
+  } finally {
+    await close();
+  }
+});
+
+// ------------------------------------------------------------------ the Route view's turning legs
+
+/** What the page's hook says of each leg, next to what hullkit.checkRoute says of the same scene. */
+function assertSameVerdicts(info, expected, what) {
+  assert.equal(info.legs.length, expected.legs.length, `${what}: legs`);
+  assert.equal(info.clear, expected.clear, `${what}: verdict`);
+  expected.legs.forEach((leg, i) => {
+    const shown = info.legs[i];
+    assert.equal(shown.status, leg.status, `${what}: leg ${i + 1} status`);
+    assert.equal(shown.obstacle, leg.obstacle ?? null, `${what}: leg ${i + 1} obstacle`);
+    assert.equal(shown.grazing, Boolean(leg.grazing), `${what}: leg ${i + 1} graze`);
+    if (leg.status === 'hit') {
+      assert.ok(Math.abs(shown.fraction[0] - leg.fraction[0]) < 1e-7, `${what}: leg ${i + 1} first contact ${shown.fraction[0]} vs ${leg.fraction[0]}`);
+      assert.deepEqual(shown.rotation?.map((c) => c.toFixed(6)) ?? null, leg.rotation?.map((c) => c.toFixed(6)) ?? null, `${what}: leg ${i + 1} orientation at first contact`);
+    }
+  });
+}
+
+test('the Route view turns the traverse', { timeout: 180_000 }, async (t) => {
+  const hullkit = await createHullkit();
+  const { browser, base, errors, watch, close } = await openBrowser();
+  try {
+    const page = await browser.newPage({ viewport: DESKTOP, deviceScaleFactor: 1 });
+    watch(page);
+    const openRoute = async (query) => {
+      await page.goto(`${base}?view=route&${query}`);
+      assert.equal(await settled(page), 'ready', await page.textContent('#rt-error'));
+      await page.waitForFunction(() => window.hullkitRoute, null, { timeout: TIMEOUT });
+      return page.evaluate(() => window.hullkitRoute);
+    };
+    const sceneShown = () => page.evaluate(() => window.hullkitRouteScene());
+    const rowStatuses = () => page.$$eval('#rt-legs tbody tr td:nth-child(2)', (tds) => tds.map((td) => td.textContent));
+
+    await t.test('the crane and doorway presets show the verdicts of hullkit.checkRoute', async () => {
+      const cases = [
+        ['slewing-crane', ['hit'], 'mast', [10]],
+        ['bar-turn', ['clear', 'clear', 'clear'], null, [8, 1, 8]],
+        ['bar-turn-late', ['hit'], 'wall left', [8]],
+      ];
+      let info = await openRoute('preset=slewing-crane');
+      const crane = info.legs[0];
+      for (const [preset, statuses, obstacle, subintervals] of cases) {
+        if (info.preset !== preset) {
+          const before = info.run;
+          await page.selectOption('#rt-preset', preset);
+          info = await nextRun(page, 'hullkitRoute', before);
+        }
+        t.diagnostic(`${preset}: ${JSON.stringify(info)}`);
+        const scene = await sceneShown();
+        const { route, margin, ...rest } = scene;
+        const { route: presetRoute, margin: presetMargin, ...presetRest } = presetScene(preset);
+        assert.deepEqual(rest, presetRest, `${preset}: the page checks the preset's scene`);
+        assert.deepEqual([route, margin], [presetRoute, presetMargin], `${preset}: with its route and margin`);
+        assert.ok(route.some((w) => !Array.isArray(w) && w.rotation), `${preset}: the route turns`);
+        const expected = hullkit.checkRoute(scene, { samples: 20 });
+        assertSameVerdicts(info, expected, preset);
+        assert.deepEqual(info.legs.map((l) => l.status), statuses, `${preset}: verdicts`);
+        if (obstacle) assert.equal(info.legs.find((l) => l.status === 'hit').obstacle, obstacle);
+        assert.deepEqual(info.legs.map((l) => l.subintervals), subintervals, `${preset}: sub-intervals drawn per leg`);
+        assert.deepEqual(await rowStatuses(), statuses, `${preset}: the legs table`);
+        const c = census(await canvasImage(page));
+        t.diagnostic(`${preset} canvas: ${JSON.stringify(c)}`);
+        if (statuses.includes('hit')) {
+          assert.ok(c.red > 1000, `${preset}: the hit leg's sub-interval hulls drawn red`);
+          assert.ok(c.amber > 100, `${preset}: the traverse ghosted at first contact`);
+        } else {
+          assert.ok(c.green > 3000 && c.red < 200, `${preset}: clear legs drawn green`);
+        }
+      }
+      assert.equal(crane.turn, 120);
+      // The jib's yaw at first contact: about 90° of the 120° turn (w = cos(yaw / 2)).
+      const yaw = (2 * Math.atan2(crane.rotation[3], crane.rotation[0]) * 180) / Math.PI;
+      assert.ok(yaw > 85 && yaw < 95, `the load catches the mast at yaw ${yaw}`);
+    });
+
+    await t.test('dragging a waypoint\'s yaw ring re-checks the turned route', async () => {
+      let info = await openRoute('preset=bar-turn');
+      assert.deepEqual(info.yaws, [0, 90, 90, 0]);
+      assert.deepEqual(await page.$$eval('#rt-waypoints tbody tr', (trs) => trs.map((tr) => Number(tr.dataset.yaw))), [0, 90, 90, 0]);
+      // Turn waypoint 3 (beyond the doorway) back by 90° on its ring: the bar now turns while it
+      // passes the doorway.
+      const start = info.run;
+      const at = await page.evaluate(() => window.hullkitRouteRing(2, 90));
+      await page.mouse.move(at.x, at.y);
+      await page.mouse.down();
+      for (let a = 80; a >= 0; a -= 10) {
+        const p = await page.evaluate((deg) => window.hullkitRouteRing(2, deg), a);
+        await page.mouse.move(p.x, p.y, { steps: 2 });
+      }
+      await page.mouse.up();
+      // The last check drawn is that of the route as the drag left it (yaw near 0).
+      await page.waitForFunction((run) => window.hullkitRoute.run > run && Math.abs(window.hullkitRoute.yaws[2]) < 3 &&
+        document.body.dataset.state === 'ready', start, { timeout: TIMEOUT, polling: 50 });
+      info = await page.evaluate(() => window.hullkitRoute);
+      t.diagnostic(`after turning the ring: ${JSON.stringify(info)}`);
+      assert.ok(Math.abs(info.yaws[2]) < 3, `waypoint 3's yaw is about 0°: ${info.yaws[2]}`);
+      assert.deepEqual(info.yaws.filter((_, i) => i !== 2), [0, 90, 0], 'the other waypoints keep their yaw');
+      assert.deepEqual(info.legs.map((l) => l.status), ['clear', 'hit', 'clear'], 'turning in the doorway hits');
+      assert.equal(info.legs[1].obstacle, 'wall left');
+      assert.ok(info.legs[1].subintervals >= 7, 'the turning leg is drawn as sub-interval hulls');
+      const scene = await sceneShown();
+      assertSameVerdicts(info, hullkit.checkRoute(scene, { samples: 20 }), 'ring-turned route');
+      assert.match(page.url(), /route=/, 'the turned route is kept in the URL');
+      assert.equal(await page.inputValue('#rt-waypoints tbody tr:nth-child(3) input'), String(Number(info.yaws[2].toFixed(2))));
+      // Typing a yaw turns the waypoint too: 90° again, and the route is clear again.
+      const typed = info.run;
+      await page.fill('#rt-waypoints tbody tr:nth-child(3) input', '90');
+      await page.press('#rt-waypoints tbody tr:nth-child(3) input', 'Enter');
+      info = await nextRun(page, 'hullkitRoute', typed);
+      assert.deepEqual(info.yaws, [0, 90, 90, 0]);
+      assert.deepEqual(info.legs.map((l) => l.status), ['clear', 'clear', 'clear']);
+    });
+
+    await t.test('a link with a turned waypoint restores its rotation', async () => {
+      const link = 'preset=bar-turn&route=0,0,0;1.5,0,0,90;7,0,0,30;8.5,0,0';
+      await openRoute(link);
+      for (const reload of [false, true]) {
+        if (reload) {
+          await page.reload();
+          assert.equal(await settled(page), 'ready');
+          await page.waitForFunction(() => window.hullkitRoute, null, { timeout: TIMEOUT });
+        }
+        const info = await page.evaluate(() => window.hullkitRoute);
+        assert.deepEqual(info.yaws, [0, 90, 30, 0], `the yaws from the link${reload ? ' after a reload' : ''}`);
+        const scene = await sceneShown();
+        assert.deepEqual(scene.route[2], { position: [7, 0, 0], rotation: { axis: [0, 0, 1], degrees: 30 } });
+        assert.deepEqual(scene.route[3], [8.5, 0, 0], 'a waypoint without a turn stays [x, y, z]');
+        assertSameVerdicts(info, hullkit.checkRoute(scene, { samples: 20 }), 'linked route');
+        assert.deepEqual(info.legs.map((l) => l.status), ['clear', 'hit', 'clear']);
+        assert.equal(await page.inputValue('#rt-waypoints tbody tr:nth-child(3) input'), '30');
+      }
+      // The link the page writes for a turn made in it opens the same turn.
+      const before = await page.evaluate(() => window.hullkitRoute.run);
+      await page.fill('#rt-waypoints tbody tr:nth-child(2) input', '-45.5');
+      await page.press('#rt-waypoints tbody tr:nth-child(2) input', 'Enter');
+      const turned = await nextRun(page, 'hullkitRoute', before);
+      const written = new URL(page.url()).searchParams.get('route');
+      assert.equal(written, '0,0,0;1.5,0,0,-45.5;7,0,0,30;8.5,0,0');
+      const other = await browser.newPage({ viewport: DESKTOP, deviceScaleFactor: 1 });
+      watch(other);
+      await other.goto(page.url());
+      assert.equal(await settled(other), 'ready');
+      await other.waitForFunction(() => window.hullkitRoute);
+      const reopened = await other.evaluate(() => window.hullkitRoute);
+      assert.deepEqual(reopened.yaws, turned.yaws);
+      assert.deepEqual(reopened.legs.map((l) => l.status), turned.legs.map((l) => l.status));
+      await other.close();
+      // A link without turns still writes (and reads) plain x,y,z waypoints.
+      await openRoute('preset=thin-plate&route=0,0,0;10,0.5,0;10,3,0');
+      assert.deepEqual((await sceneShown()).route, [[0, 0, 0], [10, 0.5, 0], [10, 3, 0]]);
+    });
+
+    await t.test('the legs table shows a graze distinctly', async () => {
+      const shown = await page.evaluate(async () => {
+        const { legRows, legStatusText } = await import('./views/route-panel.js');
+        const graze = { status: 'hit', grazing: true, obstacle: 'post', part: 'bar', triangle: 1, fraction: [0.4682, 0.4683], position: [0, 0, 0], rotation: [0.74, 0, 0, 0.67] };
+        const [row] = legRows({ legs: [graze] }, [180], [15]);
+        return { text: legStatusText(graze), plain: legStatusText({ ...graze, grazing: undefined }), cell: row.children[1].textContent, grazing: row.dataset.grazing, status: row.dataset.status, title: row.title };
+      });
+      assert.equal(shown.text, 'hit (graze)');
+      assert.equal(shown.plain, 'hit');
+      assert.equal(shown.cell, 'hit (graze)');
+      assert.deepEqual([shown.status, shown.grazing], ['hit', 'true']);
+      assert.match(shown.title, /graze/);
+      assert.match(shown.title, /turns 180°, drawn as 15 sub-interval hulls/);
     });
 
     await t.test('no console errors, page errors or outside requests', () => {

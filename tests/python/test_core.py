@@ -128,3 +128,26 @@ def test_route_errors_name_the_field():
         hullkit.check_route("/nonexistent/scene.json")
     with pytest.raises(hullkit.HullkitError, match="at least 2 waypoints"):
         hullkit.RouteChecker(no_route).check([[0, 0, 0]])
+
+
+def test_route_legs_that_turn_as_rotations_or_in_the_scene():
+    # A bar 3 long along y passes a slot 1 wide at x in [5, 6] only when turned to lie along x.
+    slot = {
+        "traverse": {"parts": [{"name": "bar", "box": {"min": [-0.2, -1.5, -0.2], "max": [0.2, 1.5, 0.2]}}]},
+        "obstacles": [{"name": "low", "box": {"min": [5, -10, -1], "max": [6, -0.5, 1]}},
+                      {"name": "high", "box": {"min": [5, 0.5, -1], "max": [6, 10, 1]}}],
+    }
+    yaw90 = [np.sqrt(0.5), 0, 0, np.sqrt(0.5)]
+    checker = hullkit.RouteChecker(slot)
+    first = checker.check([[0, 0, 0], [0, 0, 0], [12, 0, 0]], rotations=[[1, 0, 0, 0], yaw90, yaw90])
+    assert first["clear"]
+    passing = checker.check([[0, 0, 0], [12, 0, 0]], rotations=np.array([[1.0, 0, 0, 0], yaw90]))
+    leg = passing["legs"][0]
+    assert leg["status"] == "hit" and leg["fraction"][1] - leg["fraction"][0] <= 1e-7 and len(leg["rotation"]) == 4
+    # The same route written in the scene gives the same report.
+    in_scene = dict(slot, route=[[0, 0, 0], {"position": [12, 0, 0], "rotation": {"quaternion": yaw90}}])
+    assert without_timings(hullkit.check_route(in_scene)) == without_timings(passing)
+    with pytest.raises(hullkit.HullkitError, match="one row per waypoint"):
+        checker.check([[0, 0, 0], [1, 0, 0]], rotations=[[1, 0, 0, 0]])
+    with pytest.raises(hullkit.HullkitError, match="not a unit quaternion"):
+        checker.check([[0, 0, 0], [1, 0, 0]], rotations=[[1, 0, 0, 0], [1, 0, 0, 0.5]])

@@ -334,6 +334,62 @@ constexpr bool kSlowBuild = false;
 
 }  // namespace
 
+TEST_CASE("turning: the bound: a point stays within r (theta dt)^2 / 8 of its end poses' segment", "[turning]") {
+    // The motion of leg_pose (the checker's), a vertex placed by the documented formula, and the
+    // bound of motion.hpp with r and theta worked out here; it is tight at the middle of a pure turn.
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-3, 3), unit(0, 1);
+    double tightest = 0.0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const Quat q0 = random_turn(rng, {1, 0, 0, 0}), q1 = random_turn(rng, q0);
+        const double o0[3] = {u(rng), u(rng), u(rng)};
+        const double o1[3] = {trial % 3 ? u(rng) : o0[0], trial % 3 ? u(rng) : o0[1], trial % 3 ? u(rng) : o0[2]};
+        const double pivot[3] = {u(rng), u(rng), u(rng)}, v[3] = {u(rng), u(rng), u(rng)};
+        // theta and the axis (own coordinates) of q0* q1 on the shorter arc.
+        const double dot = q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3];
+        const double theta = 2 * std::acos(std::min(1.0, std::fabs(dot)));
+        const Quat c0 = {q0[0], -q0[1], -q0[2], -q0[3]};
+        const Quat rel = {c0[0] * q1[0] - c0[1] * q1[1] - c0[2] * q1[2] - c0[3] * q1[3],
+                          c0[0] * q1[1] + c0[1] * q1[0] + c0[2] * q1[3] - c0[3] * q1[2],
+                          c0[0] * q1[2] - c0[1] * q1[3] + c0[2] * q1[0] + c0[3] * q1[1],
+                          c0[0] * q1[3] + c0[1] * q1[2] - c0[2] * q1[1] + c0[3] * q1[0]};
+        const double len = std::sqrt(rel[1] * rel[1] + rel[2] * rel[2] + rel[3] * rel[3]);
+        const double a[3] = {rel[1] / len, rel[2] / len, rel[3] / len};
+        const double d[3] = {v[0] - pivot[0], v[1] - pivot[1], v[2] - pivot[2]};
+        const double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+        const double r = std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along));
+        auto at = [&](double t, double out[3]) {
+            double offset[3], rotation[4];
+            leg_pose(o0, q0.data(), o1, q1.data(), t, offset, rotation);
+            TriangleMesh point;
+            point.xyz = {v[0], v[1], v[2]};
+            point = rotated(point, {rotation[0], rotation[1], rotation[2], rotation[3]}, pivot);
+            for (int k = 0; k < 3; ++k) out[k] = point.xyz[k] + offset[k];
+        };
+        const double t0 = unit(rng), t1 = t0 + (1 - t0) * unit(rng);
+        double p0[3], p1[3];
+        at(t0, p0);
+        at(t1, p1);
+        const double bound = r * std::pow(theta * (t1 - t0), 2) / 8;
+        for (int i = 1; i < 64; ++i) {
+            const double s = i / 64.0, t = t0 + s * (t1 - t0);
+            double p[3];
+            at(t, p);
+            // Distance to the segment p0 p1.
+            double e[3], w[3], ee = 0, we = 0;
+            for (int k = 0; k < 3; ++k) e[k] = p1[k] - p0[k], w[k] = p[k] - p0[k], ee += e[k] * e[k], we += w[k] * e[k];
+            const double f = ee > 0 ? std::clamp(we / ee, 0.0, 1.0) : 0.0;
+            double dist2 = 0;
+            for (int k = 0; k < 3; ++k) dist2 += std::pow(w[k] - f * e[k], 2);
+            const double dist = std::sqrt(dist2);
+            CAPTURE(trial, t0, t1, s, r, theta, dist, bound);
+            REQUIRE(dist <= bound + 1e-12);
+            if (trial % 3 == 0 && i == 32 && bound > 1e-6) tightest = std::max(tightest, dist / bound);
+        }
+    }
+    CHECK(tightest > 0.99);  // a pure turn's chord midpoint is r (1 - cos(theta dt / 2)) from the arc
+}
+
 TEST_CASE("turning: the static test at a turned pose is the translation test of the turned part", "[turning]") {
     std::mt19937_64 rng(route_test::kRandomSceneSeed + 1);
     for (int scene_index = 0; scene_index < 10; ++scene_index) {

@@ -48,6 +48,12 @@ export function createStage(canvas, container) {
     size,
     requestRender,
     renderNow,
+    /** Draws `scene` through `camera` over the whole canvas (a view with one pane). */
+    drawWhole(scene, camera) {
+      renderer.setScissorTest(false);
+      renderer.setViewport(0, 0, size.width, size.height);
+      renderer.render(scene, camera);
+    },
     /** Makes `view` the one drawn (and told about the size). */
     setActive(view) {
       active = view;
