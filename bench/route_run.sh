@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # The route-checking benchmark, side by side in one run:
 #   1. builds hullkit_route_bench (hullkit vs FCL 0.7) in build/bench;
-#   2. writes the scene and routes (bench/make_route_scene.mjs: ~1e5 obstacle triangles, a
-#      1.5e3-vertex traverse, a mostly-hitting and a mostly-clear route of 100 legs);
-#   3. runs hullkit_route_bench on each route (hullkit; FCL collide at 100 poses per leg;
-#      FCL continuousCollide; FCL at 2000 poses per leg as the reference), one process at a time,
-#      and the wasm RouteChecker's 20-leg re-check in Node (one fresh process per route);
+#   2. writes the scenes and routes (bench/make_route_scene.mjs): the scene (~1e5 obstacle
+#      triangles, a 1.5e3-vertex traverse) with a mostly-hitting and a mostly-clear route of 100
+#      straight legs and route-turn, 100 legs that also turn (0-180 degrees each); the aligned scene
+#      (an axis-aligned box traverse, axis-aligned walls and plates among the bunnies) with
+#      route-aligned, 100 straight legs, most hitting face-on or edge-on;
+#   3. runs hullkit_route_bench on each route (hullkit on one thread; FCL collide at 100 poses per
+#      leg; FCL continuousCollide: the default request on straight routes, interp motion with
+#      conservative advancement on route-turn; FCL at 2000 poses per leg as the reference; then
+#      sanity checks of hullkit's reports against its own static test), one process at a time,
+#      plus hullkit's first check with clearance in a fresh process, and the wasm RouteChecker's
+#      20-leg re-check in Node (one fresh process per route);
 #   4. threads: 10 000 legs (route-hit and route-clear in turn, over again) checked by hullkit with
 #      RouteOptions::threads 1 and 2, clearance off and on, each in a fresh process (its first
 #      check, then a warm median); prints time(1), time(2), time(2)/time(1) (target <= 0.6) and the
@@ -17,6 +23,8 @@
 #   HULLKIT_BENCH_THREADS_ONLY=1  step 4 alone (after building and writing the inputs); no report
 #   HULLKIT_BENCH_NO_BUILD=1    use the build as it is
 #   HULLKIT_BENCH_BUILD_DIR=D   where hullkit_route_bench is built (default build/bench)
+#   HULLKIT_BENCH_ROUTES="hit turn"  only these routes in step 3 (of hit clear turn aligned)
+#   HULLKIT_BENCH_NO_THREADS=1  skip step 4
 # The wasm module is the one wasm/hullkit.js loads (build/wasm); build it first (scripts/build.sh wasm).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -87,23 +95,32 @@ fi
 results=$out/route-results.jsonl
 : >"$results"
 node bench/route_report.mjs --meta "$quick" >"$out/route-meta.json"
-for route in hit clear; do
-  say "route bench: native, route-$route (hullkit, FCL 100 poses, FCL continuousCollide, FCL 2000-pose reference)"
-  if ! timeout 1200 "$native_bench" --scene "$out/route-scene.json" --route "$out/route-$route.json" --runs "$runs" \
+scene_of() { [ "$1" = aligned ] && echo "$out/route-aligned-scene.json" || echo "$out/route-scene.json"; }
+routes=${HULLKIT_BENCH_ROUTES:-hit clear turn aligned}
+for route in $routes; do
+  scene=$(scene_of "$route")
+  say "route bench: native, route-$route (hullkit, FCL 100 poses, FCL continuousCollide, FCL 2000-pose reference, checks)"
+  if ! timeout 2400 "$native_bench" --scene "$scene" --route "$out/route-$route.json" --runs "$runs" \
       >>"$results" 2>"$out/route-last-stderr.log"; then
     say "route bench: hullkit_route_bench failed on route-$route: $(tail -c 300 "$out/route-last-stderr.log")"
   fi
+  say "route bench: native, route-$route, hullkit's first check with clearance (a fresh process)"
+  timeout 600 "$native_bench" --scene "$scene" --route "$out/route-$route.json" --first-call \
+    >>"$results" 2>"$out/route-last-stderr.log" ||
+    say "route bench: the first-call run failed on route-$route: $(tail -c 300 "$out/route-last-stderr.log")"
 done
 if [ -f build/wasm/hullkit_core.wasm ]; then
-  for route in hit clear; do
+  for route in $routes; do
     say "route bench: wasm RouteChecker, 20 legs of route-$route (Node $(node --version))"
-    timeout 600 node bench/route_wasm_bench.mjs --scene "$out/route-scene.json" --route "$out/route-$route.json" --legs 20 \
+    timeout 600 node bench/route_wasm_bench.mjs --scene "$(scene_of "$route")" --route "$out/route-$route.json" --legs 20 \
       >>"$results" 2>"$out/route-last-stderr.log" ||
       say "route bench: the wasm run failed on route-$route: $(tail -c 300 "$out/route-last-stderr.log")"
   done
 fi
 rm -f "$out/route-last-stderr.log"
-threads_step || say "route bench: the threads step failed"
+if [ "${HULLKIT_BENCH_NO_THREADS:-0}" != 1 ]; then
+  threads_step || say "route bench: the threads step failed"
+fi
 
 # ---- 5. report
 elapsed=$(($(date +%s) - started))

@@ -1,8 +1,10 @@
 // The wasm RouteChecker in Node: one process per route, so that the first check after loading is
 // a real first call (the headline: what a page sees when the user starts dragging), then the warm
-// median of further re-checks of the same legs.
+// median of further re-checks of the same legs. A route whose waypoints are
+// {"position": [x, y, z], "rotation": {"quaternion": [w, x, y, z]}} turns: RouteChecker.check takes
+// those waypoints as they are (the JSON route file's first legs + 1 waypoints).
 //   node bench/route_wasm_bench.mjs --scene bench/out/route-scene.json --route bench/out/route-hit.json [--legs 20] [--runs 21]
-// Prints one JSON line: {impl: "wasm-recheck", route, legs, build_seconds, first_ms, warm_median_ms
+// Prints one JSON line: {impl: "wasm-recheck", route, legs, turned, hits, build_seconds, first_ms, warm_median_ms
 // (both with the default options: clearance on), warm_verdict_median_ms (clearance off), runs_ms}.
 import { readFileSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
@@ -55,6 +57,7 @@ try {
     impl: 'wasm-recheck',
     route: basename(values.route, '.json'),
     legs: first.legs.length,
+    turned: route.some((waypoint) => !Array.isArray(waypoint)),
     hits: first.legs.map((leg) => (leg.status === 'clear' ? 0 : 1)),
     build_seconds: checker.buildSeconds,
     construct_ms: constructMs,

@@ -4,7 +4,7 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData, RouteChecker, RouteLeg, RouteReport,
+  DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData, RouteChecker, RouteLeg, RouteReport, RouteWaypoint,
   RouteScene, Vec3, VerifyReport, VoronoiCells,
 } from 'hullkit';
 
@@ -117,6 +117,21 @@ try {
   const leg = back.legs[0];
   check(back.clear && leg?.status === 'clear' && leg.clearance !== null && leg.clearance > 0, 'going back is clear');
   check(checker.check(new Float64Array([0, 0, 0, 0, 3, 0])).legs.length === 1 && checker.buildSeconds >= 0, 'flat route');
+  // A leg that turns: waypoints with a rotation, the hit's orientation and graze flag.
+  const turning: RouteWaypoint[] = [
+    [0, 0, 0],
+    { position: [5, 0, 0], rotation: { axis: [0, 0, 1], degrees: 90 } },
+    { position: [5, 0, 1], rotation: { quaternion: [1, 0, 0, 0] } },
+    { position: [5, 0, 2], rotation: { yaw_pitch_roll_degrees: [0, 10, 0] } },
+  ];
+  const turned = checker.check(turning).legs[0];
+  if (turned?.status === 'hit') {
+    const rotation: [number, number, number, number] | undefined = turned.rotation;
+    const grazing: true | undefined = turned.grazing;
+    check(rotation !== undefined && rotation.length === 4 && grazing === undefined, 'a turning hit reports its orientation');
+  } else {
+    check(false, 'the turning cube hits the plate');
+  }
 } finally {
   checker.delete();
 }

@@ -105,7 +105,7 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
 int collinear3d(const double* a, const double* b, const double* c);
 
 /// Largest |coordinate| for which incircle is guaranteed exact: 2^+240 (about 1.8e+72). incircle
-/// is a degree-4 polynomial, so its range is tighter than orient3d's: see predicates.cpp.
+/// is a degree-4 polynomial, so its range is tighter than orient3d's: see incircle.cpp.
 inline constexpr double kIncircleMaxMagnitude = 0x1p+240;
 /// Smallest nonzero |coordinate| for which incircle is guaranteed exact: 2^-170 (about 6.7e-52).
 inline constexpr double kIncircleMinMagnitude = 0x1p-170;
@@ -161,13 +161,14 @@ int incircle_exact(double ax, double ay, double bx, double by, double cx, double
                    double dy);
 
 // ---- Inlinable fast paths (same results as orient2d / incircle) ----
-// Stage A (the floating-point filter with Shewchuk's error bound, the same bound as in
-// predicates.cpp) in the header, so that hot loops can inline it; when the filter cannot decide,
-// the exact stages B-D run out of line. The sign is always the exact sign, like the public
-// functions. Clang contracts a*b+c into fma within one expression by default; the bounds assume
-// separately rounded operations, hence the pragma (GCC gets -ffp-contract=off from CMakeLists.txt).
+// Stage A (the floating-point filter with Shewchuk's error bound, the same bounds as in
+// predicates.cpp and incircle.cpp) in the header, so that hot loops can inline it; when the
+// filter cannot decide, the exact stages B-D run out of line. The sign is always the exact sign,
+// like the public functions. Clang contracts a*b+c into fma within one expression by default;
+// the bounds assume separately rounded operations, hence the pragma (GCC gets -ffp-contract=off
+// from CMakeLists.txt).
 
-/// Stage A error bound factors (multiples of the permanent); see predicates.cpp.
+/// Stage A error bound factors (multiples of the permanent); see predicates.cpp and incircle.cpp.
 inline constexpr double kOrient2dFilterBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
 inline constexpr double kIncircleFilterBound = (10.0 + 96.0 * 0x1p-53) * 0x1p-53;
 
@@ -202,7 +203,7 @@ inline int orient2d_inline(double ax, double ay, double bx, double by, double cx
 }
 
 /// incircle's stage A: the determinant in floating point and its permanent (the bound on its
-/// rounding error is kIncircleFilterBound times the permanent). Shared with predicates.cpp.
+/// rounding error is kIncircleFilterBound times the permanent). Shared with incircle.cpp.
 struct IncircleStageA {
     double det;
     double permanent;

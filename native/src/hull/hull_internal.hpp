@@ -108,7 +108,7 @@ bool quickhull_faces(PointSpan points, const Simplex& simplex, Polygons& faces, 
                      std::string& error, unsigned threads = 1);
 
 /// Quickhull on threads for a cloud with volume whose points mostly lie on its hull: split in two
-/// halves hulled on their own threads (recursively), joined along their seam (quickhull.cpp).
+/// halves hulled on their own threads (recursively), joined along their seam (quickhull_split.cpp).
 /// The faces as quickhull_faces gives them (the same polygons, in the canonical order, with the
 /// same volume and area). False when the split does not apply; the caller then runs
 /// quickhull_faces.

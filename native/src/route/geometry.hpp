@@ -40,6 +40,10 @@ double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]);
 /// would round away at tangential approaches).
 double triangle_distance2(const Vec* p, const Vec* q, double weights_p[3]);
 
+/// The vector from the closest point of triangle p to the closest point of triangle q (floating
+/// point; zero or meaningless when they meet): a candidate separating direction, never a decision.
+Vec closest_direction(const Vec* p, const Vec* q);
+
 /// Distance from point x to triangle q (floating point, degenerate triangles handled).
 double point_triangle_distance(const Vec& x, const Vec* q);
 

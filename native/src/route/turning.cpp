@@ -126,14 +126,8 @@ double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
     if (consider(glm::cross(eq[0], eq[1]))) return gap;
     if (consider(glm::cross(a[1] - a[0], a[2] - a[0]))) return gap;
     if (consider(glm::cross(b[1] - b[0], b[2] - b[0]))) return gap;
-    for (const Vec* end : {a, b}) {
-        double wp[3], wq[3];
-        triangle_distance2(end, q, wp);
-        triangle_distance2(q, end, wq);
-        const Vec on_end = wp[0] * end[0] + wp[1] * end[1] + wp[2] * end[2];
-        const Vec on_q = wq[0] * q[0] + wq[1] * q[1] + wq[2] * q[2];
-        if (consider(on_q - on_end)) return gap;
-    }
+    if (consider(closest_direction(a, q))) return gap;
+    if (consider(closest_direction(b, q))) return gap;
     // The hull's edges are among the segments between its 6 points.
     const Vec pts[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
     for (int i = 0; i < 6; ++i) {
@@ -165,7 +159,8 @@ struct TurnState {
     double t0 = 0.0, t1 = 0.0, tol = 0.0;
     Pose p0, p1;
     std::uint32_t stamp = 0;
-    // The pair that kept the last interval from being certified.
+    // The pair that kept the last interval from being certified (when `hint`).
+    bool hint = false;
     std::size_t part = 0;
     std::uint32_t part_slot = 0, slot = 0;
 
@@ -237,23 +232,38 @@ bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
         }
         return out;
     };
+    // Whether the pair (part slot ps, obstacle slot s) is kept apart over the interval.
+    auto apart = [&](std::uint32_t ps, std::uint32_t s, const Vec* p, const Box& swept, double grow) {
+        const Vec* q = &tris[3 * s];
+        if (!swept.overlaps(triangle_box(q)) || hull_gap(p, p + 3, q, grow) > grow) return true;
+        st.part = pi;
+        st.part_slot = ps;
+        st.slot = s;
+        st.hint = true;
+        return false;
+    };
+    auto swept_box = [&](std::uint32_t ps, const Vec* p, double* grow) {
+        *grow = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
+        Box b = triangle_box(p);
+        b.add(triangle_box(p + 3));
+        return b.inflated(*grow);
+    };
+    // The pair that kept the enclosing interval uncertain usually keeps this one uncertain too:
+    // trying it first makes a failing certification cheap (the answer is the same either way).
+    if (st.hint && st.part == pi) {
+        double grow = 0.0;
+        const Vec* p = placed(st.part_slot);
+        if (!apart(st.part_slot, st.slot, p, swept_box(st.part_slot, p, &grow), grow)) return false;
+    }
     const bool uncertain = dual_walk(part.bvh, bvh, st.stack, node_box, [](const Box& a, const Box& b) { return a.overlaps(b); },
                                      [&](const BvhNode& pnode, const BvhNode& onode) {
         for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
+            double grow = 0.0;
             const Vec* p = placed(ps);
-            const double grow = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
-            Box tb = triangle_box(p);
-            tb.add(triangle_box(p + 3));
-            tb = tb.inflated(grow);
-            if (!tb.overlaps(onode.box)) continue;
+            const Box swept = swept_box(ps, p, &grow);
+            if (!swept.overlaps(onode.box)) continue;
             for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
-                const Vec* q = &tris[3 * s];
-                if (!tb.overlaps(triangle_box(q))) continue;
-                if (hull_gap(p, p + 3, q, grow) > grow) continue;
-                st.part = pi;
-                st.part_slot = ps;
-                st.slot = s;
-                return true;
+                if (!apart(ps, s, p, swept, grow)) return true;
             }
         }
         return false;
@@ -460,8 +470,9 @@ void RouteChecker::Impl::turn_clearance(const LegMotion& motion, LegReport* leg)
         const Pose pose = motion.at(t);
         for (std::size_t pi = 0; pi < parts.size(); ++pi) posed_nearest(pi, pose, t, &best);
     };
-    sample(0.0);
-    sample(1.0);
+    // Exact poses first, so that the bounds prune from the start.
+    constexpr int kFirstIntervals = 16;
+    for (int k = 0; k <= kFirstIntervals; ++k) sample(k == kFirstIntervals ? 1.0 : static_cast<double>(k) / kFirstIntervals);
     TurnState st(motion);
     turn_prepare(st);
     auto bound = [&](double t0, double t1) {
@@ -479,7 +490,9 @@ void RouteChecker::Impl::turn_clearance(const LegMotion& motion, LegReport* leg)
         heap.emplace_back(lower, t0, t1);
         std::push_heap(heap.begin(), heap.end(), std::greater<>());
     };
-    push(0.0, 1.0);
+    for (int k = 0; k < kFirstIntervals; ++k) {
+        push(static_cast<double>(k) / kFirstIntervals, k + 1 == kFirstIntervals ? 1.0 : static_cast<double>(k + 1) / kFirstIntervals);
+    }
     while (!heap.empty()) {
         std::pop_heap(heap.begin(), heap.end(), std::greater<>());
         const auto [lower, t0, t1] = heap.back();
