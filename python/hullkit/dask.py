@@ -195,7 +195,8 @@ def _check_batch(scene, routes, clearance, samples, threads):
         with _translated():
             checker = _checkers[key] = _core.RouteChecker(text, source, ".", files)
     with _translated():
-        return [json.loads(checker.check(route, clearance, samples, threads)) for route in routes]
+        no_rotations = np.zeros((0, 4))  # translations: the routes handed to check_routes are (k, 3)
+        return [json.loads(checker.check(route, no_rotations, clearance, samples, threads)) for route in routes]
 
 
 def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=1, batch=None):
