@@ -44,13 +44,21 @@ TriangleMesh plate() {
     return m;
 }
 
+/// The plate as a closed slab of half-thickness kSlab (x in [0, 2], |y| <= kSlab, z in [-1, 1]):
+/// a convex part, checked through its hull's sweep rather than triangle by triangle.
+constexpr double kSlab = 0.01;
+TriangleMesh slab() { return route_test::box_mesh("slab", 0, -kSlab, -1, 2, kSlab, 1); }
+
+/// The rod from above: the open plate (half-thickness 0), then the closed slab.
+const std::pair<TriangleMesh, double> kRods[] = {{plate(), 0.0}, {slab(), kSlab}};
+
 /// A post of half-width e around (x, y), z in [-2, 2].
 TriangleMesh post(double x, double y, double e) { return route_test::box_mesh("post", x - e, y - e, -2, x + e, y + e, 2); }
 
-/// The plate turning about z from yaw a to yaw b (degrees) in place, about the origin.
-Scene turning_plate(const TriangleMesh& obstacle, double a, double b) {
+/// The plate (or `part`) turning about z from yaw a to yaw b (degrees) in place, about the origin.
+Scene turning_plate(const TriangleMesh& obstacle, double a, double b, const TriangleMesh& part = plate()) {
     Scene s;
-    s.parts.push_back(plate());
+    s.parts.push_back(part);
     s.obstacles.push_back(obstacle);
     s.route = {0, 0, 0, 0, 0, 0};
     return with_rotations(s, {turn(a), turn(b)});
@@ -98,13 +106,15 @@ TEST_CASE("turning: a plate turning about one end meets a post at the angle the 
     // Seen from above the plate is a ray from the origin at the yaw angle phi; the post's points
     // Q have the distance Q . (-sin phi, cos phi) from its line, least at the corner (x + e, y - e)
     // while phi < 90 degrees: (y - e) cos phi - (x + e) sin phi = margin at the first contact, and
-    // yaw grows linearly with t.
+    // yaw grows linearly with t. The slab meets it when that distance is the margin plus its
+    // half-thickness.
     const double x = std::cos(kPi / 6), y = std::sin(kPi / 6), e = 0.05;
     const double A = y - e, B = x + e;
+    for (const auto& [rod, half] : kRods)
     for (double margin : {0.0, 0.1}) {
-        INFO("margin " << margin);
-        const double contact = (std::acos(margin / std::hypot(A, B)) - std::atan2(B, A)) / (kPi / 2);
-        Scene scene = turning_plate(post(x, y, e), 0, 90);
+        INFO(rod.name << ", margin " << margin);
+        const double contact = (std::acos((margin + half) / std::hypot(A, B)) - std::atan2(B, A)) / (kPi / 2);
+        Scene scene = turning_plate(post(x, y, e), 0, 90, rod);
         scene.margin = margin;
         const RouteChecker checker(scene);
         const RouteReport report = checker.check();
@@ -139,29 +149,60 @@ TEST_CASE("turning: a plate turning about one end meets a post at the angle the 
 
 TEST_CASE("turning: a plate turning away from the post is clear, its clearance at the start", "[turning]") {
     const double x = std::cos(kPi / 6), y = std::sin(kPi / 6), e = 0.05;
-    const LegReport leg = check_route(turning_plate(post(x, y, e), 0, -90)).legs[0];
-    REQUIRE(leg.status == LegStatus::Clear);
-    // At yaw 0 the plate lies on the x axis (x in [0, 2]): the post's face y = y - e is nearest.
-    CHECK(leg.clearance == Approx(y - e).epsilon(1e-6));
-    CHECK(leg.clearance <= (y - e) * (1 + 1e-12));
-    CHECK(leg.fraction_lo == 0.0);
-    CHECK(leg.obstacle == 0);
+    for (const auto& [rod, half] : kRods) {
+        INFO(rod.name);
+        const LegReport leg = check_route(turning_plate(post(x, y, e), 0, -90, rod)).legs[0];
+        REQUIRE(leg.status == LegStatus::Clear);
+        // At yaw 0 the plate lies on the x axis (x in [0, 2]): the post's face y = y - e is nearest.
+        CHECK(leg.clearance == Approx(y - e - half).epsilon(1e-6));
+        CHECK(leg.clearance <= (y - e - half) * (1 + 1e-12));
+        CHECK(leg.fraction_lo == 0.0);
+        CHECK(leg.obstacle == 0);
+    }
 }
 
 TEST_CASE("turning: a sweep only the turning meets: outside the hull of the end poses", "[turning]") {
     // A small box at 45 degrees, 1.8 from the pivot: outside the triangle (0,0) (2,0) (0,2) that
     // the two end poses span (x + y > 2 on the whole box), inside the quarter disc swept.
+    // The slab's end poses span that triangle grown by its half-thickness: still short of the box.
     const double r = 1.8 * std::sqrt(0.5), e = 0.03;
-    REQUIRE(2 * (r - e) > 2.0);
-    const RouteChecker checker(turning_plate(post(r, r, e), 0, 90));
-    CHECK_FALSE(contact_at(checker, 0, 0.0));
-    CHECK_FALSE(contact_at(checker, 0, 1.0));
-    const LegReport leg = checker.check().legs[0];
-    REQUIRE(leg.status == LegStatus::Hit);
-    CHECK_FALSE(leg.grazing);
-    CHECK(leg.fraction_lo > 0.4);
-    CHECK(leg.fraction_hi < 0.5);
-    CHECK(contact_at(checker, 0, leg.fraction_hi));
+    REQUIRE(2 * (r - e) > 2.0 + 2 * kSlab);
+    for (const auto& [rod, half] : kRods) {
+        INFO(rod.name);
+        const RouteChecker checker(turning_plate(post(r, r, e), 0, 90, rod));
+        CHECK_FALSE(contact_at(checker, 0, 0.0));
+        CHECK_FALSE(contact_at(checker, 0, 1.0));
+        const LegReport leg = checker.check().legs[0];
+        REQUIRE(leg.status == LegStatus::Hit);
+        CHECK_FALSE(leg.grazing);
+        CHECK(leg.fraction_lo > 0.4);
+        CHECK(leg.fraction_hi < 0.5);
+        CHECK(contact_at(checker, 0, leg.fraction_hi));
+    }
+}
+
+TEST_CASE("turning: of two posts outside the hull of the end poses, the first met is reported", "[turning]") {
+    // The slab turning 90 degrees passes posts at 1.8 from the pivot at two yaws; both lie outside
+    // the hull of its end poses, so only the bound's growth finds them, in every sub-interval.
+    const double e = 0.03;
+    auto post_at = [&](double degrees) {
+        return post(1.8 * std::cos(degrees * kPi / 180), 1.8 * std::sin(degrees * kPi / 180), e);
+    };
+    for (const auto& yaws : {std::array<double, 2>{30, 60}, std::array<double, 2>{60, 30}, std::array<double, 2>{35, 50},
+                             std::array<double, 2>{50, 35}}) {
+        const double first = std::min(yaws[0], yaws[1]);
+        INFO("posts at " << yaws[0] << " and " << yaws[1] << " degrees");
+        Scene scene = turning_plate(post_at(yaws[0]), 0, 90, slab());
+        scene.obstacles.push_back(post_at(yaws[1]));
+        const RouteChecker checker(scene);
+        const LegReport leg = checker.check().legs[0];
+        REQUIRE(leg.status == LegStatus::Hit);
+        CHECK(leg.obstacle == (yaws[0] < yaws[1] ? 0 : 1));
+        CHECK(leg.fraction_lo > (first - 5) / 90);
+        CHECK(leg.fraction_hi < first / 90);
+        CHECK(contact_at(checker, 0, leg.fraction_hi));
+        CHECK_FALSE(contact_at(checker, 0, leg.fraction_lo - 1e-6));
+    }
 }
 
 TEST_CASE("turning: a bar passes the slot when turned first, not when turned while passing", "[turning]") {

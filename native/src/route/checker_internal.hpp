@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bvh.hpp"
+#include "convex_sweep.hpp"
 #include "geometry.hpp"
 #include "hullkit/route.hpp"
 #include "motion.hpp"
@@ -51,6 +52,8 @@ struct Part {
     std::vector<Vec> hull_edges;
     std::vector<Vec> axes;
     std::vector<double> axis_lo, axis_hi;
+    // A hull_surface part's distinct face normals and edge directions (convex_sweep.hpp).
+    std::vector<Vec> face_normals, edge_directions;
 };
 
 /// The interval {lo, hi} the points cover along n (lo = inf, hi = -inf without points).
@@ -239,16 +242,33 @@ struct RouteChecker::Impl {
     /// Copies of the parts turned by q about the pivot (build_part on the turned meshes).
     std::vector<Part> turned_parts(const Quat& q) const;
     LegReport check_turning_leg(const LegMotion& motion, const RouteOptions& options) const;
-    /// The exact static test of part pi at a pose (the translation test when it is not turned).
-    bool posed_touch(std::size_t pi, const Pose& pose, Found* found) const;
-    void posed_nearest(std::size_t pi, const Pose& pose, double t, Nearest* best) const;
+    /// Part pi at a pose: its triangles, and its BVH nodes' boxes (not grown).
+    struct PlacedPart {
+        std::vector<Vec> tris;
+        std::vector<Box> boxes;
+    };
+    void place_part(std::size_t pi, const Pose& pose, PlacedPart* out) const;
+    /// The exact static test of part pi at a pose (the translation test when it is not turned);
+    /// `placed`: the part already placed there (else it is placed here).
+    bool posed_touch(std::size_t pi, const Pose& pose, Found* found, const PlacedPart* placed = nullptr) const;
+    void posed_nearest(std::size_t pi, const Pose& pose, double t, Nearest* best, const PlacedPart* placed = nullptr) const;
     StaticContact posed_contact(const Pose& pose, bool want_distance) const;
-    void place_part(std::size_t pi, const Pose& pose, std::vector<Vec>* out) const;
     bool inside_placed(const std::vector<Vec>& placed, const Vec& x, const Box& box, double tol) const;
     double placed_pair_distance(std::size_t pi, std::uint32_t part_slot, std::uint32_t slot, const Pose& pose) const;
     void turn_prepare(TurnState& st) const;
     void turn_interval(TurnState& st, double t0, double t1) const;
     bool turn_certify(TurnState& st, std::size_t pi) const;
+    /// turn_certify for a convex part: its sweep against the obstacles' BVH.
+    bool turn_certify_convex(TurnState& st, std::size_t pi) const;
+    /// After turn_certify_convex failed on an interval: keeps the obstacle triangles its halves
+    /// must check (when few).
+    void turn_frame(TurnState& st, std::size_t pi) const;
+    /// After an interval failed: the fraction where the pair that failed it (st's hint) seems to
+    /// come within the margin, from its gap at both ends along one direction; -1 when that gives
+    /// nothing. Only a place to split the search: it decides nothing.
+    double turn_guess(TurnState& st) const;
+    /// The triangle of part pi nearest to obstacle slot `slot` at `pose`.
+    std::uint32_t nearest_part_slot(std::size_t pi, std::uint32_t slot, const Pose& pose) const;
     double turn_lower_bound(TurnState& st, std::size_t pi, double cutoff) const;
     void turn_clearance(const LegMotion& motion, LegReport* leg) const;
 };

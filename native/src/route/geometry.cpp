@@ -292,6 +292,101 @@ Vec closest_direction(const Vec* p, const Vec* q) {
     return direction;
 }
 
+namespace {
+
+/// The point of the simplex s[0..n) (n <= 4 points) closest to the origin; s is reduced to the
+/// points that carry it (the smallest face holding it).
+Vec simplex_closest(Vec* s, int& n) {
+    const Vec origin(0.0);
+    if (n == 1) return s[0];
+    if (n == 2) {
+        const double t = closest_on_segment(origin, s[0], s[1]);
+        if (t <= 0.0) {
+            n = 1;
+        } else if (t >= 1.0) {
+            s[0] = s[1];
+            n = 1;
+        }
+        return s[0] + t * (s[1] - s[0]);
+    }
+    if (n == 4) {
+        // Inside the tetrahedron (each face sees the origin on the side of the opposite point):
+        // the sets meet as far as floating point can tell.
+        static constexpr int kFaces[4][4] = {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 3, 1}, {1, 2, 3, 0}};
+        bool inside = true;
+        double best = std::numeric_limits<double>::infinity();
+        Vec best_point(0.0), best_face[3];
+        int best_count = 0;
+        for (const auto& f : kFaces) {
+            const Vec face[3] = {s[f[0]], s[f[1]], s[f[2]]};
+            const Vec normal = glm::cross(face[1] - face[0], face[2] - face[0]);
+            const double side_origin = glm::dot(normal, -face[0]), side_other = glm::dot(normal, s[f[3]] - face[0]);
+            if (side_origin * side_other < 0.0 || side_other == 0.0) inside = false;
+            double w[3];
+            closest_on_triangle(origin, face, w);
+            const Vec c = w[0] * face[0] + w[1] * face[1] + w[2] * face[2];
+            if (length2(c) < best) {
+                best = length2(c);
+                best_point = c;
+                best_count = 0;
+                for (int k = 0; k < 3; ++k) {
+                    if (w[k] > 0.0) best_face[best_count++] = face[k];
+                }
+            }
+        }
+        if (inside) return origin;
+        n = best_count;
+        for (int k = 0; k < n; ++k) s[k] = best_face[k];
+        return best_point;
+    }
+    double w[3];
+    closest_on_triangle(origin, s, w);
+    const Vec c = w[0] * s[0] + w[1] * s[1] + w[2] * s[2];
+    int kept = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (w[k] > 0.0) s[kept++] = s[k];
+    }
+    n = kept;
+    return c;
+}
+
+}  // namespace
+
+Vec hull_closest_direction(const Vec* a, int count, const Vec* q) {
+    // Support points of A - Q in direction -v: the point of A lowest along v minus Q's highest.
+    auto support = [&](const Vec& v) {
+        int ia = 0, iq = 0;
+        double lo = glm::dot(v, a[0]), hi = glm::dot(v, q[0]);
+        for (int k = 1; k < count; ++k) {
+            const double x = glm::dot(v, a[k]);
+            if (x < lo) lo = x, ia = k;
+        }
+        for (int k = 1; k < 3; ++k) {
+            const double x = glm::dot(v, q[k]);
+            if (x > hi) hi = x, iq = k;
+        }
+        return a[ia] - q[iq];
+    };
+    Vec s[4] = {a[0] - q[0]};
+    int n = 1;
+    Vec v = s[0];
+    for (int step = 0; step < 32; ++step) {
+        const double vv = length2(v);
+        if (!(vv > 0.0)) break;
+        const Vec w = support(v);
+        // Converged: no point of the difference is much lower along v than v itself.
+        if (vv - glm::dot(v, w) <= 1e-12 * vv) break;
+        bool repeated = false;
+        for (int k = 0; k < n; ++k) repeated = repeated || s[k] == w;
+        if (repeated) break;
+        s[n++] = w;
+        const Vec next = simplex_closest(s, n);
+        if (!(length2(next) < vv)) break;  // no progress in floating point
+        v = next;
+    }
+    return v;
+}
+
 double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]) {
     return std::sqrt(triangle_distance2(p, q, weights_p));
 }

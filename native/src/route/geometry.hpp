@@ -44,6 +44,11 @@ double triangle_distance2(const Vec* p, const Vec* q, double weights_p[3]);
 /// point; zero or meaningless when they meet): a candidate separating direction, never a decision.
 Vec closest_direction(const Vec* p, const Vec* q);
 
+/// The vector from the closest point of triangle q to the closest point of the convex hull of
+/// a[0..count) (GJK on their Minkowski difference, floating point, at most 32 steps; zero when they
+/// seem to meet): a candidate separating direction, never a decision.
+Vec hull_closest_direction(const Vec* a, int count, const Vec* q);
+
 /// Distance from point x to triangle q (floating point, degenerate triangles handled).
 double point_triangle_distance(const Vec& x, const Vec* q);
 

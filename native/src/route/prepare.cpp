@@ -220,6 +220,8 @@ void RouteChecker::Impl::build_part(const TriangleMesh& mesh, Part& part) const 
         }
         if (convex && area <= 1.5 * h.area) {
             part.hull_surface = true;
+            part.face_normals = distinct_directions(std::vector<Vec>(part.axes.begin(), part.axes.end() - 3));
+            part.edge_directions = distinct_directions(part.hull_edges);
             for (std::uint32_t v : h.triangles) part.tris.push_back(hp(v));
             Component c;
             c.rep = part.hull_points.front();

@@ -9,15 +9,22 @@
 //              direction keeps the triangle's 6 end-pose vertices more than its delta plus the
 //              margin (plus the tolerance) away from the obstacle triangle; broad phase: the part's
 //              BVH nodes placed at both poses, their box grown by the node's own delta, against the
-//              obstacles' BVH;
+//              obstacles' BVH. A convex part (its solid is its hull) is certified whole instead:
+//              some direction keeps its sweep (convex_sweep.hpp: its hull's points at both poses)
+//              more than the part's delta plus the margin from each obstacle triangle, the
+//              obstacles' BVH nodes pruned by the sweep's separating axes;
 //   subdivide  an interval not certified is halved, earlier half first, down to kTurnStep; the
-//              certified intervals form the clear prefix [0, lo];
+//              certified intervals form the clear prefix [0, lo]. The obstacle triangle that failed
+//              is tried first in the next interval, and a convex part's failed interval keeps the
+//              few obstacle triangles that can come near any of its sub-intervals (a frame) so
+//              that its halves need not walk the BVH again;
 //   bracket    at the first interval still uncertain at that width, the exact static test at its
 //              end (and up to kTurnLookAhead steps further, while within 1e-7 of lo) finds a pose in
 //              contact: hi. When none is, the traverse passes closer than the bounds can resolve
 //              without a pose found in contact: reported as a hit with `grazing`, [lo, lo + step].
 //   clearance  of a clear leg: branch and bound over sub-intervals; lower bounds from the same
-//              separating directions minus delta, upper bounds from distances at exact poses.
+//              separating directions minus delta, upper bounds from distances at exact poses
+//              (a convex part's obstacle triangles pruned by their gap from its placed hull).
 // Every "contact" reported is a pose whose rounded coordinates the exact static test finds within
 // the margin; "clear" is reported only when every sub-interval was certified.
 #include <algorithm>
@@ -40,6 +47,10 @@ namespace {
 /// within the promised 1e-7.
 constexpr double kTurnStep = 0x1p-25;
 constexpr int kTurnLookAhead = 2;
+/// A failed interval wider than kGuessWidest is split around the guessed contact (turn_guess),
+/// with a window of kGuessWindow of its width on either side.
+constexpr double kGuessWindow = 1.0 / 32;
+constexpr double kGuessWidest = 0x1p-19;
 
 /// The axis-aligned box of `body` (the traverse's own coordinates) placed at `pose`, before the
 /// rounding allowance the caller adds.
@@ -141,6 +152,44 @@ double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
     return best;
 }
 
+/// Visits visit(slot) for the obstacle triangles in BVH leaves whose lower bound of the distance
+/// from `sweep` is at most `cutoff` (read at every node: it may shrink as the visits go), nearer
+/// child first; stops when visit returns false.
+template <typename Visit>
+void walk_near(const Bvh& obstacles, const ConvexSweep& sweep, const double& cutoff, Visit&& visit) {
+    if (obstacles.nodes.empty()) return;
+    std::pair<double, std::uint32_t> stack[128];
+    int top = 0;
+    stack[top++] = {sweep.box_gap(obstacles.nodes[0].box, cutoff), 0u};
+    while (top > 0) {
+        const auto [gap, index] = stack[--top];
+        if (gap > cutoff) continue;
+        const BvhNode& node = obstacles.nodes[index];
+        if (node.count == 0) {
+            const double a = sweep.box_gap(obstacles.nodes[node.first].box, cutoff);
+            const double b = sweep.box_gap(obstacles.nodes[node.first + 1].box, cutoff);
+            if (a > cutoff && b > cutoff) continue;
+            if (a <= b) {
+                stack[top++] = {b, node.first + 1};
+                stack[top++] = {a, node.first};
+            } else {
+                stack[top++] = {a, node.first};
+                stack[top++] = {b, node.first + 1};
+            }
+            continue;
+        }
+        for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
+            if (!visit(s)) return;
+        }
+    }
+}
+
+/// Entries of a convex part's cache of separating directions (a power of two).
+constexpr std::size_t kDirectionCache = 256;
+/// A failed interval keeps its nearby obstacle triangles for its halves when there are at most
+/// this many.
+constexpr std::size_t kFrameSlots = 24;
+
 }  // namespace
 
 namespace route_detail {
@@ -152,6 +201,25 @@ struct TurnState {
         std::vector<Box> boxes;           ///< per node: placed at both poses, grown
         std::vector<Vec> placed;          ///< per slot: 3 vertices at t0, then 3 at t1
         std::vector<std::uint32_t> box_stamp, tri_stamp;
+        // A convex part (Part::hull_surface): over an interval it stays within `radius`'s delta
+        // of `sweep` (convex_sweep.hpp).
+        bool convex = false;
+        double radius = 0.0;  ///< the hull points' largest distance from the rotation axis
+        ConvexSweep sweep;
+        std::uint32_t sweep_stamp = 0;
+        /// The closest-points directions found lately, by obstacle slot (direct-mapped): the same
+        /// triangles come back in every sub-interval of a bisection, and a direction that kept
+        /// one apart over an interval often keeps it apart over the next.
+        std::vector<std::pair<std::uint32_t, Vec>> directions;
+        /// Obstacle triangles that may come near the sweep of any sub-interval of [t0, t1]: an
+        /// interval that failed keeps them for its halves (nested, innermost at depth - 1).
+        struct Frame {
+            double t0 = 0.0, t1 = 0.0;
+            std::vector<std::uint32_t> slots;
+        };
+        std::vector<Frame> frames;
+        std::size_t depth = 0;
+        double frame_width = 1.0;  ///< the widest interval a frame is built for from the BVH
     };
     const LegMotion& motion;
     std::vector<PerPart> parts;
@@ -163,8 +231,41 @@ struct TurnState {
     bool hint = false;
     std::size_t part = 0;
     std::uint32_t part_slot = 0, slot = 0;
+    bool whole_part = false;  ///< the hint came from a convex part's sweep: part_slot is not set
 
     explicit TurnState(const LegMotion& m) : motion(m) {}
+
+    /// A convex part's sweep over the interval (cached per interval).
+    const ConvexSweep& sweep_of(const Part& part, PerPart& pp) {
+        if (pp.sweep_stamp != stamp) {
+            pp.sweep_stamp = stamp;
+            const Pose poses[2] = {p0, p1};
+            pp.sweep.place(part.hull_points, part.face_normals, part.edge_directions, poses, 2, motion.pivot,
+                           motion.theta * (t1 - t0));
+        }
+        return pp.sweep;
+    }
+
+    /// The sweep's gap from obstacle triangle q (slot `slot`), with the slot's cached direction.
+    static double sweep_gap(PerPart& pp, std::uint32_t slot, const Vec* q, double enough) {
+        auto& cached = pp.directions[slot & (pp.directions.size() - 1)];
+        const bool known = cached.first == slot;
+        cached.first = slot;
+        return pp.sweep.gap(q, enough, &cached.second, known);
+    }
+
+    /// Part triangle slot ps's vertices placed at t0 (3), then at t1 (3); cached for the interval.
+    const Vec* placed(const Part& part, PerPart& pp, std::uint32_t ps) {
+        Vec* out = &pp.placed[6 * ps];
+        if (pp.tri_stamp[ps] != stamp) {
+            for (int k = 0; k < 3; ++k) {
+                out[k] = place(p0, motion.pivot, part.tris[3 * ps + k]);
+                out[3 + k] = place(p1, motion.pivot, part.tris[3 * ps + k]);
+            }
+            pp.tri_stamp[ps] = stamp;
+        }
+        return out;
+    }
 
     /// Part node n's box placed at both poses of the interval, grown by the node's delta, the
     /// tolerance and `extra`; cached for the interval (which uses one `extra` throughout).
@@ -201,6 +302,12 @@ void RouteChecker::Impl::turn_prepare(TurnState& st) const {
         pp.box_stamp.assign(part.bvh.nodes.size(), 0);
         pp.placed.resize(2 * part.tris.size());
         pp.tri_stamp.assign(slots, 0);
+        pp.convex = part.hull_surface;
+        if (pp.convex) {
+            pp.directions.assign(kDirectionCache, {~std::uint32_t{0}, Vec(0.0)});
+            for (const Vec& v : part.hull_points) pp.radius = std::max(pp.radius, st.motion.radius(v));
+            pp.radius *= 1.0 + 1e-12;
+        }
     }
 }
 
@@ -214,24 +321,69 @@ void RouteChecker::Impl::turn_interval(TurnState& st, double t0, double t1) cons
     ++st.stamp;
 }
 
+bool RouteChecker::Impl::turn_certify_convex(TurnState& st, std::size_t pi) const {
+    TurnState::PerPart& pp = st.parts[pi];
+    const ConvexSweep& sweep = st.sweep_of(parts[pi], pp);
+    const double grow = st.motion.deviation(pp.radius, st.t1 - st.t0) + margin + st.tol;
+    auto apart = [&](std::uint32_t s) {
+        const Vec* q = &tris[3 * s];
+        if (TurnState::sweep_gap(pp, s, q, grow) > grow) return true;
+        st.hint = st.whole_part = true;
+        st.part = pi;
+        st.slot = s;
+        return false;
+    };
+    // The frames of enclosing intervals that failed: the innermost that holds this one.
+    while (pp.depth > 0 && !(pp.frames[pp.depth - 1].t0 <= st.t0 && st.t1 <= pp.frames[pp.depth - 1].t1)) --pp.depth;
+    bool clear = !(st.hint && st.whole_part && st.part == pi && !apart(st.slot));
+    if (clear && pp.depth > 0) {
+        for (std::uint32_t s : pp.frames[pp.depth - 1].slots) {
+            if (!(clear = apart(s))) break;
+        }
+    } else if (clear) {
+        walk_near(bvh, sweep, grow, [&](std::uint32_t s) { return clear = apart(s); });
+    }
+    if (!clear) turn_frame(st, pi);
+    return clear;
+}
+
+void RouteChecker::Impl::turn_frame(TurnState& st, std::size_t pi) const {
+    // Every sub-interval's sweep lies within delta of this interval's (its end poses do, by the
+    // bound) and is grown by at most delta again (plus the margin): what is farther than twice
+    // delta plus the margin (and the roundings of the end poses, a few tolerances) stays apart.
+    TurnState::PerPart& pp = st.parts[pi];
+    const double reach = 2.0 * st.motion.deviation(pp.radius, st.t1 - st.t0) + margin + 3.0 * st.tol;
+    if (pp.frames.size() <= pp.depth) pp.frames.resize(pp.depth + 1);
+    TurnState::PerPart::Frame& frame = pp.frames[pp.depth];
+    frame.t0 = st.t0;
+    frame.t1 = st.t1;
+    frame.slots.clear();
+    auto near = [&](std::uint32_t s) {
+        if (pp.sweep.axes_gap(&tris[3 * s], reach) <= reach) frame.slots.push_back(s);
+        return frame.slots.size() <= kFrameSlots;
+    };
+    if (pp.depth > 0) {
+        for (std::uint32_t s : pp.frames[pp.depth - 1].slots) near(s);
+    } else {
+        // After a walk that found too many, the next tries a quarter of that width.
+        if (st.t1 - st.t0 > pp.frame_width) return;
+        walk_near(bvh, pp.sweep, reach, [&](std::uint32_t s) { return near(s); });
+        if (frame.slots.size() > kFrameSlots) {
+            pp.frame_width = 0.25 * (st.t1 - st.t0);
+            return;  // too many to be worth keeping
+        }
+    }
+    ++pp.depth;
+}
+
 bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
     const Part& part = parts[pi];
     TurnState::PerPart& pp = st.parts[pi];
     if (bvh.nodes.empty() || part.bvh.nodes.empty()) return true;
+    if (pp.convex) return turn_certify_convex(st, pi);
     const double span = st.t1 - st.t0;
-    const Vec& pivot = st.motion.pivot;
     auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, margin); };
-    auto placed = [&](std::uint32_t ps) -> const Vec* {
-        Vec* out = &pp.placed[6 * ps];
-        if (pp.tri_stamp[ps] != st.stamp) {
-            for (int k = 0; k < 3; ++k) {
-                out[k] = place(st.p0, pivot, part.tris[3 * ps + k]);
-                out[3 + k] = place(st.p1, pivot, part.tris[3 * ps + k]);
-            }
-            pp.tri_stamp[ps] = st.stamp;
-        }
-        return out;
-    };
+    auto placed = [&](std::uint32_t ps) { return st.placed(part, pp, ps); };
     // Whether the pair (part slot ps, obstacle slot s) is kept apart over the interval.
     auto apart = [&](std::uint32_t ps, std::uint32_t s, const Vec* p, const Box& swept, double grow) {
         const Vec* q = &tris[3 * s];
@@ -240,6 +392,7 @@ bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
         st.part_slot = ps;
         st.slot = s;
         st.hint = true;
+        st.whole_part = false;
         return false;
     };
     auto swept_box = [&](std::uint32_t ps, const Vec* p, double* grow) {
@@ -250,7 +403,7 @@ bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
     };
     // The pair that kept the enclosing interval uncertain usually keeps this one uncertain too:
     // trying it first makes a failing certification cheap (the answer is the same either way).
-    if (st.hint && st.part == pi) {
+    if (st.hint && !st.whole_part && st.part == pi) {
         double grow = 0.0;
         const Vec* p = placed(st.part_slot);
         if (!apart(st.part_slot, st.slot, p, swept_box(st.part_slot, p, &grow), grow)) return false;
@@ -289,32 +442,36 @@ std::vector<Part> RouteChecker::Impl::turned_parts(const Quat& q) const {
 }
 
 StaticContact RouteChecker::Impl::posed_contact(const Pose& pose, bool want_distance) const {
+    // Each part placed once, for the contact test and the distance.
+    std::vector<PlacedPart> placed(parts.size());
+    for (std::size_t pi = 0; pi < parts.size(); ++pi) place_part(pi, pose, &placed[pi]);
     return contact_with(
-        want_distance, [&](std::size_t pi, Found* found) { return posed_touch(pi, pose, found); },
-        [&](std::size_t pi, Nearest* best) { posed_nearest(pi, pose, 0.0, best); });
+        want_distance, [&](std::size_t pi, Found* found) { return posed_touch(pi, pose, found, &placed[pi]); },
+        [&](std::size_t pi, Nearest* best) { posed_nearest(pi, pose, 0.0, best, &placed[pi]); });
 }
 
-void RouteChecker::Impl::place_part(std::size_t pi, const Pose& pose, std::vector<Vec>* out) const {
+void RouteChecker::Impl::place_part(std::size_t pi, const Pose& pose, PlacedPart* out) const {
     const Part& part = parts[pi];
-    out->resize(part.tris.size());
-    for (std::size_t k = 0; k < part.tris.size(); ++k) (*out)[k] = place(pose, pivot, part.tris[k]);
+    out->tris.resize(part.tris.size());
+    for (std::size_t k = 0; k < part.tris.size(); ++k) out->tris[k] = place(pose, pivot, part.tris[k]);
+    out->boxes.resize(part.bvh.nodes.size());
+    for (std::size_t n = 0; n < out->boxes.size(); ++n) out->boxes[n] = placed_box(part.bvh.nodes[n].box, pose, pivot);
 }
 
-bool RouteChecker::Impl::posed_touch(std::size_t pi, const Pose& pose, Found* found) const {
+bool RouteChecker::Impl::posed_touch(std::size_t pi, const Pose& pose, Found* found, const PlacedPart* given) const {
     if (pose.rotation.identity) return static_touch(parts[pi], pi, pose.offset, found);
     const Part& part = parts[pi];
     const Vec m = glm::abs(pose.offset);
     const double tol = tolerance(std::max({m.x, m.y, m.z}) + glm::length(pivot));
-    std::vector<Vec> placed;
-    place_part(pi, pose, &placed);
+    PlacedPart own;
+    if (!given) place_part(pi, pose, &own);
+    const std::vector<Vec>& placed = (given ? given : &own)->tris;
+    const std::vector<Box>& boxes = (given ? given : &own)->boxes;
     const Box placed_all = placed_box(part.box, pose, pivot).inflated(tol);
-    // Surfaces within the margin: the part's nodes placed, against the obstacles' BVH.
-    std::vector<Box> boxes(part.bvh.nodes.size());
-    for (std::size_t n = 0; n < boxes.size(); ++n) {
-        boxes[n] = placed_box(part.bvh.nodes[n].box, pose, pivot).inflated(margin + tol);
-    }
+    // Surfaces within the margin: the part's nodes placed (grown by the margin and the
+    // tolerance), against the obstacles' BVH.
     NodePairs stack;
-    const bool hit = dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) -> const Box& { return boxes[n]; },
+    const bool hit = dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) { return boxes[n].inflated(margin + tol); },
                                [](const Box& a, const Box& b) { return a.overlaps(b); },
                                [&](const BvhNode& pnode, const BvhNode& onode) {
         for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
@@ -393,16 +550,69 @@ double RouteChecker::Impl::placed_pair_distance(std::size_t pi, std::uint32_t pa
     return triangle_distance(placed, &tris[3 * slot], w);
 }
 
-void RouteChecker::Impl::posed_nearest(std::size_t pi, const Pose& pose, double t, Nearest* best) const {
+std::uint32_t RouteChecker::Impl::nearest_part_slot(std::size_t pi, std::uint32_t slot, const Pose& pose) const {
+    std::uint32_t best_slot = 0;
+    double best = kInf;
+    for (std::uint32_t ps = 0; ps < parts[pi].tris.size() / 3; ++ps) {
+        const double d = placed_pair_distance(pi, ps, slot, pose);
+        if (d < best) best = d, best_slot = ps;
+    }
+    return best_slot;
+}
+
+void RouteChecker::Impl::posed_nearest(std::size_t pi, const Pose& pose, double t, Nearest* best,
+                                       const PlacedPart* given) const {
     const Part& part = parts[pi];
     if (bvh.nodes.empty() || part.bvh.nodes.empty()) return;
-    std::vector<Vec> placed;
-    place_part(pi, pose, &placed);
-    std::vector<Box> boxes(part.bvh.nodes.size());
-    for (std::size_t n = 0; n < boxes.size(); ++n) boxes[n] = placed_box(part.bvh.nodes[n].box, pose, pivot);
+    PlacedPart own;
+    if (!given) place_part(pi, pose, &own);
+    const std::vector<Vec>& placed = (given ? given : &own)->tris;
+    const std::vector<Box>& boxes = (given ? given : &own)->boxes;
+    auto consider = [&](std::uint32_t ps, std::uint32_t s) {
+        double w[3];
+        const double d = triangle_distance(&placed[3 * ps], &tris[3 * s], w);
+        if (d < best->distance) {
+            best->distance = d;
+            best->fraction = t;
+            best->obstacle = tri_obstacle[s];
+            best->triangle = tri_index[s];
+            best->part = static_cast<std::int64_t>(pi);
+        }
+    };
+    // The placed boxes are short of the rounded vertices by a few ulps at most, and the gaps are
+    // floating point: a lower bound slightly too high only costs a pair whose distance ties the
+    // best to the last bits.
+    if (part.hull_surface) {
+        // A convex part: obstacle triangles by their gap from the placed hull (its face normals
+        // as axes), then the part's triangles near each.
+        ConvexSweep hull;
+        hull.place(part.hull_points, part.face_normals, part.edge_directions, &pose, 1, pivot);
+        std::vector<std::uint32_t> stack;
+        walk_near(bvh, hull, best->distance, [&](std::uint32_t s) {
+            const Vec* q = &tris[3 * s];
+            Vec direction;
+            if (hull.gap(q, best->distance, &direction, false) >= best->distance) return true;
+            const Box qbox = triangle_box(q);
+            stack.assign(1, 0u);
+            while (!stack.empty()) {
+                const BvhNode& node = part.bvh.nodes[stack.back()];
+                const Box& box = boxes[stack.back()];
+                stack.pop_back();
+                if (box.distance(qbox) >= best->distance) continue;
+                if (node.count == 0) {
+                    stack.push_back(node.first);
+                    stack.push_back(node.first + 1);
+                    continue;
+                }
+                for (std::uint32_t ps = node.first; ps < node.first + node.count; ++ps) {
+                    if (triangle_box(&placed[3 * ps]).distance(qbox) < best->distance) consider(ps, s);
+                }
+            }
+            return true;
+        });
+        return;
+    }
     NodePairs stack;
-    // The placed boxes are short of the rounded vertices by a few ulps at most: a lower bound
-    // slightly too high only costs a pair whose distance ties the best to the last bits.
     dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) -> const Box& { return boxes[n]; },
               [&](const Box& a, const Box& b) { return a.distance(b) < best->distance; },
               [&](const BvhNode& pnode, const BvhNode& onode) {
@@ -410,17 +620,7 @@ void RouteChecker::Impl::posed_nearest(std::size_t pi, const Pose& pose, double 
             const Vec* p = &placed[3 * ps];
             const Box pbox = triangle_box(p);
             for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
-                const Vec* q = &tris[3 * s];
-                if (pbox.distance(triangle_box(q)) >= best->distance) continue;
-                double w[3];
-                const double d = triangle_distance(p, q, w);
-                if (d < best->distance) {
-                    best->distance = d;
-                    best->fraction = t;
-                    best->obstacle = tri_obstacle[s];
-                    best->triangle = tri_index[s];
-                    best->part = static_cast<std::int64_t>(pi);
-                }
+                if (pbox.distance(triangle_box(&tris[3 * s])) < best->distance) consider(ps, s);
             }
         }
         return false;
@@ -431,19 +631,27 @@ double RouteChecker::Impl::turn_lower_bound(TurnState& st, std::size_t pi, doubl
     const Part& part = parts[pi];
     TurnState::PerPart& pp = st.parts[pi];
     if (bvh.nodes.empty() || part.bvh.nodes.empty()) return kInf;
+    if (pp.convex) {
+        // The sweep's gap less delta (and the tolerance) bounds every pose's distance from below.
+        const ConvexSweep& sweep = st.sweep_of(part, pp);
+        const double grow = st.motion.deviation(pp.radius, st.t1 - st.t0) + st.tol;
+        double lowest = cutoff, reach = cutoff + grow;
+        walk_near(bvh, sweep, reach, [&](std::uint32_t s) {
+            const double bound = TurnState::sweep_gap(pp, s, &tris[3 * s], reach) - grow;
+            lowest = std::min(lowest, std::max(bound, 0.0));
+            reach = lowest + grow;
+            return true;
+        });
+        return lowest;
+    }
     const double span = st.t1 - st.t0;
-    const Vec& pivot = st.motion.pivot;
     // Boxes grown by delta and the tolerance only: their distance is a lower bound.
     auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, 0.0); };
     double lowest = cutoff;
     dual_walk(part.bvh, bvh, st.stack, node_box, [&](const Box& a, const Box& b) { return a.distance(b) < lowest; },
               [&](const BvhNode& pnode, const BvhNode& onode) {
         for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
-            Vec p[6];
-            for (int k = 0; k < 3; ++k) {
-                p[k] = place(st.p0, pivot, part.tris[3 * ps + k]);
-                p[3 + k] = place(st.p1, pivot, part.tris[3 * ps + k]);
-            }
+            const Vec* p = st.placed(part, pp, ps);
             const double grow = st.motion.deviation(pp.tri_radius[ps], span) + st.tol;
             Box tb = triangle_box(p);
             tb.add(triangle_box(p + 3));
@@ -515,6 +723,38 @@ void RouteChecker::Impl::turn_clearance(const LegMotion& motion, LegReport* leg)
     leg->rotation[0] = q.w, leg->rotation[1] = q.x, leg->rotation[2] = q.y, leg->rotation[3] = q.z;
 }
 
+double RouteChecker::Impl::turn_guess(TurnState& st) const {
+    if (!st.hint) return -1.0;
+    // The failing pair's points at t0 and at t1: a convex part's hull points, else the part
+    // triangle's vertices.
+    const Vec* at0;
+    const Vec* at1;
+    int count;
+    if (st.whole_part) {
+        const std::vector<Vec>& points = st.parts[st.part].sweep.points;
+        count = static_cast<int>(points.size() / 2);
+        at0 = points.data();
+        at1 = at0 + count;
+    } else {
+        at0 = st.placed(parts[st.part], st.parts[st.part], st.part_slot);
+        at1 = at0 + 3;
+        count = 3;
+    }
+    const Vec* q = &tris[3 * st.slot];
+    // Their gap along the direction that separates them at t0, at both ends, interpolated.
+    const Vec n = hull_closest_direction(at0, count, q);
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) return -1.0;
+    auto gap = [&](const Vec* a) {
+        double lo = kInf;
+        for (int k = 0; k < count; ++k) lo = std::min(lo, glm::dot(n, a[k]));
+        return (lo - std::max({glm::dot(n, q[0]), glm::dot(n, q[1]), glm::dot(n, q[2])})) / len - margin;
+    };
+    const double h0 = gap(at0), h1 = gap(at1);
+    if (!(h0 > 0.0 && h1 < 0.0)) return -1.0;
+    return st.t0 + (st.t1 - st.t0) * (h0 / (h0 - h1));
+}
+
 LegReport RouteChecker::Impl::check_turning_leg(const LegMotion& motion, const RouteOptions& options) const {
     LegReport leg;
     auto set_pose = [&](double t) {
@@ -553,6 +793,16 @@ LegReport RouteChecker::Impl::check_turning_leg(const LegMotion& motion, const R
                 continue;
             }
             if (t1 - t0 > kTurnStep) {
+                // Around where the pair that failed seems to meet, a window of 1/32 of the
+                // interval: when the guess is good the search skips five halvings; when it is not,
+                // the pieces are searched as any other.
+                const double w = (t1 - t0) * kGuessWindow, guess = t1 - t0 > kGuessWidest ? turn_guess(st) : -1.0;
+                if (guess - w > t0 && guess + w < t1) {
+                    intervals.emplace_back(guess + w, t1);
+                    intervals.emplace_back(guess - w, guess + w);
+                    intervals.emplace_back(t0, guess - w);
+                    continue;
+                }
                 const double mid = 0.5 * (t0 + t1);
                 intervals.emplace_back(mid, t1);
                 intervals.emplace_back(t0, mid);
@@ -577,6 +827,7 @@ LegReport RouteChecker::Impl::check_turning_leg(const LegMotion& motion, const R
             if (!touch) {
                 leg.grazing = true;
                 leg.fraction_hi = t1;
+                if (st.whole_part) st.part_slot = nearest_part_slot(st.part, st.slot, motion.at(t1));
                 found.part = static_cast<std::int64_t>(st.part);
                 found.part_slot = st.part_slot;
                 found.slot = st.slot;
