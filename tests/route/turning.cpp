@@ -76,6 +76,18 @@ bool contact_at(const RouteChecker& checker, std::size_t k, double t) {
     return checker.static_contact(offset, rotation).contact;
 }
 
+/// A hit whose bracket [lo, hi] holds the first contact `contact` (known in closed form) and is at
+/// most 1e-7 wide, not a graze, with the pose at hi in contact.
+void check_bracket(const RouteChecker& checker, const LegReport& leg, double contact) {
+    CAPTURE(contact, leg.fraction_lo, leg.fraction_hi);
+    REQUIRE(leg.status == LegStatus::Hit);
+    CHECK_FALSE(leg.grazing);
+    CHECK(leg.fraction_lo <= contact + 1e-12);
+    CHECK(leg.fraction_hi >= contact - 1e-12);
+    CHECK(leg.fraction_hi - leg.fraction_lo <= 1e-7);
+    CHECK(contact_at(checker, 0, leg.fraction_hi));
+}
+
 /// Every field of two leg reports, bit for bit (NaN equals NaN); `rotation` only when asked.
 bool same_leg(const LegReport& a, const LegReport& b, bool compare_rotation = true) {
     auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
@@ -120,13 +132,7 @@ TEST_CASE("turning: a plate turning about one end meets a post at the angle the 
         const RouteReport report = checker.check();
         REQUIRE(report.ok());
         const LegReport& leg = report.legs[0];
-        CAPTURE(contact, leg.fraction_lo, leg.fraction_hi);
-        REQUIRE(leg.status == LegStatus::Hit);
-        CHECK_FALSE(leg.grazing);
-        CHECK(leg.fraction_lo <= contact + 1e-12);
-        CHECK(leg.fraction_hi >= contact - 1e-12);
-        CHECK(leg.fraction_hi - leg.fraction_lo <= 1e-7);
-        CHECK(contact_at(checker, 0, leg.fraction_hi));
+        check_bracket(checker, leg, contact);
         CHECK(leg.clearance <= margin);
         CHECK_FALSE(contact_at(checker, 0, leg.fraction_lo - 1e-6));
         // The report's pose is the one at lo: yaw 90 lo degrees.
@@ -140,11 +146,8 @@ TEST_CASE("turning: a plate turning about one end meets a post at the angle the 
     route_test::shift(moved.parts[0], 5, 5, 0);
     moved.pivot[0] = moved.pivot[1] = 5;
     moved.route = {-5, -5, 0, -5, -5, 0};
-    const LegReport leg = check_route(moved).legs[0];
-    REQUIRE(leg.status == LegStatus::Hit);
-    CHECK(leg.fraction_lo <= contact + 1e-12);
-    CHECK(leg.fraction_hi >= contact - 1e-12);
-    CHECK(leg.fraction_hi - leg.fraction_lo <= 1e-7);
+    const RouteChecker moved_checker(moved);
+    check_bracket(moved_checker, moved_checker.check().legs[0], contact);
 }
 
 TEST_CASE("turning: a plate turning away from the post is clear, its clearance at the start", "[turning]") {
@@ -203,6 +206,30 @@ TEST_CASE("turning: of two posts outside the hull of the end poses, the first me
         CHECK(contact_at(checker, 0, leg.fraction_hi));
         CHECK_FALSE(contact_at(checker, 0, leg.fraction_lo - 1e-6));
     }
+}
+
+TEST_CASE("turning: a part that is not its hull: a post in the gap between its two bars", "[turning]") {
+    // Two bars (one mesh, two closed boxes) along x at |y| in [0.2, 0.3], turning 90 degrees about
+    // z: their hull covers the gap, so every obstacle triangle there is left to the part's own
+    // triangles. A square post of half-width e on the axis stays in the gap: clear, nearest when
+    // it is turned 45 degrees against the bars (its reach across the gap is then e sqrt 2). A
+    // post at (1, 0) meets the lower bar when, in the part's frame, its corner reaches y = -0.2:
+    // sin(phi) (1 + e) + e cos(phi) = 0.2.
+    TriangleMesh bars = route_test::box_mesh("bars", 0, 0.2, -0.5, 2, 0.3, 0.5);
+    const TriangleMesh lower = route_test::box_mesh("lower", 0, -0.3, -0.5, 2, -0.2, 0.5);
+    const auto offset = static_cast<std::uint32_t>(bars.xyz.size() / 3);
+    bars.xyz.insert(bars.xyz.end(), lower.xyz.begin(), lower.xyz.end());
+    for (std::uint32_t v : lower.triangles) bars.triangles.push_back(v + offset);
+    const double e = 0.05;
+
+    const LegReport clear = check_route(turning_plate(post(0, 0, e), 0, 90, bars)).legs[0];
+    REQUIRE(clear.status == LegStatus::Clear);
+    CHECK(clear.clearance == Approx(0.2 - e * std::sqrt(2.0)).epsilon(1e-6));
+    CHECK(clear.fraction_lo == Approx(0.5).margin(1e-3));
+
+    const double phi = std::asin(0.2 / std::hypot(1 + e, e)) - std::atan2(e, 1 + e);
+    const RouteChecker checker(turning_plate(post(1, 0, e), 0, 90, bars));
+    check_bracket(checker, checker.check().legs[0], phi / (kPi / 2));
 }
 
 TEST_CASE("turning: a bar passes the slot when turned first, not when turned while passing", "[turning]") {

@@ -52,7 +52,7 @@ struct Part {
     std::vector<Vec> hull_edges;
     std::vector<Vec> axes;
     std::vector<double> axis_lo, axis_hi;
-    // A hull_surface part's distinct face normals and edge directions (convex_sweep.hpp).
+    // The hull's distinct face normals and edge directions (convex_sweep.hpp).
     std::vector<Vec> face_normals, edge_directions;
 };
 
@@ -257,11 +257,11 @@ struct RouteChecker::Impl {
     double placed_pair_distance(std::size_t pi, std::uint32_t part_slot, std::uint32_t slot, const Pose& pose) const;
     void turn_prepare(TurnState& st) const;
     void turn_interval(TurnState& st, double t0, double t1) const;
+    /// Whether part pi stays clear over st's interval: its hull's sweep against the obstacles'
+    /// BVH, then (a part that is not its hull) its own triangles near the obstacle triangles left.
     bool turn_certify(TurnState& st, std::size_t pi) const;
-    /// turn_certify for a convex part: its sweep against the obstacles' BVH.
-    bool turn_certify_convex(TurnState& st, std::size_t pi) const;
-    /// After turn_certify_convex failed on an interval: keeps the obstacle triangles its halves
-    /// must check (when few).
+    /// After turn_certify failed on an interval: keeps the obstacle triangles its pieces must
+    /// check (when few).
     void turn_frame(TurnState& st, std::size_t pi) const;
     /// After an interval failed: the fraction where the pair that failed it (st's hint) seems to
     /// come within the margin, from its gap at both ends along one direction; -1 when that gives

@@ -261,37 +261,6 @@ double point_triangle_distance(const Vec& x, const Vec* q) {
     return std::sqrt(length2(x - (w[0] * q[0] + w[1] * q[1] + w[2] * q[2])));
 }
 
-Vec closest_direction(const Vec* p, const Vec* q) {
-    double best = std::numeric_limits<double>::infinity();
-    Vec direction(0.0);
-    auto consider = [&](const Vec& from, const Vec& to) {
-        const double d = length2(to - from);
-        if (d < best) {
-            best = d;
-            direction = to - from;
-        }
-    };
-    for (int i = 0; i < 3; ++i) {
-        double w[3];
-        closest_on_triangle(p[i], q, w);
-        consider(p[i], w[0] * q[0] + w[1] * q[1] + w[2] * q[2]);
-        closest_on_triangle(q[i], p, w);
-        consider(w[0] * p[0] + w[1] * p[1] + w[2] * p[2], q[i]);
-    }
-    for (int i = 0; i < 3; ++i) {
-        const Vec& a = p[i];
-        const Vec& b = p[(i + 1) % 3];
-        for (int j = 0; j < 3; ++j) {
-            const Vec& c = q[j];
-            const Vec& e = q[(j + 1) % 3];
-            double s, t;
-            closest_between_segments(a, b, c, e, &s, &t);
-            consider(a + s * (b - a), c + t * (e - c));
-        }
-    }
-    return direction;
-}
-
 namespace {
 
 /// The point of the simplex s[0..n) (n <= 4 points) closest to the origin; s is reduced to the

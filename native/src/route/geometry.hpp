@@ -40,10 +40,6 @@ double triangle_distance(const Vec* p, const Vec* q, double weights_p[3]);
 /// would round away at tangential approaches).
 double triangle_distance2(const Vec* p, const Vec* q, double weights_p[3]);
 
-/// The vector from the closest point of triangle p to the closest point of triangle q (floating
-/// point; zero or meaningless when they meet): a candidate separating direction, never a decision.
-Vec closest_direction(const Vec* p, const Vec* q);
-
 /// The vector from the closest point of triangle q to the closest point of the convex hull of
 /// a[0..count) (GJK on their Minkowski difference, floating point, at most 32 steps; zero when they
 /// seem to meet): a candidate separating direction, never a decision.

@@ -187,6 +187,9 @@ void RouteChecker::Impl::build_part(const TriangleMesh& mesh, Part& part) const 
         }
     }
     for (const auto& e : edges) part.hull_edges.push_back(hp(e.second) - hp(e.first));
+    // The separating axes of the hull's sweep (convex_sweep.hpp): before the coordinate axes join.
+    part.face_normals = distinct_directions(part.axes);
+    part.edge_directions = distinct_directions(part.hull_edges);
     part.axes.push_back(Vec(1, 0, 0));
     part.axes.push_back(Vec(0, 1, 0));
     part.axes.push_back(Vec(0, 0, 1));
@@ -220,8 +223,6 @@ void RouteChecker::Impl::build_part(const TriangleMesh& mesh, Part& part) const 
         }
         if (convex && area <= 1.5 * h.area) {
             part.hull_surface = true;
-            part.face_normals = distinct_directions(std::vector<Vec>(part.axes.begin(), part.axes.end() - 3));
-            part.edge_directions = distinct_directions(part.hull_edges);
             for (std::uint32_t v : h.triangles) part.tris.push_back(hp(v));
             Component c;
             c.rep = part.hull_points.front();

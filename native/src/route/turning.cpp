@@ -5,26 +5,27 @@
 //
 //   start      the exact static test at the leg's first pose (surfaces within the margin, then
 //              containment by ray parity), as for a translation;
-//   certify    [t0, t1] is clear when, for every part triangle and obstacle triangle, some
-//              direction keeps the triangle's 6 end-pose vertices more than its delta plus the
-//              margin (plus the tolerance) away from the obstacle triangle; broad phase: the part's
-//              BVH nodes placed at both poses, their box grown by the node's own delta, against the
-//              obstacles' BVH. A convex part (its solid is its hull) is certified whole instead:
-//              some direction keeps its sweep (convex_sweep.hpp: its hull's points at both poses)
-//              more than the part's delta plus the margin from each obstacle triangle, the
-//              obstacles' BVH nodes pruned by the sweep's separating axes;
+//   certify    [t0, t1] is clear when every obstacle triangle is kept more than the part's delta
+//              plus the margin (plus the tolerance) from the part's hull's sweep (convex_sweep.hpp:
+//              the hull's points at both poses) along some direction, the obstacles' BVH nodes
+//              pruned by the sweep's separating axes. That is all for a convex part (its solid is
+//              its hull). For any other part an obstacle triangle the hull's sweep does not clear
+//              is checked against the part's own triangles: its BVH nodes placed at both poses,
+//              each box grown by the node's delta, then each triangle's 6 end-pose vertices kept
+//              more than the triangle's delta plus the margin away along some direction;
 //   subdivide  an interval not certified is halved, earlier half first, down to kTurnStep; the
 //              certified intervals form the clear prefix [0, lo]. The obstacle triangle that failed
-//              is tried first in the next interval, and a convex part's failed interval keeps the
-//              few obstacle triangles that can come near any of its sub-intervals (a frame) so
-//              that its halves need not walk the BVH again;
+//              is tried first in the next interval, a failed interval keeps the few obstacle
+//              triangles that can come near any of its sub-intervals (a frame) so that its pieces
+//              need not walk the BVH again, and it is split around where its failing pair seems
+//              to meet (turn_guess) when that lies inside it;
 //   bracket    at the first interval still uncertain at that width, the exact static test at its
 //              end (and up to kTurnLookAhead steps further, while within 1e-7 of lo) finds a pose in
 //              contact: hi. When none is, the traverse passes closer than the bounds can resolve
 //              without a pose found in contact: reported as a hit with `grazing`, [lo, lo + step].
 //   clearance  of a clear leg: branch and bound over sub-intervals; lower bounds from the same
 //              separating directions minus delta, upper bounds from distances at exact poses
-//              (a convex part's obstacle triangles pruned by their gap from its placed hull).
+//              (obstacle triangles pruned by their gap from the part's placed hull).
 // Every "contact" reported is a pose whose rounded coordinates the exact static test finds within
 // the margin; "clear" is reported only when every sub-interval was certified.
 #include <algorithm>
@@ -121,11 +122,10 @@ bool apart_along(const Vec& n, const Vec* a, const Vec* b, const Vec* q, double 
     return *gap > grow;
 }
 
-/// The largest gap found between the hull of a[0..3) u b[0..3) (a triangle's two end poses) and
-/// triangle q along the candidate directions: q's normal, the end poses' normals, the directions
-/// between their closest points, and the cross products of q's edges with the hull's possible
-/// edges. Any direction's gap is a lower bound of the true distance. Stops as soon as a gap exceeds
-/// `enough`.
+/// The largest gap found between the hull of a[0..3) u b[0..3) (a triangle's two end poses; the
+/// six points are contiguous) and triangle q along the candidate directions: q's normal, the end
+/// poses' normals, and the direction between the hull's and q's closest points (GJK). Any
+/// direction's gap is a lower bound of the true distance. Stops as soon as a gap exceeds `enough`.
 double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
     double best = -kInf, gap;
     auto consider = [&](const Vec& n) {
@@ -133,23 +133,42 @@ double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
         best = std::max(best, gap);
         return false;
     };
-    const Vec eq[3] = {q[1] - q[0], q[2] - q[1], q[0] - q[2]};
-    if (consider(glm::cross(eq[0], eq[1]))) return gap;
+    if (consider(glm::cross(q[1] - q[0], q[2] - q[1]))) return gap;
     if (consider(glm::cross(a[1] - a[0], a[2] - a[0]))) return gap;
     if (consider(glm::cross(b[1] - b[0], b[2] - b[0]))) return gap;
-    if (consider(closest_direction(a, q))) return gap;
-    if (consider(closest_direction(b, q))) return gap;
-    // The hull's edges are among the segments between its 6 points.
-    const Vec pts[6] = {a[0], a[1], a[2], b[0], b[1], b[2]};
-    for (int i = 0; i < 6; ++i) {
-        for (int j = i + 1; j < 6; ++j) {
-            const Vec e = pts[j] - pts[i];
-            for (const Vec& f : eq) {
-                if (consider(glm::cross(e, f))) return gap;
-            }
+    if (consider(hull_closest_direction(a, 6, q))) return gap;
+    return best;
+}
+
+/// Visits visit(item) for the items in the leaves of `tree` under nodes that skip(node index)
+/// does not rule out (skip is asked again at every node: its bound may change as the visits go);
+/// stops when visit returns false.
+template <typename Skip, typename Visit>
+void walk_tree(const Bvh& tree, Skip&& skip, Visit&& visit) {
+    if (tree.nodes.empty()) return;
+    std::uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const std::uint32_t n = stack[--top];
+        if (skip(n)) continue;
+        const BvhNode& node = tree.nodes[n];
+        if (node.count == 0) {
+            stack[top++] = node.first;
+            stack[top++] = node.first + 1;
+            continue;
+        }
+        for (std::uint32_t item = node.first; item < node.first + node.count; ++item) {
+            if (!visit(item)) return;
         }
     }
-    return best;
+}
+
+/// The box of a triangle's 6 end-pose vertices (p[0..6)).
+Box swept_box(const Vec* p) {
+    Box b = triangle_box(p);
+    b.add(triangle_box(p + 3));
+    return b;
 }
 
 /// Visits visit(slot) for the obstacle triangles in BVH leaves whose lower bound of the distance
@@ -201,8 +220,8 @@ struct TurnState {
         std::vector<Box> boxes;           ///< per node: placed at both poses, grown
         std::vector<Vec> placed;          ///< per slot: 3 vertices at t0, then 3 at t1
         std::vector<std::uint32_t> box_stamp, tri_stamp;
-        // A convex part (Part::hull_surface): over an interval it stays within `radius`'s delta
-        // of `sweep` (convex_sweep.hpp).
+        // Over an interval the part stays within `radius`'s delta of `sweep`, its hull's sweep
+        // (convex_sweep.hpp); a convex part (Part::hull_surface, its solid its hull) needs no more.
         bool convex = false;
         double radius = 0.0;  ///< the hull points' largest distance from the rotation axis
         ConvexSweep sweep;
@@ -223,15 +242,15 @@ struct TurnState {
     };
     const LegMotion& motion;
     std::vector<PerPart> parts;
-    NodePairs stack;
     double t0 = 0.0, t1 = 0.0, tol = 0.0;
     Pose p0, p1;
     std::uint32_t stamp = 0;
-    // The pair that kept the last interval from being certified (when `hint`).
+    // The obstacle triangle (and part triangle) that kept the last interval from being certified
+    // (when `hint`).
     bool hint = false;
     std::size_t part = 0;
     std::uint32_t part_slot = 0, slot = 0;
-    bool whole_part = false;  ///< the hint came from a convex part's sweep: part_slot is not set
+    bool whole_part = false;  ///< a convex part's sweep failed: part_slot is not set
 
     explicit TurnState(const LegMotion& m) : motion(m) {}
 
@@ -303,11 +322,9 @@ void RouteChecker::Impl::turn_prepare(TurnState& st) const {
         pp.placed.resize(2 * part.tris.size());
         pp.tri_stamp.assign(slots, 0);
         pp.convex = part.hull_surface;
-        if (pp.convex) {
-            pp.directions.assign(kDirectionCache, {~std::uint32_t{0}, Vec(0.0)});
-            for (const Vec& v : part.hull_points) pp.radius = std::max(pp.radius, st.motion.radius(v));
-            pp.radius *= 1.0 + 1e-12;
-        }
+        pp.directions.assign(kDirectionCache, {~std::uint32_t{0}, Vec(0.0)});
+        for (const Vec& v : part.hull_points) pp.radius = std::max(pp.radius, st.motion.radius(v));
+        pp.radius *= 1.0 + 1e-12;
     }
 }
 
@@ -321,21 +338,44 @@ void RouteChecker::Impl::turn_interval(TurnState& st, double t0, double t1) cons
     ++st.stamp;
 }
 
-bool RouteChecker::Impl::turn_certify_convex(TurnState& st, std::size_t pi) const {
+bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
+    const Part& part = parts[pi];
     TurnState::PerPart& pp = st.parts[pi];
-    const ConvexSweep& sweep = st.sweep_of(parts[pi], pp);
-    const double grow = st.motion.deviation(pp.radius, st.t1 - st.t0) + margin + st.tol;
+    if (bvh.nodes.empty() || part.bvh.nodes.empty()) return true;
+    const ConvexSweep& sweep = st.sweep_of(part, pp);
+    const double span = st.t1 - st.t0;
+    const double grow = st.motion.deviation(pp.radius, span) + margin + st.tol;
+    // Obstacle triangle s against the part: its hull's sweep first; a part that is not its hull
+    // then by its own triangles near s (its BVH nodes placed at both poses and grown by their
+    // delta, then each triangle's 6 end-pose vertices grown by the triangle's).
     auto apart = [&](std::uint32_t s) {
         const Vec* q = &tris[3 * s];
         if (TurnState::sweep_gap(pp, s, q, grow) > grow) return true;
-        st.hint = st.whole_part = true;
+        st.hint = true;
         st.part = pi;
         st.slot = s;
-        return false;
+        if (pp.convex) {
+            st.whole_part = true;
+            return false;
+        }
+        st.whole_part = false;
+        const Box qbox = triangle_box(q);
+        bool kept_apart = true;
+        walk_tree(part.bvh, [&](std::uint32_t n) { return !st.node_box(part, pp, n, margin).overlaps(qbox); },
+                  [&](std::uint32_t ps) {
+            const Vec* p = st.placed(part, pp, ps);
+            const double g = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
+            if (!swept_box(p).inflated(g).overlaps(qbox) || hull_gap(p, p + 3, q, g) > g) return true;
+            st.part_slot = ps;
+            return kept_apart = false;
+        });
+        return kept_apart;
     };
     // The frames of enclosing intervals that failed: the innermost that holds this one.
     while (pp.depth > 0 && !(pp.frames[pp.depth - 1].t0 <= st.t0 && st.t1 <= pp.frames[pp.depth - 1].t1)) --pp.depth;
-    bool clear = !(st.hint && st.whole_part && st.part == pi && !apart(st.slot));
+    // The triangle that kept the enclosing interval uncertain usually keeps this one uncertain
+    // too: trying it first makes a failing certification cheap (the answer is the same either way).
+    bool clear = !(st.hint && st.part == pi && !apart(st.slot));
     if (clear && pp.depth > 0) {
         for (std::uint32_t s : pp.frames[pp.depth - 1].slots) {
             if (!(clear = apart(s))) break;
@@ -374,54 +414,6 @@ void RouteChecker::Impl::turn_frame(TurnState& st, std::size_t pi) const {
         }
     }
     ++pp.depth;
-}
-
-bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
-    const Part& part = parts[pi];
-    TurnState::PerPart& pp = st.parts[pi];
-    if (bvh.nodes.empty() || part.bvh.nodes.empty()) return true;
-    if (pp.convex) return turn_certify_convex(st, pi);
-    const double span = st.t1 - st.t0;
-    auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, margin); };
-    auto placed = [&](std::uint32_t ps) { return st.placed(part, pp, ps); };
-    // Whether the pair (part slot ps, obstacle slot s) is kept apart over the interval.
-    auto apart = [&](std::uint32_t ps, std::uint32_t s, const Vec* p, const Box& swept, double grow) {
-        const Vec* q = &tris[3 * s];
-        if (!swept.overlaps(triangle_box(q)) || hull_gap(p, p + 3, q, grow) > grow) return true;
-        st.part = pi;
-        st.part_slot = ps;
-        st.slot = s;
-        st.hint = true;
-        st.whole_part = false;
-        return false;
-    };
-    auto swept_box = [&](std::uint32_t ps, const Vec* p, double* grow) {
-        *grow = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
-        Box b = triangle_box(p);
-        b.add(triangle_box(p + 3));
-        return b.inflated(*grow);
-    };
-    // The pair that kept the enclosing interval uncertain usually keeps this one uncertain too:
-    // trying it first makes a failing certification cheap (the answer is the same either way).
-    if (st.hint && !st.whole_part && st.part == pi) {
-        double grow = 0.0;
-        const Vec* p = placed(st.part_slot);
-        if (!apart(st.part_slot, st.slot, p, swept_box(st.part_slot, p, &grow), grow)) return false;
-    }
-    const bool uncertain = dual_walk(part.bvh, bvh, st.stack, node_box, [](const Box& a, const Box& b) { return a.overlaps(b); },
-                                     [&](const BvhNode& pnode, const BvhNode& onode) {
-        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
-            double grow = 0.0;
-            const Vec* p = placed(ps);
-            const Box swept = swept_box(ps, p, &grow);
-            if (!swept.overlaps(onode.box)) continue;
-            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
-                if (!apart(ps, s, p, swept, grow)) return true;
-            }
-        }
-        return false;
-    });
-    return !uncertain;
 }
 
 std::vector<Part> RouteChecker::Impl::turned_parts(const Quat& q) const {
@@ -581,49 +573,21 @@ void RouteChecker::Impl::posed_nearest(std::size_t pi, const Pose& pose, double 
     };
     // The placed boxes are short of the rounded vertices by a few ulps at most, and the gaps are
     // floating point: a lower bound slightly too high only costs a pair whose distance ties the
-    // best to the last bits.
-    if (part.hull_surface) {
-        // A convex part: obstacle triangles by their gap from the placed hull (its face normals
-        // as axes), then the part's triangles near each.
-        ConvexSweep hull;
-        hull.place(part.hull_points, part.face_normals, part.edge_directions, &pose, 1, pivot);
-        std::vector<std::uint32_t> stack;
-        walk_near(bvh, hull, best->distance, [&](std::uint32_t s) {
-            const Vec* q = &tris[3 * s];
-            Vec direction;
-            if (hull.gap(q, best->distance, &direction, false) >= best->distance) return true;
-            const Box qbox = triangle_box(q);
-            stack.assign(1, 0u);
-            while (!stack.empty()) {
-                const BvhNode& node = part.bvh.nodes[stack.back()];
-                const Box& box = boxes[stack.back()];
-                stack.pop_back();
-                if (box.distance(qbox) >= best->distance) continue;
-                if (node.count == 0) {
-                    stack.push_back(node.first);
-                    stack.push_back(node.first + 1);
-                    continue;
-                }
-                for (std::uint32_t ps = node.first; ps < node.first + node.count; ++ps) {
-                    if (triangle_box(&placed[3 * ps]).distance(qbox) < best->distance) consider(ps, s);
-                }
-            }
+    // best to the last bits. Obstacle triangles by their gap from the placed hull (its face
+    // normals as axes; the hull holds the part), then the part's triangles near each.
+    ConvexSweep hull;
+    hull.place(part.hull_points, part.face_normals, part.edge_directions, &pose, 1, pivot);
+    walk_near(bvh, hull, best->distance, [&](std::uint32_t s) {
+        const Vec* q = &tris[3 * s];
+        Vec direction;
+        if (hull.gap(q, best->distance, &direction, false) >= best->distance) return true;
+        const Box qbox = triangle_box(q);
+        walk_tree(part.bvh, [&](std::uint32_t n) { return boxes[n].distance(qbox) >= best->distance; },
+                  [&](std::uint32_t ps) {
+            if (triangle_box(&placed[3 * ps]).distance(qbox) < best->distance) consider(ps, s);
             return true;
         });
-        return;
-    }
-    NodePairs stack;
-    dual_walk(part.bvh, bvh, stack, [&](std::uint32_t n) -> const Box& { return boxes[n]; },
-              [&](const Box& a, const Box& b) { return a.distance(b) < best->distance; },
-              [&](const BvhNode& pnode, const BvhNode& onode) {
-        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
-            const Vec* p = &placed[3 * ps];
-            const Box pbox = triangle_box(p);
-            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
-                if (pbox.distance(triangle_box(&tris[3 * s])) < best->distance) consider(ps, s);
-            }
-        }
-        return false;
+        return true;
     });
 }
 
@@ -631,40 +595,35 @@ double RouteChecker::Impl::turn_lower_bound(TurnState& st, std::size_t pi, doubl
     const Part& part = parts[pi];
     TurnState::PerPart& pp = st.parts[pi];
     if (bvh.nodes.empty() || part.bvh.nodes.empty()) return kInf;
-    if (pp.convex) {
-        // The sweep's gap less delta (and the tolerance) bounds every pose's distance from below.
-        const ConvexSweep& sweep = st.sweep_of(part, pp);
-        const double grow = st.motion.deviation(pp.radius, st.t1 - st.t0) + st.tol;
-        double lowest = cutoff, reach = cutoff + grow;
-        walk_near(bvh, sweep, reach, [&](std::uint32_t s) {
-            const double bound = TurnState::sweep_gap(pp, s, &tris[3 * s], reach) - grow;
-            lowest = std::min(lowest, std::max(bound, 0.0));
-            reach = lowest + grow;
+    // The hull's sweep gap less delta (and the tolerance) bounds every pose's distance from below;
+    // a part that is not its hull takes the larger bound of its own triangles where that one is
+    // below the best so far.
+    const ConvexSweep& sweep = st.sweep_of(part, pp);
+    const double span = st.t1 - st.t0;
+    const double grow = st.motion.deviation(pp.radius, span) + st.tol;
+    double lowest = cutoff, reach = cutoff + grow;
+    auto triangles_bound = [&](const Vec* q) {
+        // The least of the part's triangles' bounds below `lowest` (else `lowest`); the nodes'
+        // boxes are grown by delta and the tolerance only, so their distance is a lower bound.
+        const Box qbox = triangle_box(q);
+        double least = lowest;
+        walk_tree(part.bvh, [&](std::uint32_t n) { return st.node_box(part, pp, n, 0.0).distance(qbox) >= least; },
+                  [&](std::uint32_t ps) {
+            const Vec* p = st.placed(part, pp, ps);
+            const double g = st.motion.deviation(pp.tri_radius[ps], span) + st.tol;
+            const double box_bound = swept_box(p).inflated(g).distance(qbox);
+            if (box_bound < least) least = std::min(least, std::max({box_bound, hull_gap(p, p + 3, q, least + g) - g, 0.0}));
             return true;
         });
-        return lowest;
-    }
-    const double span = st.t1 - st.t0;
-    // Boxes grown by delta and the tolerance only: their distance is a lower bound.
-    auto node_box = [&](std::uint32_t n) -> const Box& { return st.node_box(part, pp, n, 0.0); };
-    double lowest = cutoff;
-    dual_walk(part.bvh, bvh, st.stack, node_box, [&](const Box& a, const Box& b) { return a.distance(b) < lowest; },
-              [&](const BvhNode& pnode, const BvhNode& onode) {
-        for (std::uint32_t ps = pnode.first; ps < pnode.first + pnode.count; ++ps) {
-            const Vec* p = st.placed(part, pp, ps);
-            const double grow = st.motion.deviation(pp.tri_radius[ps], span) + st.tol;
-            Box tb = triangle_box(p);
-            tb.add(triangle_box(p + 3));
-            tb = tb.inflated(grow);
-            for (std::uint32_t s = onode.first; s < onode.first + onode.count; ++s) {
-                const Vec* q = &tris[3 * s];
-                const double box_bound = tb.distance(triangle_box(q));
-                if (box_bound >= lowest) continue;
-                const double bound = std::max(box_bound, hull_gap(p, p + 3, q, lowest + grow) - grow);
-                lowest = std::min(lowest, std::max(bound, 0.0));
-            }
-        }
-        return false;
+        return least;
+    };
+    walk_near(bvh, sweep, reach, [&](std::uint32_t s) {
+        const Vec* q = &tris[3 * s];
+        double bound = std::max(TurnState::sweep_gap(pp, s, q, reach) - grow, 0.0);
+        if (!pp.convex && bound < lowest) bound = std::max(bound, triangles_bound(q));
+        lowest = std::min(lowest, bound);
+        reach = lowest + grow;
+        return true;
     });
     return lowest;
 }
