@@ -36,6 +36,15 @@ from . import HullkitError, _core, _translated, as_points, delaunay, hull
 __all__ = ["ConvexHull", "Delaunay"]
 
 
+def _bounds(array, ndim):
+    """(min_bound, max_bound) of the points, column by column (numpy's min over axis 0 of an
+    (n, 2) or (n, 3) array is many times slower); NaN without points."""
+    if not len(array):
+        return _np.full(ndim, _np.nan), _np.full(ndim, _np.nan)
+    columns = [array[:, k] for k in range(ndim)]
+    return _np.array([c.min() for c in columns]), _np.array([c.max() for c in columns])
+
+
 def _not_supported(what, cls="ConvexHull"):
     raise HullkitError(f"{what} is not supported by hullkit.spatial.{cls} (hullkit is exact; it has no Qhull options)")
 
@@ -61,8 +70,7 @@ class ConvexHull:
             raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
         self.points = array
         self.npoints, self.ndim = array.shape
-        self.min_bound = array.min(axis=0) if len(array) else _np.full(self.ndim, _np.nan)
-        self.max_bound = array.max(axis=0) if len(array) else _np.full(self.ndim, _np.nan)
+        self.min_bound, self.max_bound = _bounds(array, self.ndim)
         if self.ndim == 3:
             self._from_3d(hull(as_points(array, 3)))
         else:
@@ -143,15 +151,14 @@ class Delaunay:
             raise HullkitError(f"points must have shape (n, 2), got {array.shape}")
         self.points = array
         self.npoints, self.ndim = array.shape
-        self.min_bound = array.min(axis=0) if len(array) else _np.full(2, _np.nan)
-        self.max_bound = array.max(axis=0) if len(array) else _np.full(2, _np.nan)
+        self.min_bound, self.max_bound = _bounds(array, 2)
         self._triangulation = d = delaunay(array)
         self.dimension = d.dimension
         # hullkit's triangles are clockwise with y up (delaunator's); scipy's counter-clockwise.
-        triangles = _np.asarray(d.triangles, dtype=_np.int32).reshape(-1, 3)
-        self.simplices = _np.ascontiguousarray(triangles[:, [0, 2, 1]])
+        # The corners reordered and the neighbours from the half-edges, in one pass in the core.
+        with _translated():
+            self.simplices, self.neighbors = d._core.scipy_arrays()
         self.nsimplex = len(self.simplices)
-        self.neighbors = self._neighbors(_np.asarray(d.halfedges, dtype=_np.int64))
         hull_cycle = _np.asarray(d.hull, dtype=_np.int32)
         if d.dimension == 2:
             self.convex_hull = _np.stack([hull_cycle, _np.roll(hull_cycle, -1)], axis=1)
@@ -168,15 +175,6 @@ class Delaunay:
                 simplex_of[self.simplices.ravel()] = _np.repeat(_np.arange(self.nsimplex), 3)
             self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
                                       axis=1).astype(_np.int32)
-
-    def _neighbors(self, halfedges):
-        """neighbors[i, j]: the simplex opposite corner j of simplex i, -1 on the hull. Simplex i's
-        corners (scipy order) are hullkit's corners 0, 2, 1; opposite corner j lies hullkit's
-        half-edge 3i + (1, 0, 2)[j] (the edge joining the other two)."""
-        if self.nsimplex == 0:
-            return _np.zeros((0, 3), dtype=_np.int32)
-        across = halfedges.reshape(-1, 3)[:, [1, 0, 2]]
-        return _np.where(across >= 0, across // 3, -1).astype(_np.int32)
 
     def find_simplex(self, xi, bruteforce=False, tol=None):
         """The simplex containing each point of ``xi`` (shape (..., 2)), -1 outside the hull;

@@ -16,6 +16,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -299,6 +300,41 @@ public:
         return owned(std::move(found));
     }
 
+    /// scipy.spatial.Delaunay's `simplices` and `neighbors` (int32, (m, 3)) in one pass: simplex i
+    /// is triangle i with its corners in scipy's counter-clockwise order (hullkit's corners 0, 2,
+    /// 1), and neighbors[i, j] is the simplex across the edge opposite corner j (hullkit's
+    /// half-edge 3i + (1, 0, 2)[j]), -1 on the hull.
+    py::tuple scipy_arrays() const {
+        const std::vector<std::uint32_t>& tri = result_.triangles;
+        const std::vector<std::int32_t>& twin = result_.halfedges;
+        const std::size_t m = tri.size() / 3;
+        const auto rows = static_cast<py::ssize_t>(m);
+        py::array_t<std::int32_t> simplices({rows, py::ssize_t{3}}), neighbors({rows, py::ssize_t{3}});
+        std::int32_t* corners = simplices.mutable_data();
+        std::int32_t* across = neighbors.mutable_data();
+        auto fill = [&](std::size_t begin, std::size_t end) {
+            static constexpr int kCorner[3] = {0, 2, 1}, kEdge[3] = {1, 0, 2};
+            for (std::size_t i = begin; i < end; ++i) {
+                for (int j = 0; j < 3; ++j) {
+                    corners[3 * i + j] = static_cast<std::int32_t>(tri[3 * i + kCorner[j]]);
+                    const std::int32_t h = twin[3 * i + kEdge[j]];
+                    across[3 * i + j] = h >= 0 ? h / 3 : -1;
+                }
+            }
+        };
+        {
+            // Fresh memory costs a page fault per 4 KiB here: large arrays are filled by a few
+            // threads in blocks of rows (each row is written once, so any split gives the same).
+            py::gil_scoped_release unlocked;
+            const std::size_t parts = m < (std::size_t{1} << 16) ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 4);
+            std::vector<std::thread> workers;
+            for (std::size_t k = 1; k < parts; ++k) workers.emplace_back(fill, m * k / parts, m * (k + 1) / parts);
+            fill(0, m / parts);
+            for (std::thread& w : workers) w.join();
+        }
+        return py::make_tuple(simplices, neighbors);
+    }
+
     /// The triangle containing each query (closed: on a shared edge, one of its two), or -1 outside
     /// the hull, by a visibility walk with exact orient2d; points and queries are scaled together
     /// by a power of two (exact) into the predicates' range.
@@ -568,6 +604,7 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("duplicate_count", [](const Triangulation& t) { return t.result().duplicate_count; })
         .def("find", &Triangulation::find)
         .def("locate", &Triangulation::locate)
+        .def("scipy_arrays", &Triangulation::scipy_arrays)
         .def("voronoi", &Triangulation::voronoi);
 
     py::class_<Checker>(m, "RouteChecker")
