@@ -205,7 +205,7 @@ void walk_near(const Bvh& obstacles, const ConvexSweep& sweep, const double& cut
 
 /// Entries of a convex part's cache of separating directions (a power of two).
 constexpr std::size_t kDirectionCache = 256;
-/// A failed interval keeps its nearby obstacle triangles for its halves when there are at most
+/// A failed interval keeps its nearby obstacle triangles for its pieces when there are at most
 /// this many.
 constexpr std::size_t kFrameSlots = 24;
 
@@ -231,7 +231,7 @@ struct TurnState {
         /// one apart over an interval often keeps it apart over the next.
         std::vector<std::pair<std::uint32_t, Vec>> directions;
         /// Obstacle triangles that may come near the sweep of any sub-interval of [t0, t1]: an
-        /// interval that failed keeps them for its halves (nested, innermost at depth - 1).
+        /// interval that failed keeps them for its pieces (nested, innermost at depth - 1).
         struct Frame {
             double t0 = 0.0, t1 = 0.0;
             std::vector<std::uint32_t> slots;
