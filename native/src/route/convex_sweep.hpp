@@ -1,8 +1,9 @@
-// Private to the route module: a convex traverse part (Part::hull_surface, whose solid is its
-// hull) placed at one pose, or at the two end poses of a sub-interval of a turning leg, as the
-// points of its hull there and a few separating axes with the points' extents along them.
+// Private to the route module: a traverse part's hull placed at one pose, or at the two end
+// poses of a sub-interval of a turning leg, as the hull's points there and a few separating axes
+// with the points' extents along them. For a convex part (Part::hull_surface) the hull is its
+// solid; for any other part it holds the part, so the bounds below hold for it too.
 //
-// Over a sub-interval every point of such a part stays within delta (motion.hpp) of the convex
+// Over a sub-interval every point of the part stays within delta (motion.hpp) of the convex
 // hull of its hull's points at the two end poses: the part's "sweep". The sweep's distance from an
 // obstacle box or triangle is bounded from below by the gap along any direction; the directions
 // tried are the part's face normals turned to each pose, the sides of the sweep (the motion
@@ -18,11 +19,11 @@
 
 namespace hullkit::route_detail {
 
-/// At most this many face normals and edge directions of a convex part serve as axes.
+/// At most this many face normals and edge directions of a part's hull serve as axes.
 constexpr std::size_t kConvexAxes = 8;
 
 /// The unit directions of `directions` (part coordinates) one per line through the origin, at most
-/// kConvexAxes of them: a convex part's face normals or edge directions for its axes.
+/// kConvexAxes of them: a hull's face normals or edge directions for its axes.
 std::vector<Vec> distinct_directions(const std::vector<Vec>& directions);
 
 struct ConvexSweep {
