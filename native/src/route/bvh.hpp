@@ -154,4 +154,28 @@ private:
     }
 };
 
+/// Visits visit(item) for the items in the leaves of `tree` under nodes that skip(node index)
+/// does not rule out (skip is asked again at every node: its bound may change as the visits go);
+/// stops when visit returns false.
+template <typename Skip, typename Visit>
+void walk_tree(const Bvh& tree, Skip&& skip, Visit&& visit) {
+    if (tree.nodes.empty()) return;
+    std::uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const std::uint32_t n = stack[--top];
+        if (skip(n)) continue;
+        const BvhNode& node = tree.nodes[n];
+        if (node.count == 0) {
+            stack[top++] = node.first;
+            stack[top++] = node.first + 1;
+            continue;
+        }
+        for (std::uint32_t item = node.first; item < node.first + node.count; ++item) {
+            if (!visit(item)) return;
+        }
+    }
+}
+
 }  // namespace hullkit::route_detail

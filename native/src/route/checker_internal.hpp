@@ -56,16 +56,6 @@ struct Part {
     std::vector<Vec> face_normals, edge_directions;
 };
 
-/// The interval {lo, hi} the points cover along n (lo = inf, hi = -inf without points).
-inline std::pair<double, double> extent_along(const Vec& n, const std::vector<Vec>& points) {
-    double lo = kInf, hi = -kInf;
-    for (const Vec& p : points) {
-        lo = std::min(lo, glm::dot(n, p));
-        hi = std::max(hi, glm::dot(n, p));
-    }
-    return {lo, hi};
-}
-
 inline Box triangle_box(const Vec* t) {
     Box b;
     for (int k = 0; k < 3; ++k) b.add(t[k]);
@@ -102,24 +92,12 @@ Vec ray_direction(int attempt);
 /// What a turning leg keeps while its sub-intervals are certified (turning.cpp).
 struct TurnState;
 
+/// Visits visit(item) for the items in the BVH leaves whose boxes overlap `query`; stops when
+/// visit returns true.
 template <typename Visit>
 void for_each_in_box(const Bvh& bvh, const Box& query, Visit&& visit) {
-    if (bvh.nodes.empty()) return;
-    std::uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const BvhNode& node = bvh.nodes[stack[--top]];
-        if (!node.box.overlaps(query)) continue;
-        if (node.count) {
-            for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
-                if (visit(s)) return;
-            }
-        } else {
-            stack[top++] = node.first;
-            stack[top++] = node.first + 1;
-        }
-    }
+    walk_tree(bvh, [&](std::uint32_t n) { return !bvh.nodes[n].box.overlaps(query); },
+              [&](std::uint32_t item) { return !visit(item); });
 }
 
 }  // namespace hullkit::route_detail

@@ -3,29 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace hullkit::route_detail {
-
-namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-/// The gap along direction n between the points a[0..count) and triangle q (distance along the
-/// unit direction; negative when they overlap along it, -inf for a zero or non-finite n).
-double points_gap_along(const Vec& n, const std::vector<Vec>& a, const Vec* q) {
-    const double len = glm::length(n);
-    if (!(len > 0.0) || !std::isfinite(len)) return -kInfinity;
-    double lo = kInfinity, hi = -kInfinity;
-    for (const Vec& p : a) {
-        const double x = glm::dot(n, p);
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-    }
-    const double q0 = glm::dot(n, q[0]), q1 = glm::dot(n, q[1]), q2 = glm::dot(n, q[2]);
-    return std::max(std::min({q0, q1, q2}) - hi, lo - std::max({q0, q1, q2})) / len;
-}
-
-}  // namespace
 
 std::vector<Vec> distinct_directions(const std::vector<Vec>& directions) {
     std::vector<Vec> out;
@@ -70,14 +50,7 @@ void ConvexSweep::place(const std::vector<Vec>& hull_points, const std::vector<V
     }
     lo.resize(axes.size());
     hi.resize(axes.size());
-    for (std::size_t j = 0; j < axes.size(); ++j) {
-        lo[j] = kInfinity, hi[j] = -kInfinity;
-        for (const Vec& p : points) {
-            const double x = glm::dot(axes[j], p);
-            lo[j] = std::min(lo[j], x);
-            hi[j] = std::max(hi[j], x);
-        }
-    }
+    for (std::size_t j = 0; j < axes.size(); ++j) std::tie(lo[j], hi[j]) = extent_along(axes[j], points);
 }
 
 double ConvexSweep::box_gap(const Box& b, double enough) const {
@@ -93,7 +66,7 @@ double ConvexSweep::box_gap(const Box& b, double enough) const {
 }
 
 double ConvexSweep::axes_gap(const Vec* q, double enough) const {
-    double best = -kInfinity;
+    double best = -std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < axes.size(); ++j) {
         const Vec& n = axes[j];
         const double q0 = glm::dot(n, q[0]), q1 = glm::dot(n, q[1]), q2 = glm::dot(n, q[2]);
@@ -106,14 +79,14 @@ double ConvexSweep::axes_gap(const Vec* q, double enough) const {
 double ConvexSweep::gap(const Vec* q, double enough, Vec* direction, bool known) const {
     double best = axes_gap(q, enough);
     if (best > enough) return best;
-    best = std::max(best, points_gap_along(glm::cross(q[1] - q[0], q[2] - q[0]), points, q));
+    best = std::max(best, points_gap_along(glm::cross(q[1] - q[0], q[2] - q[0]), points.data(), points.size(), q));
     if (best > enough) return best;
     if (known) {
-        best = std::max(best, points_gap_along(*direction, points, q));
+        best = std::max(best, points_gap_along(*direction, points.data(), points.size(), q));
         if (best > enough) return best;
     }
     *direction = hull_closest_direction(points.data(), static_cast<int>(points.size()), q);
-    return std::max(best, points_gap_along(*direction, points, q));
+    return std::max(best, points_gap_along(*direction, points.data(), points.size(), q));
 }
 
 }  // namespace hullkit::route_detail

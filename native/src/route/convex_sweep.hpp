@@ -12,12 +12,41 @@
 // route checker's tolerance, and never decide a contact with it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "bvh.hpp"
 #include "motion.hpp"
 
 namespace hullkit::route_detail {
+
+/// The interval {lo, hi} the points a[0..count) cover along n (lo = inf, hi = -inf without
+/// points).
+inline std::pair<double, double> extent_along(const Vec& n, const Vec* a, std::size_t count) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t k = 0; k < count; ++k) {
+        lo = std::min(lo, glm::dot(n, a[k]));
+        hi = std::max(hi, glm::dot(n, a[k]));
+    }
+    return {lo, hi};
+}
+
+inline std::pair<double, double> extent_along(const Vec& n, const std::vector<Vec>& points) {
+    return extent_along(n, points.data(), points.size());
+}
+
+/// The gap along direction n between the points a[0..count) and triangle q: their distance along
+/// the unit direction, negative when they overlap along it, -inf for a zero or non-finite n.
+inline double points_gap_along(const Vec& n, const Vec* a, std::size_t count, const Vec* q) {
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) return -std::numeric_limits<double>::infinity();
+    const auto [lo, hi] = extent_along(n, a, count);
+    const auto [qlo, qhi] = extent_along(n, q, 3);
+    return std::max(qlo - hi, lo - qhi) / len;
+}
 
 /// At most this many face normals and edge directions of a part's hull serve as axes.
 constexpr std::size_t kConvexAxes = 8;

@@ -101,67 +101,21 @@ bool dual_walk(const Bvh& part_bvh, const Bvh& obstacles, NodePairs& stack, Node
     return false;
 }
 
-/// Whether the direction n keeps the points a[0..3), b[0..3) more than `grow` (times |n|) away
-/// from triangle q, on either side; *gap gets the distance along the unit direction (negative when
-/// they overlap along it).
-bool apart_along(const Vec& n, const Vec* a, const Vec* b, const Vec* q, double grow, double* gap) {
-    const double len = glm::length(n);
-    if (!(len > 0.0) || !std::isfinite(len)) {
-        *gap = -kInf;
-        return false;
-    }
-    double lo = kInf, hi = -kInf;
-    for (int k = 0; k < 3; ++k) {
-        const double x = glm::dot(n, a[k]), y = glm::dot(n, b[k]);
-        lo = std::min({lo, x, y});
-        hi = std::max({hi, x, y});
-    }
-    const double q0 = glm::dot(n, q[0]), q1 = glm::dot(n, q[1]), q2 = glm::dot(n, q[2]);
-    const double qlo = std::min({q0, q1, q2}), qhi = std::max({q0, q1, q2});
-    *gap = std::max(qlo - hi, lo - qhi) / len;
-    return *gap > grow;
-}
-
-/// The largest gap found between the hull of a[0..3) u b[0..3) (a triangle's two end poses; the
-/// six points are contiguous) and triangle q along the candidate directions: q's normal, the end
-/// poses' normals, and the direction between the hull's and q's closest points (GJK). Any
-/// direction's gap is a lower bound of the true distance. Stops as soon as a gap exceeds `enough`.
-double hull_gap(const Vec* a, const Vec* b, const Vec* q, double enough) {
-    double best = -kInf, gap;
+/// The largest gap found between the hull of p[0..6) (a triangle's two end poses, 3 points each)
+/// and triangle q along the candidate directions: q's normal, the end poses' normals, and the
+/// direction between the hull's and q's closest points (GJK). Any direction's gap is a lower
+/// bound of the true distance. Stops as soon as a gap exceeds `enough`.
+double hull_gap(const Vec* p, const Vec* q, double enough) {
+    double best = -kInf;
     auto consider = [&](const Vec& n) {
-        if (apart_along(n, a, b, q, enough, &gap)) return true;
-        best = std::max(best, gap);
-        return false;
+        best = std::max(best, points_gap_along(n, p, 6, q));
+        return best > enough;
     };
-    if (consider(glm::cross(q[1] - q[0], q[2] - q[1]))) return gap;
-    if (consider(glm::cross(a[1] - a[0], a[2] - a[0]))) return gap;
-    if (consider(glm::cross(b[1] - b[0], b[2] - b[0]))) return gap;
-    if (consider(hull_closest_direction(a, 6, q))) return gap;
+    if (consider(glm::cross(q[1] - q[0], q[2] - q[1]))) return best;
+    if (consider(glm::cross(p[1] - p[0], p[2] - p[0]))) return best;
+    if (consider(glm::cross(p[4] - p[3], p[5] - p[3]))) return best;
+    consider(hull_closest_direction(p, 6, q));
     return best;
-}
-
-/// Visits visit(item) for the items in the leaves of `tree` under nodes that skip(node index)
-/// does not rule out (skip is asked again at every node: its bound may change as the visits go);
-/// stops when visit returns false.
-template <typename Skip, typename Visit>
-void walk_tree(const Bvh& tree, Skip&& skip, Visit&& visit) {
-    if (tree.nodes.empty()) return;
-    std::uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const std::uint32_t n = stack[--top];
-        if (skip(n)) continue;
-        const BvhNode& node = tree.nodes[n];
-        if (node.count == 0) {
-            stack[top++] = node.first;
-            stack[top++] = node.first + 1;
-            continue;
-        }
-        for (std::uint32_t item = node.first; item < node.first + node.count; ++item) {
-            if (!visit(item)) return;
-        }
-    }
 }
 
 /// The box of a triangle's 6 end-pose vertices (p[0..6)).
@@ -203,7 +157,7 @@ void walk_near(const Bvh& obstacles, const ConvexSweep& sweep, const double& cut
     }
 }
 
-/// Entries of a convex part's cache of separating directions (a power of two).
+/// Entries of a part's cache of separating directions (a power of two).
 constexpr std::size_t kDirectionCache = 256;
 /// A failed interval keeps its nearby obstacle triangles for its pieces when there are at most
 /// this many.
@@ -254,7 +208,7 @@ struct TurnState {
 
     explicit TurnState(const LegMotion& m) : motion(m) {}
 
-    /// A convex part's sweep over the interval (cached per interval).
+    /// The part's hull's sweep over the interval (cached per interval).
     const ConvexSweep& sweep_of(const Part& part, PerPart& pp) {
         if (pp.sweep_stamp != stamp) {
             pp.sweep_stamp = stamp;
@@ -365,7 +319,7 @@ bool RouteChecker::Impl::turn_certify(TurnState& st, std::size_t pi) const {
                   [&](std::uint32_t ps) {
             const Vec* p = st.placed(part, pp, ps);
             const double g = st.motion.deviation(pp.tri_radius[ps], span) + margin + st.tol;
-            if (!swept_box(p).inflated(g).overlaps(qbox) || hull_gap(p, p + 3, q, g) > g) return true;
+            if (!swept_box(p).inflated(g).overlaps(qbox) || hull_gap(p, q, g) > g) return true;
             st.part_slot = ps;
             return kept_apart = false;
         });
@@ -612,7 +566,7 @@ double RouteChecker::Impl::turn_lower_bound(TurnState& st, std::size_t pi, doubl
             const Vec* p = st.placed(part, pp, ps);
             const double g = st.motion.deviation(pp.tri_radius[ps], span) + st.tol;
             const double box_bound = swept_box(p).inflated(g).distance(qbox);
-            if (box_bound < least) least = std::min(least, std::max({box_bound, hull_gap(p, p + 3, q, least + g) - g, 0.0}));
+            if (box_bound < least) least = std::min(least, std::max({box_bound, hull_gap(p, q, least + g) - g, 0.0}));
             return true;
         });
         return least;
