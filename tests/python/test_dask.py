@@ -2,6 +2,7 @@
 equals hullkit.hull of the whole cloud bit for bit (Dask arrays and lists of files), route
 batches equal local checks, and a worker killed mid-job changes nothing (Dask recomputes what
 was lost)."""
+import json
 import os
 import signal
 import time
@@ -59,6 +60,25 @@ def test_files_hull_equals_the_hull_of_their_concatenation(client, tmp_path):
     np.testing.assert_array_equal(result.points, whole[result.index])
 
 
+def test_files_with_the_same_points_keep_the_lowest_global_index(client, tmp_path):
+    # Files are merged before all their counts are known; identical points in different files
+    # (a grid, written whole into each file, shuffled) must still resolve to the lowest index
+    # of the whole, as hullkit.hull of the concatenation does, for every reduction shape.
+    grid = np.stack(np.meshgrid(*[np.arange(6.0)] * 3, indexing="ij"), axis=-1).reshape(-1, 3)
+    rng = np.random.default_rng(5)
+    parts = [rng.permutation(grid) for _ in range(7)] + [grid[:1]]
+    paths = []
+    for k, part in enumerate(parts):
+        path = tmp_path / f"grid-{k}.xyz"
+        np.savetxt(path, part, fmt="%.17g")
+        paths.append(str(path))
+    whole = np.concatenate(parts)
+    for fan_in in (2, 3, 16):
+        result = hullkit.dask.hull(paths, client=client, fan_in=fan_in)
+        assert result.point_count == len(whole)
+        same_hull(result, hullkit.hull(whole))
+
+
 def test_flat_and_degenerate_partitions(client):
     flat = np.random.default_rng(3).random((40000, 3))
     flat[:, 2] = 1.5
@@ -90,6 +110,37 @@ def test_route_batches_equal_local_checks(client):
     bad = {"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": [], "margn": 1}
     with pytest.raises(hullkit.HullkitError, match="margn"):  # raised on a worker, with the core's message
         hullkit.dask.check_routes(bad, routes[:3], client=client)
+
+
+def test_route_batches_with_a_gltf_whose_buffer_is_a_file(client, tmp_path):
+    # The traverse is a .gltf in a subfolder whose vertex and index data are in a .bin beside
+    # it: both files are read here and sent with the scene (workers have no files).
+    corners = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype="<f4")
+    faces = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                      [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]], dtype="<u2")
+    data = corners.tobytes() + faces.tobytes()
+    (tmp_path / "parts").mkdir()
+    (tmp_path / "parts" / "box.bin").write_bytes(data)
+    gltf = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 1]},
+                          {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}],
+            "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+            "buffers": [{"uri": "box.bin", "byteLength": len(data)}]}
+    (tmp_path / "parts" / "box.gltf").write_text(json.dumps(gltf))
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"traverse": {"parts": [{"mesh": "parts/box.gltf"}]},
+                                 "obstacles": [{"box": {"min": [4, -5, -5], "max": [4.2, 5, 5]}}]}))
+    routes = [np.array([[0.0, 0, 0], [10, 0, 0]]), np.array([[0.0, 2, 0], [0, 8, 0]]), np.array([[0.0, 0, 0], [2.5, 0, 0]])]
+    checker = hullkit.RouteChecker(str(scene))
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    expected = [strip(checker.check(route)) for route in routes]
+    assert [r["clear"] for r in expected] == [False, True, True]
+    for _ in range(2):  # the second call reuses the scene on the workers
+        assert [strip(r) for r in hullkit.dask.check_routes(str(scene), routes, client=client)] == expected
+    (tmp_path / "parts" / "box.bin").unlink()
+    with pytest.raises(hullkit.HullkitError, match="box.bin: cannot open"):
+        hullkit.dask.check_routes(str(scene), routes, client=client)
 
 
 def test_a_worker_killed_mid_job_changes_nothing(client):

@@ -158,6 +158,7 @@ public:
 
 private:
     bool add_points(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices);
+    bool add_step(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices, unsigned threads);
 
     HullOptions options_;
     std::vector<double> xyz_;           // the kept points, ascending global index

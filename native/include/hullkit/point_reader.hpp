@@ -29,8 +29,10 @@ struct PointReaderOptions {
     /// The WebAssembly build always uses the calling thread. The results never depend on it.
     unsigned threads = 0;
     /// Text read and parsed per batch (a PLY: about this many bytes of records). The reader holds
-    /// about one batch of text plus its points (24 bytes a point) at a time.
-    std::size_t batch_bytes = std::size_t{32} << 20;
+    /// about one batch of text plus its points (24 bytes a point) at a time. A batch that stays
+    /// in the caches is read faster: 6.25e6 points of binary PLY took 0.6-0.9 s in batches of
+    /// 32 MB and 0.16-0.3 s in batches of 4 MB.
+    std::size_t batch_bytes = std::size_t{4} << 20;
     /// true: only the text formats of parse_points (xyz, rbox, OBJ, OFF), with its messages for
     /// PLY, STL and binary data; false: every format hullkit::read_points reads.
     bool text_only = false;

@@ -30,10 +30,45 @@ bool HullBuilder::add(PointSpan points, std::uint64_t first_index) { return add_
 
 bool HullBuilder::add_indexed(PointSpan points, const std::uint64_t* indices) { return add_points(points, 0, indices); }
 
+namespace {
+
+/// On one thread, a large piece is taken this many points at a time, so that the hull of each
+/// step's union stays in the caches: 6.25e6 points in a ball took 2.2-2.8 s as one piece and
+/// 0.8-1.1 s in steps of 2^19. On threads, a piece's candidates already come from chunks hulled
+/// on the threads, and steps only repeat their fixed costs (16 files of 6e6 points streamed on
+/// 2 threads: 9.4-12.5 s whole, 12.3-14 s in steps of 2^20).
+constexpr std::size_t kStep = std::size_t{1} << 19;
+
+}  // namespace
+
 bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices) {
     if (!error_.empty()) return false;
     if (points.count == 0) return true;
     const unsigned threads = detail::resolve_threads(options_.threads);
+    const std::size_t step = kStep;
+    if (threads == 1 && points.count >= 2 * step) {
+        // Steps, while the hull keeps few of the points. A cloud whose points are mostly on its
+        // hull (a sphere) keeps them all, and every step would hull everything kept so far
+        // again: once a step adds more than an eighth of its size to the kept points, the rest is taken
+        // at once. The result is the same either way (the hull of everything added).
+        std::size_t begin = 0;
+        while (begin < points.count) {
+            const std::size_t kept_before = ids_.size();
+            const std::size_t size = points.count - begin < 2 * step ? points.count - begin : step;
+            const PointSpan part(points[begin], size);
+            if (!add_step(part, indices ? 0 : first_index + begin, indices ? indices + begin : nullptr, threads)) return false;
+            begin += size;
+            if (begin < points.count && 8 * (ids_.size() - std::min(ids_.size(), kept_before)) > size) {
+                return add_step(PointSpan(points[begin], points.count - begin), indices ? 0 : first_index + begin,
+                                indices ? indices + begin : nullptr, threads);
+            }
+        }
+        return true;
+    }
+    return add_step(points, first_index, indices, threads);
+}
+
+bool HullBuilder::add_step(PointSpan points, std::uint64_t first_index, const std::uint64_t* indices, unsigned threads) {
     detail::Magnitudes range{largest_, smallest_};
     Hull check = detail::scan_magnitudes(points, first_index, indices, threads, &range);
     int exponent = 0;
