@@ -14,6 +14,9 @@ def random_clouds():
     ball = rng.normal(size=(3000, 3))
     ball /= np.linalg.norm(ball, axis=1)[:, None]
     ball *= rng.random(3000)[:, None] ** (1 / 3)
+    # An apex with 300 neighbours over a flat base: the neighbours' path for a corner of high degree.
+    angles = np.sort(rng.random(300)) * 2 * np.pi
+    cone = np.vstack([np.column_stack([np.cos(angles), np.sin(angles), np.zeros(300)]), [[0.1, 0.2, 1.0]]])
     return {
         "cube": rng.random((2000, 3)),
         "ball": ball,
@@ -22,6 +25,7 @@ def random_clouds():
         "tiny": rng.random((500, 3)) * 1e-9,
         "few": rng.random((5, 3)),
         "float32 Fortran": np.asfortranarray(rng.random((800, 3)).astype(np.float32)),
+        "cone": cone,
     }
 
 
