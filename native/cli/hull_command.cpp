@@ -377,9 +377,9 @@ int hullkit_cli::run_hull(std::vector<std::string> argv) {
         const std::uint64_t size = reader.size();
         // Address space for the points the header declares or the file could hold, up to a
         // piece and the batch that completes it (no point line is shorter than 6 bytes), so that
-        // the array does not grow by copies: with several inputs, a copy held the old array and
-        // a new one of twice its size, and 16 files of 6e6 points took 403 MB under --memory 300.
-        // Pages are touched as points arrive.
+        // the array never grows by a copy, which would hold the old array and one of twice its
+        // size at once (with several inputs, each used to add a piece's worth). Pages are
+        // touched as points arrive.
         const std::uint64_t expected = reader.declared_points() ? reader.declared_points() : size ? size / 6 + 1 : 0;
         const std::uint64_t batch_points = reading.batch_bytes / 6 + 1;
         points.reserve(3 * static_cast<std::size_t>(std::min(points.size() / 3 + expected, whole_limit + batch_points)));

@@ -45,16 +45,15 @@ bool HullBuilder::add_points(PointSpan points, std::uint64_t first_index, const 
     if (!error_.empty()) return false;
     if (points.count == 0) return true;
     const unsigned threads = detail::resolve_threads(options_.threads);
-    const std::size_t step = kStep;
-    if (threads == 1 && points.count >= 2 * step) {
+    if (threads == 1 && points.count >= 2 * kStep) {
         // Steps, while the hull keeps few of the points. A cloud whose points are mostly on its
         // hull (a sphere) keeps them all, and every step would hull everything kept so far
-        // again: once a step adds more than an eighth of its size to the kept points, the rest is taken
-        // at once. The result is the same either way (the hull of everything added).
+        // again: once a step adds more than an eighth of its size to the kept points, the rest
+        // is taken at once. The result is the same either way (the hull of everything added).
         std::size_t begin = 0;
         while (begin < points.count) {
             const std::size_t kept_before = ids_.size();
-            const std::size_t size = points.count - begin < 2 * step ? points.count - begin : step;
+            const std::size_t size = points.count - begin < 2 * kStep ? points.count - begin : kStep;
             const PointSpan part(points[begin], size);
             if (!add_step(part, indices ? 0 : first_index + begin, indices ? indices + begin : nullptr, threads)) return false;
             begin += size;
