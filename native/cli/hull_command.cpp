@@ -356,12 +356,14 @@ int hullkit_cli::run_hull(std::vector<std::string> argv) {
         added += points.size() / 3;
         points.clear();  // the capacity stays for the next piece
         streaming = true;
-#if defined(__GLIBC__) && __GLIBC_PREREQ(2, 33)
+#if defined(__GLIBC__)  // nested: elsewhere the function-like __GLIBC_PREREQ does not exist
+#if __GLIBC_PREREQ(2, 33)
         // Freed memory goes back to the system once it is a quarter of the budget. glibc keeps
         // freed blocks below its (adaptive) mmap threshold for reuse, and across pieces they
         // fragment: on one thread, 16 files of 6e6 points peaked at 466 MB under --memory 300
         // (140 MB live), and 182 MB with this.
         if (mallinfo2().fordblks > budget / 4) malloc_trim(0);
+#endif
 #endif
     };
     std::vector<std::pair<std::string, std::vector<std::string>>> warnings;  // per input, printed at the end
