@@ -51,6 +51,17 @@ py::array_t<double> owned_points(std::vector<double>&& xyz, py::ssize_t dims = 3
     return owned(std::move(xyz), {n, dims});
 }
 
+/// Threads that are joined however the scope is left (an exception such as bad_alloc included:
+/// a std::thread destroyed unjoined ends the process).
+struct JoinedThreads {
+    std::vector<std::thread> threads;
+    ~JoinedThreads() {
+        for (std::thread& t : threads) {
+            if (t.joinable()) t.join();
+        }
+    }
+};
+
 struct CoreError : std::runtime_error {
     CoreError(const std::string& message, std::int64_t point_) : std::runtime_error(message), point(point_) {}
     std::int64_t point;
@@ -162,7 +173,8 @@ py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, 
         py::gil_scoped_release unlocked;
         // The planes on a second thread, the neighbours on this one (the two write apart; each
         // value is computed the same way whichever thread computes it).
-        std::thread planes([&] {
+        JoinedThreads planes;
+        planes.threads.emplace_back([&] {
             for (std::size_t t = 0; t < m; ++t) {
                 const double* a = xyz + 3 * v[3 * t];
                 const double* b = xyz + 3 * v[3 * t + 1];
@@ -177,10 +189,6 @@ py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, 
                 out[3] = -(normal[0] * a[0] + normal[1] * a[1] + normal[2] * a[2]);
             }
         });
-        struct Joined {  // joined on every way out, an exception (bad_alloc) included
-            std::thread& thread;
-            ~Joined() { if (thread.joinable()) thread.join(); }
-        } joined{planes};
         // The half-edges grouped by their lower corner (a counting sort: one pass to count, one
         // to place, in ascending half-edge order), then within each corner's few by the higher
         // corner (stable): a half-edge and its reverse are then neighbours in the order, as in a
@@ -338,10 +346,9 @@ public:
             // threads in blocks of rows (each row is written once, so any split gives the same).
             py::gil_scoped_release unlocked;
             const std::size_t parts = m < (std::size_t{1} << 16) ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 4);
-            std::vector<std::thread> workers;
-            for (std::size_t k = 1; k < parts; ++k) workers.emplace_back(fill, m * k / parts, m * (k + 1) / parts);
+            JoinedThreads workers;
+            for (std::size_t k = 1; k < parts; ++k) workers.threads.emplace_back(fill, m * k / parts, m * (k + 1) / parts);
             fill(0, m / parts);
-            for (std::thread& w : workers) w.join();
         }
         return py::make_tuple(simplices, neighbors);
     }
