@@ -83,7 +83,9 @@ _allocator_lock = threading.Lock()
 _allocator_users = 0
 
 
+@functools.lru_cache(maxsize=None)
 def _glibc():
+    """The C library when it is glibc (looked up once per process), else None."""
     try:
         libc = ctypes.CDLL(None)
         return libc if hasattr(libc, "mallopt") and hasattr(libc, "malloc_trim") and hasattr(libc, "gnu_get_libc_version") else None
