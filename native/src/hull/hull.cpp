@@ -258,21 +258,25 @@ void fill_from_polygons(std::size_t point_count, const Polygons& faces, Hull& hu
     hull.triangles.clear();
     const std::size_t size = 3 * (faces.vertices.size() - 2 * faces.size());
     detail::reserve_large(hull.triangles, size);
-    hull.triangles.resize(size);
-    constexpr std::size_t kBlock = std::size_t{1} << 16;
-    detail::parallel_for(threads, (faces.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
-        const std::size_t end = std::min(faces.size(), (block + 1) * kBlock);
-        for (std::size_t f = block * kBlock; f < end; ++f) {
-            const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
-            const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
-            std::uint32_t* out = &hull.triangles[3 * (faces.offsets[f] - 2 * f)];
-            for (std::size_t k = 1; k + 1 < m; ++k, out += 3) {
-                out[0] = corners[0];
-                out[1] = corners[k];
-                out[2] = corners[k + 1];
+    if (size == faces.vertices.size()) {  // every face a triangle: the fans are the faces
+        hull.triangles.assign(faces.vertices.begin(), faces.vertices.end());
+    } else {
+        hull.triangles.resize(size);
+        constexpr std::size_t kBlock = std::size_t{1} << 16;
+        detail::parallel_for(threads, (faces.size() + kBlock - 1) / kBlock, [&](std::size_t block) {
+            const std::size_t end = std::min(faces.size(), (block + 1) * kBlock);
+            for (std::size_t f = block * kBlock; f < end; ++f) {
+                const std::uint32_t* corners = &faces.vertices[faces.offsets[f]];
+                const std::size_t m = faces.offsets[f + 1] - faces.offsets[f];
+                std::uint32_t* out = &hull.triangles[3 * (faces.offsets[f] - 2 * f)];
+                for (std::size_t k = 1; k + 1 < m; ++k, out += 3) {
+                    out[0] = corners[0];
+                    out[1] = corners[k];
+                    out[2] = corners[k + 1];
+                }
             }
-        }
-    });
+        });
+    }
     if (faces.vertices.size() < point_count / 16) {  // few corners: sorting them is cheaper
         hull.vertices.assign(faces.vertices.begin(), faces.vertices.end());
         std::sort(hull.vertices.begin(), hull.vertices.end());
@@ -349,12 +353,13 @@ Hull lower_dimensional(PointSpan points, const Simplex& s, int exponent) {
 
 
 /// A hull with volume from its faces (counter-clockwise seen from outside) and their measures on
-/// points scaled by 2^exponent.
+/// points scaled by 2^exponent. `lowest_first`: each face already starts at its lowest index
+/// (canonical_order's faces).
 Hull polytope(std::size_t point_count, Polygons faces, double volume, double area, int exponent, bool merge_coplanar,
-              unsigned threads) {
+              unsigned threads, bool lowest_first) {
     Hull result;
     result.dimension = 3;
-    rotate_to_lowest(faces, threads);
+    if (!lowest_first) rotate_to_lowest(faces, threads);
     fill_from_polygons(point_count, faces, result, threads);
     unscale(exponent, volume, area, result);
     if (merge_coplanar) {
@@ -394,8 +399,9 @@ Hull hull_serial(PointSpan points, const HullOptions& options, int exponent, uns
             return detail::failure(error);
         }
     }
-
-    return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads);
+    // Quickhull's faces come in the canonical order, each from its lowest index; gift wrap's not.
+    const bool lowest_first = options.side_test != SideTest::Seed && options.algorithm != Algorithm::Giftwrap;
+    return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads, lowest_first);
 }
 
 /// Below this many points per thread, threads do not pay for themselves.
@@ -508,7 +514,7 @@ Hull hull_in_range(PointSpan input, const HullOptions& options, int exponent) {
         Polygons faces;
         double volume = 0.0, area = 0.0;
         if (surface_like && quickhull_split_faces(points, threads, faces, &volume, &area)) {
-            return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads);
+            return polytope(points.count, std::move(faces), volume, area, exponent, options.merge_coplanar, threads, true);
         }
         return hull_serial(points, options, exponent, threads, whole.dimension == -2 ? nullptr : &whole);
     }

@@ -10,6 +10,11 @@
 // How: arrays of at least kLargeArray bytes are allocated aligned to 2 MiB, rounded up to whole
 // 2 MiB pages, and marked MADV_HUGEPAGE; smaller ones come from operator new as usual. Elsewhere
 // (WebAssembly, other systems) every array comes from operator new.
+//
+// A LargeArray's resize(n) and LargeArray(n) leave the new elements unwritten (the allocator
+// default-initializes them): each such array is written in full by its owner before any read,
+// often on the threads, so a serial zero fill would only add a pass over fresh pages on one
+// thread. Sizing with an explicit value (resize(n, v), LargeArray(n, v), assign) writes it.
 #pragma once
 
 #include <cstddef>
@@ -17,6 +22,8 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__) && !defined(__EMSCRIPTEN__)
@@ -74,6 +81,19 @@ struct LargeArrayAllocator {
         } else {
             ::operator delete(memory);
         }
+    }
+
+    /// resize(n) and sized construction leave elements unwritten (default-initialized): every
+    /// working array is written in full before it is read, and those writes, often on the
+    /// threads, then touch its pages first, instead of a zero fill on one thread. An explicit
+    /// value (resize(n, 0), assign(n, v)) is written as usual.
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
     template <class U>

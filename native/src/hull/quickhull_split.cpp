@@ -157,8 +157,9 @@ public:
     enum class Verdict { Above, NoneAbove, Unsure };
 
     /// Whether some vertex lies strictly above `plane` (exactly), starting the climb at the
-    /// vertex *from leaves (updated to a half-edge out of where the climb ended, a good start for
-    /// a nearby plane). Unsure when rounding leaves it open: then the caller asks exhaustively.
+    /// vertex *from leaves (updated to a half-edge out of where the climb ended: the first vertex
+    /// found certainly above, or the top). Unsure when rounding leaves it open: then the caller
+    /// asks exhaustively.
     Verdict any_above(const Plane& plane, Index* from) const {
         Index h = *from;
         bool certain = false;
@@ -167,6 +168,10 @@ public:
             // neighbour is certainly higher (the rounding of n . (w - v) is below 8u of its
             // permanent, so `slack` = 2^-50 of it is safe).
             const double* p = points_[vertex(h)];
+            if (height(plane, p) > plane.bound) {  // certainly above (side_of's first test): done
+                *from = h;
+                return Verdict::Above;
+            }
             Index best = kNone;
             double best_rise = 0.0;
             bool unsure = false;
@@ -239,13 +244,13 @@ bool member_surface(PointSpan points, const std::vector<Index>& members, Surface
 }
 
 /// Marks the triangles of `surface` that some vertex of `other` (the other half's hull) lies
-/// strictly above: by climbing the other hull from one triangle's answer to the next, and where
-/// rounding leaves that open, by a box tree over the other hull's vertices (built on first need).
-/// The dirty triangles are connected, so the search starts from one of them and only the dirty
-/// ones and their neighbours are asked. False if no triangle has `other`'s first vertex above it,
-/// which cannot happen for halves strictly apart.
+/// strictly above, and lists them in `found`: by climbing the other hull from one triangle's
+/// answer to the next, and where rounding leaves that open, by a box tree over the other hull's
+/// vertices (built on first need). The dirty triangles are connected, so the search starts from
+/// one of them and only the dirty ones and their neighbours are asked. False if no triangle has
+/// `other`'s first vertex above it, which cannot happen for halves strictly apart.
 bool mark_dirty(PointSpan points, const Surface& surface, const Surface& other, double extent,
-                std::vector<std::uint8_t>& dirty) {
+                std::vector<std::uint8_t>& dirty, std::vector<std::size_t>& found) {
     const std::size_t count = surface.size();
     dirty.assign(count, 0);
     const Climber climber(points, other);
@@ -292,39 +297,61 @@ bool mark_dirty(PointSpan points, const Surface& surface, const Surface& other, 
     std::vector<std::pair<std::size_t, Index>> queue{{seed, Climber::start()}};  // a dirty triangle, where to climb from
     seen[seed] = 1;
     dirty[seed] = 1;
+    // A climb starts where its dirty neighbour's ended (a vertex above that triangle's plane),
+    // or at the top found for the last clean triangle, whichever is higher above this plane: the
+    // clean ones ring the dirty region, and a clean triangle's top is near its clean
+    // neighbours'. (Measured on a sphere of 1e6 points: 15 000 steps, from 96 000 with every
+    // climb going to the top from its neighbour's.)
+    Index last_clean = kNone;
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const auto [t, from] = queue[q];
         for (int k = 0; k < 3; ++k) {
             const std::size_t u = surface.twins[3 * t + k] / 3;
             if (seen[u]) continue;
             seen[u] = 1;
+            const Plane p = plane(u);
             Index start = from;
-            if (above(plane(u), &start)) {
+            if (last_clean != kNone &&
+                height(p, points[climber.vertex(last_clean)]) > height(p, points[climber.vertex(from)])) {
+                start = last_clean;
+            }
+            if (above(p, &start)) {
                 dirty[u] = 1;
                 queue.emplace_back(u, start);
+            } else {
+                last_clean = start;
             }
         }
     }
+    found.clear();
+    found.reserve(queue.size());
+    for (const auto& entry : queue) found.push_back(entry.first);
     return true;
 }
 
 /// Joins the hulls of two halves that lie strictly on either side of a plane (indices into
-/// `points`) into the hull of their union. False when it cannot (the caller falls back).
-bool join(PointSpan points, const Surface (&half)[2], double extent, unsigned threads, Surface& out) {
+/// `points`) into the hull of their union. False when it cannot (the caller falls back). With
+/// `pairs`, the result's coplanar neighbours go there and out's twins and flags stay empty (what
+/// the last join's caller needs); else they are in `out`. The passes over each half's triangles
+/// run on a thread per half (they write disjoint rows of `out`).
+bool join(PointSpan points, const Surface (&half)[2], double extent, unsigned threads, Surface& out,
+          std::vector<CoplanarPair>* pairs) {
     std::vector<std::uint8_t> dirty[2];
+    std::vector<std::size_t> dirty_list[2];
     bool found[2] = {false, false};
-    parallel_for(threads, 2, [&](std::size_t s) { found[s] = mark_dirty(points, half[s], half[1 - s], extent, dirty[s]); });
+    parallel_for(threads, 2, [&](std::size_t s) {
+        found[s] = mark_dirty(points, half[s], half[1 - s], extent, dirty[s], dirty_list[s]);
+    });
     if (!found[0] || !found[1]) return false;
 
     // The seam: the corners of the dirty triangles of both halves (apart, so no repeats), and
     // their hull.
-    std::vector<Index> seam = corners_of(half[0], points.count, &dirty[0]);
-    {
-        const std::vector<Index> more = corners_of(half[1], points.count, &dirty[1]);
-        std::vector<Index> both;
-        std::merge(seam.begin(), seam.end(), more.begin(), more.end(), std::back_inserter(both));
-        seam = std::move(both);
+    std::vector<Index> seam;
+    for (int s = 0; s < 2; ++s) {
+        for (std::size_t t : dirty_list[s]) seam.insert(seam.end(), &half[s].triangles[3 * t], &half[s].triangles[3 * t] + 3);
     }
+    std::sort(seam.begin(), seam.end());
+    seam.erase(std::unique(seam.begin(), seam.end()), seam.end());
     Surface cap;
     if (!member_surface(points, seam, cap)) return false;
     std::unordered_map<std::uint64_t, Index> cap_edge;  // directed edge u -> v: its half-edge in cap
@@ -335,41 +362,84 @@ bool join(PointSpan points, const Surface (&half)[2], double extent, unsigned th
         cap_edge.emplace(std::uint64_t{u} << 32 | v, static_cast<Index>(h));
     }
 
-    // Number the kept triangles: clean ones of each half, then the cap's between the rims.
-    const std::size_t n0 = half[0].size(), n1 = half[1].size();
-    std::vector<Index> number[2] = {std::vector<Index>(n0, kNone), std::vector<Index>(n1, kNone)};
-    Index kept = 0;
-    for (int s = 0; s < 2; ++s) {
-        for (std::size_t t = 0; t < half[s].size(); ++t) {
-            if (!dirty[s][t]) number[s][t] = kept++;
+    // The kept triangles: the clean ones of half 0, of half 1, then the cap's between the rims.
+    // Each half, on its own thread, numbers its clean triangles and writes their rows; a rim
+    // edge (a clean triangle's edge whose neighbour is dirty) is left open and listed with the
+    // cap half-edge that is its reverse, whose triangle lies between the rims. Each half marks
+    // its corners in its own array (the halves share no point), for the count of vertices.
+    const bool links = pairs == nullptr;
+    const Index base[2] = {0, static_cast<Index>(half[0].size() - dirty_list[0].size())};
+    const std::size_t clean = base[1] + (half[1].size() - dirty_list[1].size());
+    out.triangles.resize(3 * (clean + cap.size()));
+    out.twins.resize(links ? 3 * (clean + cap.size()) : 0);
+    out.flat.resize(links ? 3 * (clean + cap.size()) : 0);
+    std::vector<std::pair<Index, Index>> rims[2];  // (cap half-edge, the clean half-edge of out)
+    std::vector<CoplanarPair> half_pairs[2];
+    std::vector<std::uint8_t> corner[2];
+    bool rims_found[2] = {true, true};
+    parallel_for(threads, 2, [&](std::size_t s) {
+        const Surface& surface = half[s];
+        const std::vector<std::uint8_t>& is_dirty = dirty[s];
+        std::vector<Index> number(surface.size(), kNone);
+        Index next = base[s];
+        for (std::size_t t = 0; t < surface.size(); ++t) {
+            if (!is_dirty[t]) number[t] = next++;
         }
-    }
-    // Rim edges: a clean triangle's edge whose neighbour is dirty. Its reverse is a cap edge,
-    // whose triangle lies between the rims; the search from there never crosses a rim edge.
-    std::vector<Index> rim_of_cap(cap.triangles.size(), kNone);  // cap half-edge -> the clean half-edge (global numbering)
+        corner[s].assign(points.count, 0);
+        for (std::size_t t = 0; t < surface.size(); ++t) {
+            if (is_dirty[t]) continue;
+            const std::size_t at = 3 * std::size_t{number[t]};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::size_t h = 3 * t + k;
+                const Index u = surface.triangles[h];
+                out.triangles[at + k] = u;
+                corner[s][u] = 1;
+                const Index other = surface.twins[h];
+                if (is_dirty[other / 3]) {  // a rim edge: linked from the cap below
+                    const Index v = surface.triangles[3 * t + (k + 1) % 3];
+                    const auto it = cap_edge.find(std::uint64_t{v} << 32 | u);
+                    if (it == cap_edge.end()) {
+                        rims_found[s] = false;
+                        return;
+                    }
+                    rims[s].emplace_back(it->second, static_cast<Index>(at + k));
+                    if (links) {
+                        out.twins[at + k] = kNone;
+                        out.flat[at + k] = 0;
+                    }
+                    continue;
+                }
+                if (links) {
+                    out.twins[at + k] = 3 * number[other / 3] + other % 3;
+                    out.flat[at + k] = surface.flat[h];
+                } else if (surface.flat[h] && number[t] < number[other / 3]) {
+                    half_pairs[s].push_back({number[t], number[other / 3]});
+                }
+            }
+        }
+    });
+    if (!rims_found[0] || !rims_found[1]) return false;
+    std::vector<Index> rim_of_cap(cap.triangles.size(), kNone);  // cap half-edge -> the clean half-edge of out
     std::vector<std::uint8_t> in_bridge(cap.size(), 0);
     std::vector<std::size_t> queue;
     for (int s = 0; s < 2; ++s) {
-        const Surface& surface = half[s];
-        for (std::size_t h = 0; h < surface.triangles.size(); ++h) {
-            const std::size_t t = h / 3;
-            if (dirty[s][t] || !dirty[s][surface.twins[h] / 3]) continue;
-            const Index u = surface.triangles[h], v = surface.triangles[3 * t + (h + 1) % 3];
-            const auto it = cap_edge.find(std::uint64_t{v} << 32 | u);
-            if (it == cap_edge.end() || rim_of_cap[it->second] != kNone) return false;
-            rim_of_cap[it->second] = 3 * number[s][t] + static_cast<Index>(h % 3);
-            const std::size_t g = it->second / 3;
+        for (const auto& [cap_half_edge, clean_half_edge] : rims[s]) {
+            if (rim_of_cap[cap_half_edge] != kNone) return false;
+            rim_of_cap[cap_half_edge] = clean_half_edge;
+            const std::size_t g = cap_half_edge / 3;
             if (!in_bridge[g]) {
                 in_bridge[g] = 1;
                 queue.push_back(g);
             }
         }
     }
+    Index kept = static_cast<Index>(clean);
     if (queue.empty()) {  // nothing clean on either side: the hull is the cap itself
         if (kept != 0) return false;
         std::fill(in_bridge.begin(), in_bridge.end(), 1);
         for (std::size_t g = 0; g < cap.size(); ++g) queue.push_back(g);
     }
+    // The cap's triangles between the rims: a search from the rims' cap edges, never crossing one.
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const std::size_t g = queue[q];
         for (int k = 0; k < 3; ++k) {
@@ -386,65 +456,74 @@ bool join(PointSpan points, const Surface (&half)[2], double extent, unsigned th
     for (std::size_t g = 0; g < cap.size(); ++g) {
         if (in_bridge[g]) cap_number[g] = kept++;
     }
-
-    // The joined surface, its neighbours and which are coplanar.
-    out.triangles.assign(3 * std::size_t{kept}, kNone);
-    out.twins.assign(3 * std::size_t{kept}, kNone);
-    out.flat.assign(3 * std::size_t{kept}, 0);
-    for (int s = 0; s < 2; ++s) {
-        const Surface& surface = half[s];
-        for (std::size_t t = 0; t < surface.size(); ++t) {
-            if (dirty[s][t]) continue;
-            const std::size_t at = 3 * std::size_t{number[s][t]};
-            for (int k = 0; k < 3; ++k) {
-                out.triangles[at + k] = surface.triangles[3 * t + k];
-                const Index other = surface.twins[3 * t + k];
-                if (dirty[s][other / 3]) continue;  // a rim edge: linked from the cap below
-                out.twins[at + k] = 3 * number[s][other / 3] + other % 3;
-                out.flat[at + k] = surface.flat[3 * t + k];
-            }
-        }
-    }
+    // The cap's rows. The result is closed: the halves are, their clean triangles keep their
+    // neighbours, each rim edge has its own cap half-edge (checked above), and each other
+    // half-edge of the bridge has a twin in the bridge that is no rim's (checked here).
+    std::vector<CoplanarPair> cap_pairs;
+    std::vector<Index> cap_only;  // bridge corners that no clean triangle has
     for (std::size_t g = 0; g < cap.size(); ++g) {
         if (!in_bridge[g]) continue;
         const std::size_t at = 3 * std::size_t{cap_number[g]};
         for (int k = 0; k < 3; ++k) {
             const std::size_t h = 3 * g + k;
             out.triangles[at + k] = cap.triangles[h];
+            if (!corner[0][cap.triangles[h]] && !corner[1][cap.triangles[h]]) cap_only.push_back(cap.triangles[h]);
             if (const Index rim = rim_of_cap[h]; rim != kNone) {
                 // Across a rim: coplanar when the cap triangle's far corner is in the clean
                 // triangle's plane (exactly).
-                out.twins[at + k] = rim;
-                out.twins[rim] = static_cast<Index>(at + k);
-                const Index* clean = &out.triangles[3 * (rim / 3)];
+                const Index* clean_corners = &out.triangles[3 * (rim / 3)];
                 const Index apex = cap.triangles[3 * g + (k + 2) % 3];
-                const std::uint8_t flat = orient3d(points[clean[0]], points[clean[1]], points[clean[2]], points[apex]) == 0;
-                out.flat[at + k] = flat;
-                out.flat[rim] = flat;
+                const std::uint8_t flat =
+                    orient3d(points[clean_corners[0]], points[clean_corners[1]], points[clean_corners[2]], points[apex]) == 0;
+                if (links) {
+                    out.twins[at + k] = rim;
+                    out.twins[rim] = static_cast<Index>(at + k);
+                    out.flat[at + k] = flat;
+                    out.flat[rim] = flat;
+                } else if (flat) {
+                    cap_pairs.push_back({rim / 3, cap_number[g]});
+                }
                 continue;
             }
             const Index other = cap.twins[h];
-            if (!in_bridge[other / 3]) return false;  // the search cannot stop at a non-rim edge
-            out.twins[at + k] = 3 * cap_number[other / 3] + other % 3;
-            out.flat[at + k] = cap.flat[h];
+            if (!in_bridge[other / 3] || rim_of_cap[other] != kNone) return false;
+            if (links) {
+                out.twins[at + k] = 3 * cap_number[other / 3] + other % 3;
+                out.flat[at + k] = cap.flat[h];
+            } else if (cap.flat[h] && cap_number[g] < cap_number[other / 3]) {
+                cap_pairs.push_back({cap_number[g], cap_number[other / 3]});
+            }
         }
     }
-    // A closed surface: every half-edge paired both ways, and a sphere (V - E + F = 2).
-    for (std::size_t h = 0; h < out.twins.size(); ++h) {
-        const Index other = out.twins[h];
-        if (other == kNone || out.twins[other] != h) return false;
+    out.triangles.resize(3 * std::size_t{kept});
+    if (links) {
+        out.twins.resize(3 * std::size_t{kept});
+        out.flat.resize(3 * std::size_t{kept});
+    } else {
+        pairs->clear();
+        for (const auto* list : {&half_pairs[0], &half_pairs[1], &cap_pairs}) pairs->insert(pairs->end(), list->begin(), list->end());
     }
-    const std::size_t vertices = corners_of(out, points.count).size();
+    // And a sphere: V - E + F = 2.
+    std::sort(cap_only.begin(), cap_only.end());
+    cap_only.erase(std::unique(cap_only.begin(), cap_only.end()), cap_only.end());
+    const std::size_t vertices = static_cast<std::size_t>(std::count(corner[0].begin(), corner[0].end(), 1)) +
+                                 static_cast<std::size_t>(std::count(corner[1].begin(), corner[1].end(), 1)) + cap_only.size();
     const std::size_t faces = out.size(), edges = 3 * faces / 2;
     return vertices + faces == edges + 2;
 }
 
 /// The hull of `members` (ascending indices into `points`) as a surface, on up to `threads`
 /// threads: split in two while there are threads to share and points to split, else quickhull.
+/// With `pairs`, the coplanar neighbours go there and out's twins and flags may be left empty.
 bool split_surface(PointSpan points, const std::vector<Index>& members, unsigned threads, double extent,
-                   Surface& out) {
+                   Surface& out, std::vector<CoplanarPair>* pairs = nullptr) {
     constexpr std::size_t kLeaf = std::size_t{1} << 14;
-    if (threads < 2 || members.size() < 2 * kLeaf) return member_surface(points, members, out);
+    auto whole = [&] {
+        if (!member_surface(points, members, out)) return false;
+        if (pairs) *pairs = coplanar_pairs(out);
+        return true;
+    };
+    if (threads < 2 || members.size() < 2 * kLeaf) return whole();
     double lo[3], hi[3];
     for (int axis = 0; axis < 3; ++axis) lo[axis] = hi[axis] = points[members[0]][axis];
     for (Index i : members) {
@@ -457,27 +536,32 @@ bool split_surface(PointSpan points, const std::vector<Index>& members, unsigned
     for (int a = 1; a < 3; ++a) {
         if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
     }
-    std::vector<double> values(members.size());
-    for (std::size_t k = 0; k < members.size(); ++k) values[k] = points[members[k]][axis];
+    // The cut: the median of an evenly spread sample of the coordinates (close enough to
+    // balance the halves; any cut that leaves both halves large enough gives the same hull).
+    constexpr std::size_t kSample = std::size_t{1} << 12;
+    const std::size_t stride = std::max<std::size_t>(1, members.size() / kSample);
+    std::vector<double> values;
+    values.reserve(members.size() / stride + 1);
+    for (std::size_t k = 0; k < members.size(); k += stride) values.push_back(points[members[k]][axis]);
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
     std::nth_element(values.begin(), middle, values.end());
     const double cut = *middle;  // below: the first half; at or above: the second
     std::vector<Index> part[2];
+    part[0].reserve(members.size());  // the pages beyond a half's size are never touched
+    part[1].reserve(members.size());
     for (Index i : members) part[points[i][axis] < cut ? 0 : 1].push_back(i);
-    if (part[0].size() < kLeaf || part[1].size() < kLeaf) return member_surface(points, members, out);
-    values = {};
+    if (part[0].size() < kLeaf || part[1].size() < kLeaf) return whole();
     Surface half[2];
     bool ok[2] = {false, false};
     const unsigned shares[2] = {(threads + 1) / 2, threads / 2};
     parallel_for(2, 2, [&](std::size_t s) { ok[s] = split_surface(points, part[s], shares[s], extent, half[s]); });
     if (!ok[0] || !ok[1]) return false;
-    return join(points, half, extent, threads, out);
+    return join(points, half, extent, threads, out, pairs);
 }
 
 }  // namespace
 }  // namespace quickhull_detail
 
-using quickhull_detail::coplanar_pairs;
 using quickhull_detail::Index;
 using quickhull_detail::kNone;
 using quickhull_detail::largest_span;
@@ -490,8 +574,9 @@ bool quickhull_split_faces(PointSpan points, unsigned threads, Polygons& faces, 
     std::vector<Index> all(points.count);
     for (std::size_t i = 0; i < points.count; ++i) all[i] = static_cast<Index>(i);
     Surface surface;
-    if (!split_surface(points, all, threads, extent, surface)) return false;
-    faces = merge_coplanar_triangles(points, std::move(surface.triangles), coplanar_pairs(surface));
+    std::vector<CoplanarPair> pairs;
+    if (!split_surface(points, all, threads, extent, surface, &pairs)) return false;
+    faces = merge_coplanar_triangles(points, std::move(surface.triangles), pairs);
     canonical_order(faces, {}, threads);
     measure(points, faces, volume, area, threads);
     return true;
