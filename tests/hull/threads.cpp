@@ -92,6 +92,11 @@ std::vector<double> load(const std::filesystem::path& file) {
 std::vector<std::pair<std::string, std::vector<double>>> large_clouds() {
     std::vector<std::pair<std::string, std::vector<double>>> clouds;
     clouds.emplace_back("ball", hullkit_test::random_cloud(Cloud::Ball, 200000, 1));
+    // Chunks of whole blocks of 2^18 points (hull.cpp's chunk_candidates), two of three blocks on
+    // 2 threads, one each on 3; and shuffled copies of a ball, whose identical points lie in
+    // different chunks (the lowest index must win).
+    clouds.emplace_back("ball of 6e5", hullkit_test::random_cloud(Cloud::Ball, 600000, 13));
+    clouds.emplace_back("ball, repeated", tiled(hullkit_test::random_cloud(Cloud::Ball, 60000, 14), 600000, 15));
     clouds.emplace_back("cube", hullkit_test::random_cloud(Cloud::Cube, 200000, 2));
     clouds.emplace_back("sphere", hullkit_test::random_cloud(Cloud::Sphere, 140000, 3));
     // Clouds mostly on their hull (the split-and-join path), with coplanar faces, repeats and
@@ -384,6 +389,7 @@ TEST_CASE("threads: every threaded path once, small enough for ThreadSanitizer",
     }
     const std::vector<std::pair<std::string, std::vector<double>>> clouds = {
         {"ball (chunks)", hullkit_test::random_cloud(Cloud::Ball, 40000, 51)},
+        {"ball (chunks of whole blocks)", hullkit_test::random_cloud(Cloud::Ball, 300000, 54)},
         {"cube (one quickhull, its passes over the points on threads)", hullkit_test::random_cloud(Cloud::Cube, 40000, 53)},
         {"sphere (split and join)", hullkit_test::random_cloud(Cloud::Sphere, 40000, 52)},
         {"lifted grid (split and join, coplanar)", lifted}};

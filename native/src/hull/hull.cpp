@@ -53,29 +53,17 @@ std::vector<std::uint32_t> distinct_points(PointSpan points) {
     return kept;
 }
 
-Simplex find_simplex(PointSpan points, unsigned threads) {
-    Simplex s;
+std::vector<Extremes> block_extremes(PointSpan points, unsigned threads) {
+    // Running values in locals: stores into a struct could alias the points, so the compiler
+    // would keep them in memory.
     const auto n = static_cast<std::uint32_t>(points.count);
-    if (n == 0) return s;
-    auto at = [&](std::uint32_t i) { return vec3(points[i]); };
-
-    // One pass: the extremes in 14 directions (lowest index on ties) and the bounding box, per
-    // block of points on the threads (running values in locals: stores into `s` could alias the
-    // points, so the compiler would keep them in memory), then the blocks in order: a later
-    // block wins only when strictly better, so ties still go to the lowest index.
-    struct Extremes {
-        double best_value[14];
-        std::uint32_t extreme_of[14];
-        double lo[3], hi[3];
-    };
-    constexpr std::size_t kBlock = std::size_t{1} << 18;
-    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    const std::size_t blocks = (n + kExtremesBlock - 1) / kExtremesBlock;
     std::vector<Extremes> found(blocks);
     parallel_for(threads, blocks, [&](std::size_t block) {
         Extremes e;
         for (int k = 0; k < 14; ++k) e.best_value[k] = -std::numeric_limits<double>::infinity(), e.extreme_of[k] = 0;
-        const std::uint32_t first = static_cast<std::uint32_t>(block * kBlock);
-        const std::uint32_t last = static_cast<std::uint32_t>(std::min<std::size_t>(n, (block + 1) * kBlock));
+        const std::uint32_t first = static_cast<std::uint32_t>(block * kExtremesBlock);
+        const std::uint32_t last = static_cast<std::uint32_t>(std::min<std::size_t>(n, (block + 1) * kExtremesBlock));
         for (int axis = 0; axis < 3; ++axis) e.lo[axis] = e.hi[axis] = points[first][axis];
         for (std::uint32_t i = first; i < last; ++i) {
             const double* p = points[i];
@@ -91,9 +79,14 @@ Simplex find_simplex(PointSpan points, unsigned threads) {
         }
         found[block] = e;
     });
-    Extremes all = found[0];
-    for (std::size_t block = 1; block < blocks; ++block) {
-        const Extremes& e = found[block];
+    return found;
+}
+
+Extremes merged_extremes(const std::vector<Extremes>& blocks, std::size_t first, std::size_t last, std::uint32_t base) {
+    // In order: a later block wins only when strictly better, so ties still go to the lowest index.
+    Extremes all = blocks[first];
+    for (std::size_t block = first + 1; block < last; ++block) {
+        const Extremes& e = blocks[block];
         for (int k = 0; k < 14; ++k) {
             if (e.best_value[k] > all.best_value[k]) all.best_value[k] = e.best_value[k], all.extreme_of[k] = e.extreme_of[k];
         }
@@ -102,6 +95,21 @@ Simplex find_simplex(PointSpan points, unsigned threads) {
             all.hi[axis] = std::max(all.hi[axis], e.hi[axis]);
         }
     }
+    for (std::uint32_t& i : all.extreme_of) i -= base;
+    return all;
+}
+
+Simplex find_simplex(PointSpan points, unsigned threads) {
+    if (points.count == 0) return Simplex{};
+    const std::vector<Extremes> blocks = block_extremes(points, threads);
+    return simplex_from(points, merged_extremes(blocks, 0, blocks.size(), 0));
+}
+
+Simplex simplex_from(PointSpan points, const Extremes& all) {
+    Simplex s;
+    const auto n = static_cast<std::uint32_t>(points.count);
+    if (n == 0) return s;
+    auto at = [&](std::uint32_t i) { return vec3(points[i]); };
     std::copy(all.extreme_of, all.extreme_of + 14, s.extreme);
     std::copy(all.lo, all.lo + 3, s.lo);
     std::copy(all.hi, all.hi + 3, s.hi);
@@ -428,6 +436,7 @@ std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, 
     *surface_like = false;
     if (whole) whole->dimension = -2;  // not found
     if (threads < 2 || n < 2 * kPointsPerThread) return {};
+    std::vector<Extremes> blocks;
     {
         // Enough for the two ratios below (a ball's sample of 8192 has a few hundred hull
         // vertices, a sphere's has all); a fixed size, because this runs on one thread before
@@ -446,8 +455,10 @@ std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, 
         // a few passes over the points, on the threads, which chunks only repeat (see
         // kChunkWhenKept). The culling region comes from the whole cloud's extremes (a
         // sample's lie too far inside: they would keep half of a cube); the sample says how
-        // many points it keeps.
-        const Simplex simplex = find_simplex(points, threads);
+        // many points it keeps. The extremes' pass is find_simplex's, kept by blocks: the
+        // chunks below are whole blocks, and take their own extremes from them.
+        blocks = block_extremes(points, threads);
+        const Simplex simplex = simplex_from(points, merged_extremes(blocks, 0, blocks.size(), 0));
         if (culling_kept_fraction(points, simplex, sampled) < kChunkWhenKept) {
             if (whole) *whole = simplex;
             return {};
@@ -455,11 +466,22 @@ std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, 
     }
     // One chunk per thread: each chunk's hull has costs that do not shrink with the chunk (its
     // culling hull, sorting buffers, fresh pages), so more, smaller chunks were measured slower.
+    // Chunks of whole blocks where there are enough blocks; else each finds its own extremes.
     const std::size_t chunks = std::size_t{threads};
+    const bool by_blocks = blocks.size() >= chunks;
     std::vector<std::vector<std::uint32_t>> found(chunks);
     detail::parallel_for(threads, chunks, [&](std::size_t chunk) {
-        const std::size_t begin = n * chunk / chunks, end = n * (chunk + 1) / chunks;
-        found[chunk] = detail::extreme_points(PointSpan(points[begin], end - begin));
+        std::size_t begin = n * chunk / chunks, end = n * (chunk + 1) / chunks;
+        if (by_blocks) {
+            const std::size_t first = blocks.size() * chunk / chunks, last = blocks.size() * (chunk + 1) / chunks;
+            begin = first * kExtremesBlock;
+            end = std::min(n, last * kExtremesBlock);
+            const PointSpan part(points[begin], end - begin);
+            const Simplex simplex = simplex_from(part, merged_extremes(blocks, first, last, static_cast<std::uint32_t>(begin)));
+            found[chunk] = detail::extreme_points(part, &simplex);
+        } else {
+            found[chunk] = detail::extreme_points(PointSpan(points[begin], end - begin));
+        }
         for (std::uint32_t& v : found[chunk]) v += static_cast<std::uint32_t>(begin);
     });
     std::vector<std::uint32_t> candidates;
@@ -468,8 +490,8 @@ std::vector<std::uint32_t> chunk_candidates(PointSpan points, unsigned threads, 
 }
 
 
-std::vector<std::uint32_t> extreme_points(PointSpan points) {
-    const Simplex simplex = find_simplex(points);
+std::vector<std::uint32_t> extreme_points(PointSpan points, const Simplex* known) {
+    const Simplex simplex = known ? *known : find_simplex(points);
     std::vector<std::uint32_t> vertices;
     if (simplex.dimension < 3) {
         vertices = lower_dimensional(points, simplex, 0).vertices;

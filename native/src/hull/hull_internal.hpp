@@ -77,7 +77,8 @@ double culling_kept_fraction(PointSpan points, const Simplex& simplex, PointSpan
 
 /// The extreme points of `points` (the vertices of their hull, whatever its dimension; of
 /// identical points the lowest index), ascending. `points` must be in the predicates' range.
-std::vector<std::uint32_t> extreme_points(PointSpan points);
+/// `simplex`: their find_simplex, when known.
+std::vector<std::uint32_t> extreme_points(PointSpan points, const Simplex* simplex = nullptr);
 
 /// A failed Hull carrying `message` (and the index of the point to blame, if any).
 Hull failure(std::string message, std::int64_t point = -1);
@@ -86,6 +87,25 @@ Hull failure(std::string message, std::int64_t point = -1);
 /// distances only choose among candidates; every decision about degeneracy is exact). Of
 /// identical candidates the lowest index is chosen.
 Simplex find_simplex(PointSpan points, unsigned threads = 1);
+
+/// Simplex's 14 extremes and bounding box over some points, with the winning values.
+struct Extremes {
+    double best_value[14];
+    std::uint32_t extreme_of[14];
+    double lo[3], hi[3];
+};
+
+/// find_simplex's one pass over the points, by blocks of kExtremesBlock points (on up to
+/// `threads` threads): each block's extremes, indices into `points`. At least one point.
+inline constexpr std::size_t kExtremesBlock = std::size_t{1} << 18;
+std::vector<Extremes> block_extremes(PointSpan points, unsigned threads = 1);
+
+/// The extremes of blocks [first, last) together (ties to the lowest index), their indices less
+/// `base`: those of a run of points starting at index `base`.
+Extremes merged_extremes(const std::vector<Extremes>& blocks, std::size_t first, std::size_t last, std::uint32_t base);
+
+/// find_simplex from the points' extremes (as merged_extremes gives them for all the points).
+Simplex simplex_from(PointSpan points, const Extremes& extremes);
 
 /// Indices of the distinct points (exact coordinate equality), the lowest index of each group of
 /// identical points, in ascending order.
