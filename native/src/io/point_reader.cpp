@@ -308,7 +308,11 @@ struct PointReader::Impl {
     Chunk* claim(BatchState& state, std::size_t batch, std::size_t chunk, std::size_t tasks, bool direct,
                  std::uint64_t limit, const std::vector<double>& out, std::size_t out_start) {
         if (state.stop.load(std::memory_order_relaxed) || state.taken >= batch || state.claimed == tasks) return nullptr;
-        const std::size_t length = chunk_length(chunk);
+        // Near the end of a batch on threads the chunks shrink (to an eighth at least), so that
+        // the threads finish it close together: the batch ends when its last chunk is parsed.
+        const std::size_t left = batch - state.taken;
+        const std::size_t want = direct ? chunk : std::clamp(left / threads, std::max<std::size_t>(chunk / 8, 1), chunk);
+        const std::size_t length = chunk_length(want);
         if (length == 0) return nullptr;  // the end of the input
         Chunk* c = &chunks[state.claimed];
         c->piece = io::PointPiece();
@@ -363,7 +367,10 @@ struct PointReader::Impl {
         // more than the input has.
         std::uint64_t bytes = batch;
         if (size_known) bytes = std::min<std::uint64_t>(bytes, size - input.offset());
-        const std::size_t tasks = static_cast<std::size_t>(std::min<std::uint64_t>(batch / chunk + 2, bytes / chunk + 1));
+        // (With the smaller chunks that end a batch on threads: a few per thread.)
+        const std::size_t tail = threads > 1 ? 4 * std::size_t{threads} : 0;
+        const std::size_t tasks = static_cast<std::size_t>(
+            std::min<std::uint64_t>(batch / chunk + 2 + tail, bytes / std::max<std::size_t>(chunk / 8, 1) + 1));
         const unsigned started = static_cast<unsigned>(std::min<std::uint64_t>(threads, bytes / kBytesPerThread + 1));
         // What the array guesses below go by: the batch of a file of known size; of a stream, what
         // was read so far (a small stream must not make room for a whole batch).
