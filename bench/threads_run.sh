@@ -49,11 +49,14 @@ if [ "$quick" = 1 ]; then
   procs1=2 runs1=2 runs2=2 runs2_qconvex=1 runs3=1 runs3_qconvex=1
   report=$work/results-threads.md
 else
-  # Run counts chosen for ~15 min in all on a 2-core machine (measured: 13.6 min at load average ~5,
-  # part 1 ~6 min, part 2 ~3 min, part 3 ~5 min; a 1e8 run takes 20-90 s), well inside 25 min.
+  # Run counts chosen for ~15-20 min in all on a 2-core machine (measured with 5 processes where
+  # there are now 9: 13.6 min at load average ~5, part 1 ~6 min, part 2 ~3 min, part 3 ~5 min; a
+  # 1e8 run takes 20-90 s; 3.2 min on a quiet machine), well inside 25 min. 9 processes, not 5:
+  # on this shared machine 2-thread runs slow down by 15-25% in bursts lasting several processes,
+  # and a median of 5 moved with them by up to 0.1 in the ratio from one run to the next.
   part1_clouds=(ball:10000000 sphere:1000000 cube:10000000)
   cube_n=10000000 ply_n=100000000 text_n=10000000
-  procs1=5 runs1=3 runs2=5 runs2_qconvex=2 runs3=3 runs3_qconvex=2
+  procs1=9 runs1=3 runs2=9 runs2_qconvex=2 runs3=3 runs3_qconvex=2
   report=bench/results-threads.md
 fi
 # A quick run keeps its raw figures apart, so that it never overwrites the full run's.
