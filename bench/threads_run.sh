@@ -97,6 +97,7 @@ out.push(`Written by \`bash bench/threads_run.sh\` on ${meta.date}${meta.quick ?
   `The whole run took ${(end.elapsed_seconds / 60).toFixed(1)} min.`, '');
 out.push('Every hullkit figure comes from a fresh process. 1-thread and 2-thread processes alternate (1 2, 2 1, ...) ' +
   'so that load from elsewhere hits both; figures are medians over processes, every run is listed. ' +
+  'Files the script writes (the inputs, qconvex\'s OFF) are flushed to disk (sync) before the next process is timed. ' +
   'Ratio = 2-thread / 1-thread time; efficiency = speed-up / 2 = 1-thread / (2 × 2-thread).' +
   (Math.max(...`${meta.load_start} ${end.load_end}`.split(' ').map(Number)) > meta.nproc
     ? ' The load average was above the hardware thread count: other processes competed for the cores, which weighs most on the 2-thread figures.'
@@ -307,13 +308,21 @@ for spec in "${part1_clouds[@]}"; do
   done
 done
 
+# Files just written are flushed to disk before anything is timed: the kernel's writeback of
+# hundreds of MB (an input just generated, qconvex's OFF, which lists every point) would
+# otherwise run beside the next processes, on the same 2 cores.
+settle() { sync; }
+
 # ---- 2. the whole command on text, hullkit 1 vs 2 threads vs qconvex
 say "part 2: rbox $cube_n D3 > $work/cube.txt"
 timeout 300 rbox "$cube_n" D3 >"$work/cube.txt"
+settle
 printf '{"part":2,"impl":"input","bytes":%d,"n":%d}\n' "$(stat -c %s "$work/cube.txt")" "$cube_n" >>"$results"
 run_qconvex_cube() {
   measure 900 "$work/cube.txt" "$work/cube.qconvex.off" "$work/qconvex.err" qconvex o
   record 2 qconvex "qconvex o" null "$1" null "$work/qconvex.err"
+  rm -f "$work/cube.qconvex.off"  # unwritten pages of a removed file are dropped, not flushed
+  settle
 }
 for ((k = 1; k <= runs2; k++)); do
   for t in $(order "$k"); do
@@ -337,6 +346,7 @@ say "part 3: hullkit_threads_bench --write-ply $work/ball.ply --cloud ball --n $
 write_started=$(date +%s%N)
 timeout 900 "$tbench" --write-ply "$work/ball.ply" --cloud ball --n "$ply_n"
 write_ms=$((($(date +%s%N) - write_started) / 1000000))
+settle
 printf '{"part":3,"impl":"input","bytes":%d,"n":%d,"write_seconds":%d.%03d}\n' "$(stat -c %s "$work/ball.ply")" "$ply_n" \
   $((write_ms / 1000)) $((write_ms % 1000)) >>"$results"
 for ((k = 1; k <= runs3; k++)); do
@@ -354,10 +364,13 @@ rm -f "$work/ball.ply"
 
 say "part 3: qconvex on the first $text_n points of the same cloud, as text"
 timeout 300 "$tbench" --write-text "$work/ball.txt" --cloud ball --n "$text_n"
+settle
 printf '{"part":3,"impl":"text-input","bytes":%d,"n":%d}\n' "$(stat -c %s "$work/ball.txt")" "$text_n" >>"$results"
 for ((k = 1; k <= runs3_qconvex; k++)); do
   measure 900 "$work/ball.txt" "$work/ball.qconvex.off" "$work/qconvex.err" qconvex o
   record 3 qconvex "qconvex o (text)" null "$k" null "$work/qconvex.err"
+  rm -f "$work/ball.qconvex.off"
+  settle
   # hullkit on the very same text file, for scale (default threads, in memory).
   measure 300 /dev/null /dev/null "$work/hullkit.err" "$cli" hull "$work/ball.txt" -o "$work/ball-text.off" --stats
   record 3 hullkit "hullkit (text)" null "$k" null "$work/hullkit.err"
