@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -126,15 +125,10 @@ private:
     std::vector<Node> nodes_;
 };
 
-/// The distinct corners of a surface's triangles (of those marked in `only`, if given),
-/// ascending; `point_count` bounds the indices.
-std::vector<Index> corners_of(const Surface& surface, std::size_t point_count,
-                              const std::vector<std::uint8_t>* only = nullptr) {
+/// The distinct corners of a surface's triangles, ascending; `point_count` bounds the indices.
+std::vector<Index> corners_of(const Surface& surface, std::size_t point_count) {
     std::vector<std::uint8_t> used(point_count, 0);
-    for (std::size_t t = 0; t < surface.size(); ++t) {
-        if (only && !(*only)[t]) continue;
-        for (int k = 0; k < 3; ++k) used[surface.triangles[3 * t + k]] = 1;
-    }
+    for (Index v : surface.triangles) used[v] = 1;
     std::vector<Index> corners;
     for (std::size_t i = 0; i < point_count; ++i) {
         if (used[i]) corners.push_back(static_cast<Index>(i));
