@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -19,6 +20,9 @@
 #include "hullkit/hull.hpp"
 
 namespace hullkit_test {
+
+/// Whether two doubles have the same bits (the results promise bits, not just values).
+inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 /// Exact sign of ((b-a) x (c-a)) . (d-a) by GMP rational arithmetic.
 inline int rational_orient3d(const double* a, const double* b, const double* c, const double* d) {
@@ -132,6 +136,32 @@ inline std::vector<double> cube_corners(double half = 1.0) {
         xyz.push_back(i & 1 ? half : -half);
         xyz.push_back(i & 2 ? half : -half);
         xyz.push_back(i & 4 ? half : -half);
+    }
+    return xyz;
+}
+
+/// The integer grid [-half, half)^2 lifted to z = x^2 + y^2: every point extreme, square faces
+/// (each two exactly coplanar triangles), row by row.
+inline std::vector<double> lifted_grid(int half) {
+    std::vector<double> xyz;
+    for (int x = -half; x < half; ++x) {
+        for (int y = -half; y < half; ++y) xyz.insert(xyz.end(), {double(x), double(y), double(x * x + y * y)});
+    }
+    return xyz;
+}
+
+/// The integer points on the six faces of [0, side]^3: large coplanar faces, and the points on
+/// the cube's edges and corners repeated (two or three times).
+inline std::vector<double> box_surface(int side) {
+    std::vector<double> xyz;
+    for (int a = 0; a <= side; ++a) {
+        for (int b = 0; b <= side; ++b) {
+            for (double fixed : {0.0, double(side)}) {
+                xyz.insert(xyz.end(), {fixed, double(a), double(b)});
+                xyz.insert(xyz.end(), {double(a), fixed, double(b)});
+                xyz.insert(xyz.end(), {double(a), double(b), fixed});
+            }
+        }
     }
     return xyz;
 }

@@ -5,7 +5,6 @@
 // includes native/src) and require that it succeeded.
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,33 +13,14 @@
 #include "hull_checks.hpp"
 
 using hullkit_test::Cloud;
-
-namespace {
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-}  // namespace
+using hullkit_test::same_bits;
 
 TEST_CASE("quickhull split: the halves are joined, never given up, and give quickhull_faces' faces bit for bit",
           "[threads]") {
-    std::vector<double> lifted;  // every point extreme, square faces split by the cuts
-    for (int x = -150; x < 150; ++x) {
-        for (int y = -150; y < 150; ++y) lifted.insert(lifted.end(), {double(x), double(y), double(x * x + y * y)});
-    }
-    std::vector<double> box_surface;  // large coplanar faces across every cut; edges and corners repeat
-    for (int a = 0; a <= 120; ++a) {
-        for (int b = 0; b <= 120; ++b) {
-            for (double fixed : {0.0, 120.0}) {
-                box_surface.insert(box_surface.end(), {fixed, double(a), double(b)});
-                box_surface.insert(box_surface.end(), {double(a), fixed, double(b)});
-                box_surface.insert(box_surface.end(), {double(a), double(b), fixed});
-            }
-        }
-    }
     const std::vector<std::pair<std::string, std::vector<double>>> clouds = {
         {"sphere", hullkit_test::random_cloud(Cloud::Sphere, 150000, 61)},
-        {"lifted grid", lifted},
-        {"surface of a box", box_surface}};
+        {"lifted grid (square faces split by the cuts)", hullkit_test::lifted_grid(150)},
+        {"surface of a box (coplanar faces across every cut, repeats)", hullkit_test::box_surface(120)}};
     for (const auto& [name, xyz] : clouds) {
         INFO(name);
         const hullkit::PointSpan points(xyz.data(), xyz.size() / 3);

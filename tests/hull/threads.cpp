@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <numeric>
 #include <random>
 #include <string>
@@ -25,10 +24,9 @@ using hullkit::HullBuilder;
 using hullkit::HullOptions;
 using hullkit::StreamedHull;
 using hullkit_test::Cloud;
+using hullkit_test::same_bits;
 
 namespace {
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 /// Every field of two hulls, doubles by their bits.
 void require_identical(const Hull& a, const Hull& b) {
@@ -101,17 +99,8 @@ std::vector<std::pair<std::string, std::vector<double>>> large_clouds() {
     clouds.emplace_back("sphere", hullkit_test::random_cloud(Cloud::Sphere, 140000, 3));
     // Clouds mostly on their hull (the split-and-join path), with coplanar faces, repeats and
     // cospherical points.
-    std::vector<double> box_surface, prism, cospherical;
-    for (int a = 0; a <= 80; ++a) {
-        for (int b = 0; b <= 80; ++b) {  // the six faces of [0, 80]^3; edges and corners repeat
-            for (double fixed : {0.0, 80.0}) {
-                box_surface.insert(box_surface.end(), {fixed, double(a), double(b)});
-                box_surface.insert(box_surface.end(), {double(a), fixed, double(b)});
-                box_surface.insert(box_surface.end(), {double(a), double(b), fixed});
-            }
-        }
-    }
-    clouds.emplace_back("surface of a box", box_surface);
+    clouds.emplace_back("surface of a box", hullkit_test::box_surface(80));
+    std::vector<double> prism;
     for (int layer = 0; layer < 90; ++layer) {  // a 400-gon prism: coplanar caps, points on its edges
         for (int k = 0; k < 400; ++k) {
             const double angle = 2 * 3.141592653589793 * k / 400;
@@ -132,10 +121,7 @@ std::vector<std::pair<std::string, std::vector<double>>> large_clouds() {
         }
     }
     clouds.emplace_back("cospherical lattice, repeated", tiled(lattice, 70000, 8));
-    std::vector<double> lifted;  // a grid lifted to z = x^2 + y^2: every point extreme, square faces
-    for (int x = -125; x < 125; ++x) {
-        for (int y = -125; y < 125; ++y) lifted.insert(lifted.end(), {double(x), double(y), double(x * x + y * y)});
-    }
+    const std::vector<double> lifted = hullkit_test::lifted_grid(125);
     clouds.emplace_back("lifted grid", lifted);
     clouds.emplace_back("lifted grid, repeated", tiled(lifted, 130000, 9));
     std::vector<double> grid, flat, line;
@@ -383,16 +369,12 @@ TEST_CASE("HullBuilder: errors name the global index; repeats and bad options ar
 }
 
 TEST_CASE("threads: every threaded path once, small enough for ThreadSanitizer", "[threads]") {
-    std::vector<double> lifted;  // the split-and-join path with coplanar faces
-    for (int x = -100; x < 100; ++x) {
-        for (int y = -100; y < 100; ++y) lifted.insert(lifted.end(), {double(x), double(y), double(x * x + y * y)});
-    }
     const std::vector<std::pair<std::string, std::vector<double>>> clouds = {
         {"ball (chunks)", hullkit_test::random_cloud(Cloud::Ball, 40000, 51)},
         {"ball (chunks of whole blocks)", hullkit_test::random_cloud(Cloud::Ball, 300000, 54)},
         {"cube (one quickhull, its passes over the points on threads)", hullkit_test::random_cloud(Cloud::Cube, 40000, 53)},
         {"sphere (split and join)", hullkit_test::random_cloud(Cloud::Sphere, 40000, 52)},
-        {"lifted grid (split and join, coplanar)", lifted}};
+        {"lifted grid (split and join, coplanar)", hullkit_test::lifted_grid(100)}};
     for (const auto& [name, xyz] : clouds) {
         INFO(name);
         const Hull one = hull_with(xyz, 1);
