@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene_arrays.hpp"
+
 #include "motion.hpp"
 
 #include <cmath>
@@ -100,7 +102,8 @@ const char* type_name(const json& value) {
         case json::value_t::null: return "null";
         case json::value_t::boolean: return "a boolean";
         case json::value_t::string: return "a string";
-        case json::value_t::array: return "an array";
+        case json::value_t::array:
+        case json::value_t::binary: return "an array";  // an inline mesh array read ahead (scene_arrays.hpp)
         case json::value_t::object: return "an object";
         case json::value_t::number_integer:
         case json::value_t::number_unsigned:
@@ -112,7 +115,8 @@ const char* type_name(const json& value) {
 /// Walks the JSON tree; the first problem found is kept and stops the walk.
 class SceneParser {
 public:
-    SceneParser(const std::string& source, const MeshLoader& load_mesh) : source_(source), load_mesh_(load_mesh) {}
+    SceneParser(const std::string& source, const MeshLoader& load_mesh, route_detail::PackedMeshArrays* packed = nullptr)
+        : source_(source), load_mesh_(load_mesh), packed_(packed) {}
 
     bool fail(const std::string& path, const std::string& what) {
         if (error_.empty()) error_ = source_ + ": " + (path.empty() ? "" : path + ": ") + what;
@@ -291,19 +295,46 @@ public:
         return true;
     }
 
+    /// The array read ahead for a "vertices" or "triangles" value (a binary node in the tree
+    /// stands for it: JSON text cannot make one), or null for a value in the tree.
+    template <class T>
+    std::vector<T>* packed(const json& value, std::vector<std::vector<T>>& arrays) {
+        if (!value.is_binary() || !packed_) return nullptr;
+        const std::uint64_t slot = value.get_binary().subtype();
+        return slot < arrays.size() ? &arrays[slot] : nullptr;
+    }
+
     bool inline_mesh(const json& value, const std::string& path, TriangleMesh* mesh) {
         if (!value.contains("triangles")) return fail(path, "\"vertices\" without \"triangles\"");
         const json& vertices = value["vertices"];
         const json& triangles = value["triangles"];
-        if (!vertices.is_array()) return fail(path + ".vertices", std::string("expected an array of [x, y, z], got ") + type_name(vertices));
-        if (!triangles.is_array()) return fail(path + ".triangles", std::string("expected an array of [i, j, k], got ") + type_name(triangles));
-        if (vertices.size() > 0xffffffffULL) return fail(path + ".vertices", "too many vertices");
-        mesh->xyz.reserve(3 * vertices.size());
-        for (std::size_t i = 0; i < vertices.size(); ++i) {
-            if (!vec3_at(vertices[i], [&] { return path + ".vertices[" + std::to_string(i) + "]"; }, &mesh->xyz)) return false;
+        std::vector<double>* packed_xyz = packed_ ? packed(vertices, packed_->vertices) : nullptr;
+        std::vector<std::uint32_t>* packed_indices = packed_ ? packed(triangles, packed_->triangles) : nullptr;
+        if (!vertices.is_array() && !packed_xyz) return fail(path + ".vertices", std::string("expected an array of [x, y, z], got ") + type_name(vertices));
+        if (!triangles.is_array() && !packed_indices) return fail(path + ".triangles", std::string("expected an array of [i, j, k], got ") + type_name(triangles));
+        const std::size_t vertex_count = packed_xyz ? packed_xyz->size() / 3 : vertices.size();
+        if (vertex_count > 0xffffffffULL) return fail(path + ".vertices", "too many vertices");
+        if (packed_xyz) {
+            mesh->xyz = std::move(*packed_xyz);  // every [x, y, z] finite, checked as it was read
+        } else {
+            mesh->xyz.reserve(3 * vertices.size());
+            for (std::size_t i = 0; i < vertices.size(); ++i) {
+                if (!vec3_at(vertices[i], [&] { return path + ".vertices[" + std::to_string(i) + "]"; }, &mesh->xyz)) return false;
+            }
+        }
+        const std::uint64_t count = vertex_count;
+        if (packed_indices) {  // non-empty, every index an integer below 2^32
+            for (std::size_t i = 0; i < packed_indices->size(); ++i) {
+                if ((*packed_indices)[i] >= count) {
+                    return fail(path + ".triangles[" + std::to_string(i / 3) + "][" + std::to_string(i % 3) + "]",
+                                "index " + std::to_string((*packed_indices)[i]) + " out of range (" + std::to_string(count) +
+                                    " vertices)");
+                }
+            }
+            mesh->triangles = std::move(*packed_indices);
+            return true;
         }
         if (triangles.empty()) return fail(path + ".triangles", "no triangles");
-        const std::uint64_t count = vertices.size();
         mesh->triangles.reserve(3 * triangles.size());
         for (std::size_t t = 0; t < triangles.size(); ++t) {
             // The names in messages are built only for one.
@@ -415,6 +446,7 @@ public:
 private:
     std::string source_;
     const MeshLoader& load_mesh_;
+    route_detail::PackedMeshArrays* packed_;  ///< inline mesh arrays read ahead, or null
     std::string error_;
     std::vector<std::string> warnings_;
 };
@@ -470,12 +502,12 @@ RouteResult parse_route(const std::string& json_text, const std::string& source)
     return result;
 }
 
-SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
-                        const SceneReadOptions& options) {
+namespace {
+
+SceneResult scene_from_tree(const json& root, const std::string& source, const MeshLoader& load_mesh,
+                            const SceneReadOptions& options, route_detail::PackedMeshArrays* packed) {
     SceneResult result;
-    json root;
-    if (!parse_json(json_text, source, "a JSON scene", &root, &result.error)) return result;
-    SceneParser parser(source, load_mesh);
+    SceneParser parser(source, load_mesh, packed);
     if (!parser.scene(root, options, &result.scene)) {
         result.scene = Scene{};
         result.error = terminal_safe(parser.error());
@@ -483,6 +515,66 @@ SceneResult parse_scene(const std::string& json_text, const std::string& source,
         result.warnings = std::move(parser.warnings());
     }
     return result;
+}
+
+/// The tree of a text whose inline mesh arrays were taken out (pack_mesh_arrays): each "[]" left
+/// for one becomes a binary node naming its array. False if the text does not parse (the whole
+/// scene is then read the ordinary way, for the ordinary message) or its keys are not the ones
+/// counted.
+bool packed_tree(const std::string& packed_text, const route_detail::PackedMeshArrays& arrays, json* root) {
+    std::size_t vertices_keys = 0, triangles_keys = 0;
+    std::int64_t pending = -1, open = -1;  // the array taken out for the key just read, for its "[]"
+    const auto mark = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
+        switch (event) {
+            case json::parse_event_t::key: {
+                const std::string& key = parsed.get_ref<const std::string&>();
+                pending = -1;
+                if (key == "vertices" && vertices_keys < arrays.vertices_keys.size()) {
+                    pending = arrays.vertices_keys[vertices_keys];
+                } else if (key == "triangles" && triangles_keys < arrays.triangles_keys.size()) {
+                    pending = arrays.triangles_keys[triangles_keys];
+                }
+                vertices_keys += key == "vertices";
+                triangles_keys += key == "triangles";
+                break;
+            }
+            case json::parse_event_t::array_start:
+                open = pending;
+                pending = -1;
+                break;
+            case json::parse_event_t::array_end:
+                if (open >= 0 && parsed.empty()) parsed = json::binary({}, static_cast<std::uint64_t>(open));
+                open = -1;
+                break;
+            default:
+                pending = open = -1;
+        }
+        return true;
+    };
+    *root = json::parse(packed_text, mark, /*allow_exceptions=*/false);
+    return !root->is_discarded() && vertices_keys == arrays.vertices_keys.size() &&
+           triangles_keys == arrays.triangles_keys.size();
+}
+
+}  // namespace
+
+SceneResult parse_scene(const std::string& json_text, const std::string& source, const MeshLoader& load_mesh,
+                        const SceneReadOptions& options) {
+    route_detail::PackedMeshArrays arrays;
+    std::string packed_text;
+    if (route_detail::pack_mesh_arrays(json_text, &packed_text, &arrays)) {
+        json root;
+        if (packed_tree(packed_text, arrays, &root)) return scene_from_tree(root, source, load_mesh, options, &arrays);
+    }
+    return route_detail::parse_scene_tree_only(json_text, source, load_mesh, options);
+}
+
+SceneResult route_detail::parse_scene_tree_only(const std::string& json_text, const std::string& source,
+                                                const MeshLoader& load_mesh, const SceneReadOptions& options) {
+    SceneResult result;
+    json root;
+    if (!parse_json(json_text, source, "a JSON scene", &root, &result.error)) return result;
+    return scene_from_tree(root, source, load_mesh, options, nullptr);
 }
 
 SceneResult read_scene_file(const std::string& path, const SceneReadOptions& options) {
