@@ -7,7 +7,7 @@ call in a fresh process; it prints one JSON line.
     python_bench.py conversions --lib "float64 C"|"float32 Fortran" --n N   hullkit.hull outside the core
     python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
     python_bench.py files --mode single|dask --dir D            the hull of those files
-    python_bench.py routes --mode single|dask --legs L --scene S --route R
+    python_bench.py routes --mode single|dask|dask-send --legs L --scene S --route R
 """
 import argparse
 import glob
@@ -166,14 +166,17 @@ def run_routes(args):
     else:
         from distributed import Client, LocalCluster
 
+        # dask: the workers read the scene file themselves (the default on one machine);
+        # dask-send: it is sent to them from here (send_scene=True, as to other machines).
+        send = args.mode == "dask-send"
         cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
         client = Client(cluster)
         client.run(lambda: None)
         start = time.perf_counter()
-        reports = hullkit.dask.check_routes(args.scene, routes, client=client)
+        reports = hullkit.dask.check_routes(args.scene, routes, client=client, send_scene=send)
         seconds = time.perf_counter() - start
         start = time.perf_counter()
-        again = hullkit.dask.check_routes(args.scene, routes, client=client)
+        again = hullkit.dask.check_routes(args.scene, routes, client=client, send_scene=send)
         warm = time.perf_counter() - start
         client.close()
         cluster.close()

@@ -15,9 +15,11 @@ the same triangles, vertices, volume and area bits as hullkit.hull on one machin
 fits. Point files are indexed in the order given, each file's points after the previous file's;
 files are merged as they are hulled, before every file's point count is known (see _FILE_BITS).
 
-check_routes: the scene is made self-contained (its text, and the bytes of the mesh files it
-names and of their glTF buffers, read here) and sent once to each worker, where one RouteChecker
-per worker is built and reused, by later calls with the same scene too; the routes are checked
+check_routes: the scene is made self-contained here (its text, and the bytes of the mesh files it
+names and of their glTF buffers) and identified by a digest of those bytes. Each worker builds one
+RouteChecker per scene and reuses it, by later calls with the same scene too. A worker gets the
+scene once: it reads a scene file itself from the same path when it can (a shared or local file
+system) and the digest matches, and is otherwise sent the bytes read here. The routes are checked
 in batches on the workers and the reports come back in the order of the routes, identical to
 RouteChecker(scene).check(route) here.
 
@@ -279,8 +281,8 @@ def _gltf_buffers(name, data):
 
 def _self_contained(scene):
     """(scene JSON text, source name, {file name: bytes}): every mesh file the scene names (and
-    every buffer file of a .gltf among them) is read here, so that workers need no files; the
-    text itself travels unchanged. A scene that is not valid JSON travels too, and fails on the
+    every buffer file of a .gltf among them) is read here, so that the core needs no files; the
+    text itself is kept unchanged. A scene that is not valid JSON is kept too, and fails on the
     workers with the core's message."""
     text, source, directory = _scene_json(scene)
     names = sorted(_mesh_names(text))
@@ -308,17 +310,44 @@ def _digest(text, files):
     return digest.hexdigest()
 
 
+class _SceneNotHere:
+    """What a task returns when its worker has no checker for the scene and cannot read the same
+    bytes from the scene's files (another machine, or files changed since): the client then sends
+    the bytes it read. Returned, not raised, so that the workers log no failed task."""
+
+
 _checkers = {}  # per worker process: scene digest -> the core's RouteChecker, built once and reused
 _scattered = {}  # here: (client id, scene digest) -> the future of the scene scattered to every worker
+_read_on_workers = True  # workers may read a scene file themselves (tests turn it off on workers)
+
+
+def _scene_here(where):
+    """(text, files) of the scene file at ``where`` (an absolute path) and of the mesh files it
+    names, read on this worker; None where they cannot be read."""
+    if where is None or not _read_on_workers:
+        return None
+    try:
+        text, _, files = _self_contained(where)
+    except HullkitError:
+        return None
+    return text, files
 
 
 @_on_worker
 def _check_batch(scene, routes, clearance, samples, threads):
-    digest, text, source, files = scene
+    """The reports of ``routes``. ``scene``: (digest, source name, path, content) with content
+    (text, files) when sent, or None when the worker is to read the files at path (the client's
+    absolute path) and check that they hold the bytes the client read (the digest)."""
+    digest, source, where, content = scene
     checker = _checkers.get(digest)
     if checker is None:
+        if content is None:
+            content = _scene_here(where)
+            if content is None or _digest(*content) != digest:
+                return _SceneNotHere()
         if len(_checkers) >= 8:
             _checkers.clear()
+        text, files = content
         with _translated():
             checker = _checkers[digest] = _core.RouteChecker(text, source, ".", files)
     with _translated():
@@ -326,25 +355,36 @@ def _check_batch(scene, routes, clearance, samples, threads):
         return [json.loads(checker.check(route, no_rotations, clearance, samples, threads)) for route in routes]
 
 
-def _scene_on_workers(client, shipped):
+def _scene_on_workers(client, digest, source, text, files):
     """The scene scattered to every worker once per client: later calls with the same scene (the
     same text and file bytes) reuse it, and the workers their checkers."""
-    key = (client.id, shipped[0])
+    key = (client.id, digest)
     future = _scattered.get(key)
     if future is None or future.status != "finished":  # lost with its workers: sent again
         if len(_scattered) >= 8:
             _scattered.clear()
         # One object: a tuple handed to scatter() would be scattered element by element.
-        future = _scattered[key] = client.scatter([shipped], broadcast=True, hash=False)[0]
+        future = _scattered[key] = client.scatter([(digest, source, None, (text, files))], broadcast=True, hash=False)[0]
     return future
 
 
-def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=1, batch=None):
+def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=1, batch=None, send_scene=False):
     """Checks every route of ``routes`` (a list of (k, 3) waypoint arrays) against ``scene`` (a
     dict or a scene file) on the cluster; returns their reports (as RouteChecker.check gives
-    them) in order. ``batch``: routes per task (default: about 4 tasks per worker)."""
+    them) in order. ``batch``: routes per task (default: two tasks per worker; more tasks cost
+    the scheduler more than they balance).
+
+    The scene and its mesh files are read here. A scene given as a file is read again by each
+    worker from the same path when it can (a shared or local file system), and used there only
+    if it holds the same bytes (the same SHA-256 digest over the text and every file); workers
+    that cannot are sent the bytes read here, once. ``send_scene=True`` sends them to every
+    worker without trying (a cluster whose workers do not see this machine's files)."""
+    if batch is not None and (isinstance(batch, bool) or not isinstance(batch, (int, np.integer)) or batch < 1):
+        raise HullkitError(f"batch must be a positive integer, got {batch!r}")
+    if not isinstance(send_scene, bool):
+        raise HullkitError(f"send_scene must be True or False, got {send_scene!r}")
     text, source, files = _self_contained(scene)
-    shipped = (_digest(text, files), text, source, files)
+    digest = _digest(text, files)
     routes = [np.ascontiguousarray(r, dtype=np.float64) for r in routes]
     for k, route in enumerate(routes):
         if route.ndim != 2 or route.shape[1] != 3 or len(route) < 2:
@@ -354,14 +394,34 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     # A bad scene fails on the workers with the core's message (HullkitError), as it would here.
     if batch is None:
         workers = len(client.scheduler_info()["workers"]) if client is not None else os.cpu_count() or 1
-        batch = max(1, math.ceil(len(routes) / (4 * max(1, workers))))
+        batch = math.ceil(len(routes) / (2 * max(1, workers)))
+    batch = int(batch)
     chunks = [routes[k:k + batch] for k in range(0, len(routes), batch)]
-    if client is not None:
-        shared = _scene_on_workers(client, shipped)
-        futures = client.map(_check_batch, [shared] * len(chunks), chunks, clearance=clearance, samples=samples,
-                             threads=threads, pure=False)
-        results = client.gather(futures)
-    else:
-        shared = delayed(shipped, traverse=False)
+    if client is None:
+        shared = delayed((digest, source, None, (text, files)), traverse=False)
         results = dask.compute(*[delayed(_check_batch)(shared, chunk, clearance, samples, threads) for chunk in chunks])
+        return [report for part in results for report in part]
+    sent = _scattered.get((client.id, digest))
+    if send_scene or not isinstance(scene, (str, os.PathLike)) or (sent is not None and sent.status == "finished"):
+        shared = _scene_on_workers(client, digest, source, text, files)
+    else:  # the workers read the scene file themselves where they can
+        shared = (digest, source, os.path.abspath(os.fspath(scene)), None)
+    results = [None] * len(chunks)
+    pending = list(range(len(chunks)))
+    from distributed import as_completed
+    while pending:
+        futures = client.map(_check_batch, [shared] * len(pending), [chunks[k] for k in pending], clearance=clearance,
+                             samples=samples, threads=threads, pure=False)
+        position = {future.key: k for k, future in zip(pending, futures)}
+        missing = []
+        # Each batch's reports fetched as soon as it is done, so that the fetches (and, on a first
+        # call, the connections to the workers) overlap the batches still running.
+        for future, part in as_completed(futures, with_results=True):
+            if isinstance(part, _SceneNotHere):
+                missing.append(position[future.key])
+            else:
+                results[position[future.key]] = part
+        pending = sorted(missing)
+        if pending:  # some workers could not read the scene: it is sent to every worker
+            shared = _scene_on_workers(client, digest, source, text, files)
     return [report for part in results for report in part]

@@ -2,6 +2,7 @@
 equals hullkit.hull of the whole cloud bit for bit (Dask arrays and lists of files), route
 batches equal local checks, and a worker killed mid-job changes nothing (Dask recomputes what
 was lost)."""
+import hashlib
 import json
 import os
 import signal
@@ -110,6 +111,78 @@ def test_route_batches_equal_local_checks(client):
     bad = {"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": [], "margn": 1}
     with pytest.raises(hullkit.HullkitError, match="margn"):  # raised on a worker, with the core's message
         hullkit.dask.check_routes(bad, routes[:3], client=client)
+
+
+def scene_digest(scene):
+    text, _, files = hullkit.dask._self_contained(scene)
+    return hullkit.dask._digest(text, files)
+
+
+def sent_to_workers(client, scene):
+    return (client.id, scene_digest(scene)) in hullkit.dask._scattered
+
+
+def set_worker_reading(client, on):
+    def switch():
+        import hullkit.dask as module
+        module._read_on_workers = on
+    client.run(switch)
+
+
+def test_route_batches_read_the_scene_on_the_workers_or_send_it(client, tmp_path):
+    # Workers that see the scene's files read them (nothing is sent); workers that cannot are sent
+    # the bytes read here, and send_scene=True sends them without trying. Every way gives the
+    # reports of a local RouteChecker.
+    (tmp_path / "plate.obj").write_text("v 4 -5 -5\nv 4 5 -5\nv 4 0 5\nf 1 2 3\nf 1 3 2\n")
+    rng = np.random.default_rng(9)
+    routes = [np.cumsum(rng.normal(scale=2.0, size=(4, 3)), axis=0) for _ in range(30)]
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+
+    def scene(margin):  # a new scene (new bytes) for each way, so that no worker has its checker
+        path = tmp_path / f"scene-{margin}.json"
+        path.write_text(json.dumps({"traverse": {"parts": [{"box": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}}]},
+                                    "obstacles": [{"mesh": "plate.obj"}], "margin": margin}))
+        return str(path)
+
+    def expected(path):
+        checker = hullkit.RouteChecker(path)
+        return [strip(checker.check(route)) for route in routes]
+
+    read = scene(0.0)
+    assert [strip(r) for r in hullkit.dask.check_routes(read, routes, client=client)] == expected(read)
+    assert not sent_to_workers(client, read)
+    assert sum(not r["clear"] for r in expected(read)) > 0
+
+    pushed = scene(0.25)
+    assert [strip(r) for r in hullkit.dask.check_routes(pushed, routes, client=client, send_scene=True)] == expected(pushed)
+    assert sent_to_workers(client, pushed)
+
+    set_worker_reading(client, False)  # as on machines that do not see these files
+    try:
+        unseen = scene(0.5)
+        assert [strip(r) for r in hullkit.dask.check_routes(unseen, routes, client=client)] == expected(unseen)
+        assert sent_to_workers(client, unseen)
+    finally:
+        set_worker_reading(client, True)
+    with pytest.raises(hullkit.HullkitError, match="send_scene"):
+        hullkit.dask.check_routes(read, routes, client=client, send_scene="yes")
+    with pytest.raises(hullkit.HullkitError, match="batch"):
+        hullkit.dask.check_routes(read, routes, client=client, batch=0)
+
+
+def test_a_worker_uses_a_scene_file_only_if_it_holds_the_bytes_read_here(tmp_path):
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps({"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": []}))
+    route = [np.array([[0.0, 0, 0], [3, 0, 0]])]
+    digest = scene_digest(str(path))
+    # The same bytes: checked there. Other bytes (the file changed after it was read here, or
+    # another machine's file at the same path): the client is asked to send its bytes.
+    assert hullkit.dask._check_batch((digest, "scene.json", str(path), None), route, True, 0, 1)[0]["clear"]
+    other = hashlib.sha256(b"other").hexdigest()
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(path), None), route, True, 0, 1),
+                      hullkit.dask._SceneNotHere)
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(tmp_path / "gone.json"), None), route, True, 0, 1),
+                      hullkit.dask._SceneNotHere)
 
 
 def test_route_batches_with_a_gltf_whose_buffer_is_a_file(client, tmp_path):
