@@ -98,7 +98,7 @@ def test_errors_name_the_file_and_line(client, tmp_path):
 
 
 def test_route_batches_equal_local_checks(client):
-    scene = os.path.join(DATA, "route", "crane.json")  # mesh files: read here, sent inline
+    scene = os.path.join(DATA, "route", "crane.json")  # mesh files: read here, and by the workers
     rng = np.random.default_rng(4)
     routes = [np.cumsum(rng.normal(scale=3.0, size=(5, 3)), axis=0) for _ in range(60)]
     reports = hullkit.dask.check_routes(scene, routes, client=client)
@@ -187,7 +187,7 @@ def test_a_worker_uses_a_scene_file_only_if_it_holds_the_bytes_read_here(tmp_pat
 
 def test_route_batches_with_a_gltf_whose_buffer_is_a_file(client, tmp_path):
     # The traverse is a .gltf in a subfolder whose vertex and index data are in a .bin beside
-    # it: both files are read here and sent with the scene (workers have no files).
+    # it: both files are read here, and sent with the scene to workers that cannot read them.
     corners = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype="<f4")
     faces = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
                       [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]], dtype="<u2")
@@ -209,8 +209,13 @@ def test_route_batches_with_a_gltf_whose_buffer_is_a_file(client, tmp_path):
     strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
     expected = [strip(checker.check(route)) for route in routes]
     assert [r["clear"] for r in expected] == [False, True, True]
-    for _ in range(2):  # the second call reuses the scene on the workers
-        assert [strip(r) for r in hullkit.dask.check_routes(str(scene), routes, client=client)] == expected
+    set_worker_reading(client, False)  # the workers get the .gltf and the .bin from here
+    try:
+        for _ in range(2):  # the second call reuses the scene on the workers
+            assert [strip(r) for r in hullkit.dask.check_routes(str(scene), routes, client=client)] == expected
+        assert sent_to_workers(client, str(scene))
+    finally:
+        set_worker_reading(client, True)
     (tmp_path / "parts" / "box.bin").unlink()
     with pytest.raises(hullkit.HullkitError, match="box.bin: cannot open"):
         hullkit.dask.check_routes(str(scene), routes, client=client)
