@@ -41,7 +41,7 @@ import numpy as np
 import dask
 from dask import delayed
 
-from . import HullBuilder, HullkitError, _core, _scene_json, _translated
+from . import HullBuilder, HullkitError, _core, _scene_json, _translated, as_points
 
 __all__ = ["hull", "hull_graph", "check_routes", "DaskHull"]
 
@@ -334,8 +334,8 @@ def _scene_here(where):
 
 
 @_on_worker
-def _check_batch(scene, routes, clearance, samples, threads):
-    """The reports of ``routes``. ``scene``: (digest, source name, path, content) with content
+def _check_batch(scene, routes, rotations, clearance, samples, threads):
+    """The reports of ``routes`` (``rotations``: None, or an array or None per route). ``scene``: (digest, source name, path, content) with content
     (text, files) when sent, or None when the worker is to read the files at path (the client's
     absolute path) and check that they hold the bytes the client read (the digest)."""
     digest, source, where, content = scene
@@ -350,9 +350,11 @@ def _check_batch(scene, routes, clearance, samples, threads):
         text, files = content
         with _translated():
             checker = _checkers[digest] = _core.RouteChecker(text, source, ".", files)
+    no_rotations = np.zeros((0, 4))  # a route that translates
+    turns = rotations if rotations is not None else [None] * len(routes)
     with _translated():
-        no_rotations = np.zeros((0, 4))  # translations: the routes handed to check_routes are (k, 3)
-        return [json.loads(checker.check(route, no_rotations, clearance, samples, threads)) for route in routes]
+        return [json.loads(checker.check(route, no_rotations if turn is None else turn, clearance, samples, threads))
+                for route, turn in zip(routes, turns)]
 
 
 def _scene_on_workers(client, digest, source, text, files):
@@ -368,10 +370,13 @@ def _scene_on_workers(client, digest, source, text, files):
     return future
 
 
-def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=1, batch=None, send_scene=False):
+def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=1, batch=None, send_scene=False,
+                 rotations=None):
     """Checks every route of ``routes`` (a list of (k, 3) waypoint arrays) against ``scene`` (a
     dict or a scene file) on the cluster; returns their reports (as RouteChecker.check gives
-    them) in order. ``batch``: routes per task (default: two tasks per worker; more tasks cost
+    them) in order. ``rotations``: None (every route translates), or one entry per route: None,
+    or a (k, 4) array of unit quaternions w x y z, one per waypoint (legs between different
+    orientations turn, as with RouteChecker.check). ``batch``: routes per task (default: two tasks per worker; more tasks cost
     the scheduler more than they balance).
 
     The scene and its mesh files are read here. A scene given as a file is read again by each
@@ -385,10 +390,18 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         raise HullkitError(f"send_scene must be True or False, got {send_scene!r}")
     text, source, files = _self_contained(scene)
     digest = _digest(text, files)
-    routes = [np.ascontiguousarray(r, dtype=np.float64) for r in routes]
+    routes = [as_points(r, 3, f"routes[{k}]") for k, r in enumerate(routes)]
     for k, route in enumerate(routes):
-        if route.ndim != 2 or route.shape[1] != 3 or len(route) < 2:
+        if len(route) < 2:
             raise HullkitError(f"routes[{k}] must have shape (k, 3) with k >= 2, got {route.shape}")
+    if rotations is not None:
+        rotations = list(rotations)
+        if len(rotations) != len(routes):
+            raise HullkitError(f"rotations has {len(rotations)} entries for {len(routes)} routes (one per route, None for one that translates)")
+        rotations = [None if turn is None else as_points(turn, 4, f"rotations[{k}]") for k, turn in enumerate(rotations)]
+        for k, (route, turn) in enumerate(zip(routes, rotations)):
+            if turn is not None and len(turn) != len(route):
+                raise HullkitError(f"rotations[{k}] has {len(turn)} rows for the {len(route)} waypoints of routes[{k}]")
     if not routes:
         return []
     # A bad scene fails on the workers with the core's message (HullkitError), as it would here.
@@ -396,10 +409,13 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         workers = len(client.scheduler_info()["workers"]) if client is not None else os.cpu_count() or 1
         batch = math.ceil(len(routes) / (2 * max(1, workers)))
     batch = int(batch)
-    chunks = [routes[k:k + batch] for k in range(0, len(routes), batch)]
+    starts = range(0, len(routes), batch)
+    chunks = [routes[k:k + batch] for k in starts]
+    turns = [None if rotations is None else rotations[k:k + batch] for k in starts]
     if client is None:
         shared = delayed((digest, source, None, (text, files)), traverse=False)
-        results = dask.compute(*[delayed(_check_batch)(shared, chunk, clearance, samples, threads) for chunk in chunks])
+        results = dask.compute(*[delayed(_check_batch)(shared, chunk, turn, clearance, samples, threads)
+                                 for chunk, turn in zip(chunks, turns)])
         return [report for part in results for report in part]
     sent = _scattered.get((client.id, digest))
     if send_scene or not isinstance(scene, (str, os.PathLike)) or (sent is not None and sent.status == "finished"):
@@ -410,8 +426,8 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     pending = list(range(len(chunks)))
     from distributed import as_completed
     while pending:
-        futures = client.map(_check_batch, [shared] * len(pending), [chunks[k] for k in pending], clearance=clearance,
-                             samples=samples, threads=threads, pure=False)
+        futures = client.map(_check_batch, [shared] * len(pending), [chunks[k] for k in pending], [turns[k] for k in pending],
+                             clearance=clearance, samples=samples, threads=threads, pure=False)
         position = {future.key: k for k, future in zip(pending, futures)}
         missing = []
         # Each batch's reports fetched as soon as it is done, so that the fetches (and, on a first

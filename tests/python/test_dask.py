@@ -111,6 +111,38 @@ def test_route_batches_equal_local_checks(client):
     bad = {"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": [], "margn": 1}
     with pytest.raises(hullkit.HullkitError, match="margn"):  # raised on a worker, with the core's message
         hullkit.dask.check_routes(bad, routes[:3], client=client)
+    with pytest.raises(hullkit.HullkitError, match="routes\\[2\\] must be numbers"):
+        hullkit.dask.check_routes(scene, [routes[0], routes[1], [["a", "b", "c"]] * 2], client=client)
+
+
+def unit_quaternions(rng, count):
+    q = rng.normal(size=(count, 4))
+    return q / np.linalg.norm(q, axis=1, keepdims=True)
+
+
+def test_route_batches_with_legs_that_turn(client):
+    # Some routes turn (a unit quaternion per waypoint), others translate (None): the reports of
+    # a local RouteChecker, on the cluster and on Dask's local scheduler.
+    scene = os.path.join(DATA, "route", "crane.json")
+    rng = np.random.default_rng(8)
+    routes = [np.cumsum(rng.normal(scale=3.0, size=(4, 3)), axis=0) for _ in range(40)]
+    rotations = [unit_quaternions(rng, 4) if k % 3 else None for k in range(40)]
+    checker = hullkit.RouteChecker(scene)
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    expected = [strip(checker.check(route, rotations=turn)) for route, turn in zip(routes, rotations)]
+    assert any("rotation" in leg for r in expected for leg in r["legs"])  # the turning legs report their orientation
+    assert [strip(r) for r in hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations)] == expected
+    assert [strip(r) for r in hullkit.dask.check_routes(scene, routes, rotations=rotations, batch=7)] == expected
+    with pytest.raises(hullkit.HullkitError, match="39 entries for 40 routes"):
+        hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations[:39])
+    with pytest.raises(hullkit.HullkitError, match="rotations\\[1\\] has 3 rows for the 4 waypoints"):
+        hullkit.dask.check_routes(scene, routes, client=client, rotations=[None, rotations[1][:3]] + rotations[2:])
+    with pytest.raises(hullkit.HullkitError, match="rotations\\[2\\] must have shape"):
+        hullkit.dask.check_routes(scene, routes, client=client, rotations=[None, None, np.ones((4, 3))] + rotations[3:])
+    not_unit = [None] * 40
+    not_unit[5] = np.full((4, 4), 0.9)
+    with pytest.raises(hullkit.HullkitError):  # raised on a worker, with the core's message
+        hullkit.dask.check_routes(scene, routes, client=client, rotations=not_unit)
 
 
 def scene_digest(scene):
@@ -177,11 +209,11 @@ def test_a_worker_uses_a_scene_file_only_if_it_holds_the_bytes_read_here(tmp_pat
     digest = scene_digest(str(path))
     # The same bytes: checked there. Other bytes (the file changed after it was read here, or
     # another machine's file at the same path): the client is asked to send its bytes.
-    assert hullkit.dask._check_batch((digest, "scene.json", str(path), None), route, True, 0, 1)[0]["clear"]
+    assert hullkit.dask._check_batch((digest, "scene.json", str(path), None), route, None, True, 0, 1)[0]["clear"]
     other = hashlib.sha256(b"other").hexdigest()
-    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(path), None), route, True, 0, 1),
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(path), None), route, None, True, 0, 1),
                       hullkit.dask._SceneNotHere)
-    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(tmp_path / "gone.json"), None), route, True, 0, 1),
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(tmp_path / "gone.json"), None), route, None, True, 0, 1),
                       hullkit.dask._SceneNotHere)
 
 
