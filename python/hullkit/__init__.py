@@ -8,6 +8,8 @@ over a Dask cluster.
 """
 import json as _json
 import os as _os
+import re as _re
+import uuid as _uuid
 
 import numpy as _np
 
@@ -228,6 +230,19 @@ def verify_delaunay(points, triangles):
 
 # ---- route checking ------------------------------------------------------------------------------
 
+def _json_rows(array):
+    """json.dumps(array.tolist()) for a 2-D array of finite floats or of integers, byte for byte
+    but written by the core; None for any other array (json.dumps writes it)."""
+    if array.ndim != 2 or array.size == 0:
+        return None
+    if array.dtype.kind == "f":
+        values = _np.ascontiguousarray(array, dtype=_np.float64)
+        return _core.json_rows_float64(values) if _np.isfinite(values).all() else None
+    if array.dtype.kind == "i" or (array.dtype.kind == "u" and array.dtype.itemsize < 8):
+        return _core.json_rows_int64(_np.ascontiguousarray(array, dtype=_np.int64))
+    return None
+
+
 def _scene_json(scene):
     """(json text, source name, directory for mesh files) of a scene given as a dict (numpy
     arrays allowed) or a path to a JSON file."""
@@ -242,16 +257,27 @@ def _scene_json(scene):
             raise HullkitError(f"{path}: not UTF-8 text") from None
         return text, path, _os.path.dirname(path) or "."
     if isinstance(scene, dict):
+        # 2-D numeric arrays (meshes) are written by the core, into the places of unique strings:
+        # the same text as json.dumps of their lists, so the same scene and the same messages.
+        marker, rows = f"hullkit-rows-{_uuid.uuid4().hex}-", []
+
         def plain(value):
             if isinstance(value, _np.ndarray):
-                return value.tolist()
+                text = _json_rows(value)
+                if text is None:
+                    return value.tolist()
+                rows.append(text)
+                return f"{marker}{len(rows) - 1}"
             if isinstance(value, (_np.integer, _np.floating)):
                 return value.item()
             raise TypeError(f"{type(value).__name__} is not JSON")
         try:
-            return _json.dumps(scene, default=plain, allow_nan=True), "scene", "."
+            text = _json.dumps(scene, default=plain, allow_nan=True)
         except (TypeError, ValueError) as error:
             raise HullkitError(f"scene: {error}") from None
+        if rows:
+            text = _re.sub(f'"{marker}([0-9]+)"', lambda m: rows[int(m.group(1))], text)
+        return text, "scene", "."
     raise HullkitError(f"a scene is a dict or the path of a JSON file, got {type(scene).__name__}")
 
 

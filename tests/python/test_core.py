@@ -117,6 +117,41 @@ def test_route_scene_as_a_dict_with_numpy_meshes():
     assert clear["clear"] and clear["legs"][0]["clearance"] == pytest.approx(5.0)  # y 10 against the wall's 5
 
 
+def test_numpy_meshes_are_written_as_json_dumps_writes_them():
+    # The core writes a dict scene's 2-D arrays (hullkit._json_rows): byte for byte what json.dumps
+    # writes of their lists (Python's float repr: -0.0, 1e-05, 1e+16, subnormals, huge values);
+    # other arrays (non-finite, 1-D, booleans, uint64) are left to json.dumps.
+    rng = np.random.default_rng(6)
+    floats = rng.normal(size=(4000, 3)) * np.exp2(rng.integers(-1074, 1000, size=(4000, 3)))
+    floats[:7] = [[-0.0, 0.0, 5e-324], [1e300, -1.7976931348623157e308, 2.0**63 + 2048], [0.1, 1 / 3, 1e22],
+                  [123456789012345680000.0, 1e-7, -2.5], [float(2**53 + 1), 1.0, -1.0], [1e16, 1e15, 0.0001],
+                  [0.00001, 123.456, 1234567890123456.7]]
+    for array in (floats, (rng.normal(size=(500, 3)) * 1e3).astype(np.float32), rng.integers(-2**62, 2**62, size=(300, 3)),
+                  np.arange(12, dtype=np.uint16).reshape(4, 3), np.ones((2, 5))):
+        assert hullkit._json_rows(array) == json.dumps(array.tolist())
+    assert hullkit._json_rows(np.array([[1.0, np.nan, 0.0]])) is None
+    assert hullkit._json_rows(np.array([1.0, 2.0])) is None
+    assert hullkit._json_rows(np.array([[True, False]])) is None
+    assert hullkit._json_rows(np.array([[2**63]], dtype=np.uint64)) is None
+    # A scene with them: the same reports as its json.dumps text, and the same message for NaN.
+    box = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float) - 0.5
+    faces = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                      [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    wall = floats[5:905] * 0 + rng.random((900, 3)) * [0.1, 8, 8] + [4, -4, -4]
+    scene = {"traverse": {"parts": [{"name": "box", "vertices": box, "triangles": faces}]},
+             "obstacles": [{"name": "cloud", "vertices": wall, "triangles": rng.integers(0, 900, size=(600, 3))}]}
+    plain = json.loads(json.dumps(scene, default=lambda a: a.tolist()))
+    route = [[0.0, 0, 0], [9, 0, 0], [9, 6, 0]]
+    assert hullkit.RouteChecker(scene).check(route)["legs"] == hullkit.RouteChecker(plain).check(route)["legs"]
+    scene["obstacles"][0]["vertices"] = wall.copy()
+    scene["obstacles"][0]["vertices"][7, 1] = np.nan
+    with pytest.raises(hullkit.HullkitError) as error:
+        hullkit.RouteChecker(scene)
+    with pytest.raises(hullkit.HullkitError) as error_of_lists:
+        hullkit.RouteChecker(json.loads(json.dumps(scene, default=lambda a: a.tolist())))
+    assert str(error.value) == str(error_of_lists.value)
+
+
 def test_route_errors_name_the_field():
     with pytest.raises(hullkit.HullkitError, match="margn|unknown"):
         hullkit.check_route({"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]},
