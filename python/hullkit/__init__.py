@@ -235,7 +235,7 @@ def _json_rows(array):
     but written by the core; None for any other array (json.dumps writes it)."""
     if array.ndim != 2 or array.size == 0:
         return None
-    if array.dtype.kind == "f":
+    if array.dtype.kind == "f" and array.dtype.itemsize <= 8:  # long double: left to json.dumps
         values = _np.ascontiguousarray(array, dtype=_np.float64)
         return _core.json_rows_float64(values) if _np.isfinite(values).all() else None
     if array.dtype.kind == "i" or (array.dtype.kind == "u" and array.dtype.itemsize < 8):

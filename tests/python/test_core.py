@@ -132,6 +132,7 @@ def test_numpy_meshes_are_written_as_json_dumps_writes_them():
     assert hullkit._json_rows(np.array([[1.0, np.nan, 0.0]])) is None
     assert hullkit._json_rows(np.array([1.0, 2.0])) is None
     assert hullkit._json_rows(np.array([[True, False]])) is None
+    assert hullkit._json_rows(np.ones((2, 3), dtype=np.longdouble)) is None
     assert hullkit._json_rows(np.array([[2**63]], dtype=np.uint64)) is None
     # A scene with them: the same reports as its json.dumps text, and the same message for NaN.
     box = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float) - 0.5
