@@ -1,11 +1,12 @@
 """hullkit.dask on a real local cluster: 2 worker processes, 1 thread each. The distributed hull
 equals hullkit.hull of the whole cloud bit for bit (Dask arrays and lists of files), route
-batches equal local checks, and a worker killed mid-job changes nothing (Dask recomputes what
-was lost)."""
+batches equal local checks (the scene read by the workers or sent to them), and a worker killed
+mid-job, a hull or route batches, changes nothing (Dask recomputes what was lost)."""
 import hashlib
 import json
 import os
 import signal
+import threading
 import time
 
 import numpy as np
@@ -271,3 +272,38 @@ def test_a_worker_killed_mid_job_changes_nothing(client):
     merged = future.result(timeout=300)
     same_hull(hullkit.dask.DaskHull(merged), expected)
     client.wait_for_workers(2, timeout=60)
+
+
+@pytest.mark.parametrize("send_scene", [False, True])
+def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, send_scene):
+    # The nanny restarts the killed worker; its batches run again, on the other worker or on the
+    # new one, which reads the scene file itself (or gets the bytes sent) and builds its checker.
+    scene = tmp_path / "scene.json"
+    crane = json.load(open(os.path.join(DATA, "route", "crane.json")))
+    for shape in crane["traverse"]["parts"] + crane["obstacles"]:
+        if "mesh" in shape:  # the crane's mesh files, where they are
+            shape["mesh"] = os.path.join(DATA, "route", shape["mesh"])
+    crane["margin"] = 0.05 if send_scene else 0.1  # new bytes: no worker has this checker yet
+    scene.write_text(json.dumps(crane))
+    rng = np.random.default_rng(12)
+    routes = [np.cumsum(rng.normal(scale=2.0, size=(6, 3)), axis=0) for _ in range(3000)]
+    checker = hullkit.RouteChecker(str(scene))
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    expected = [strip(checker.check(route)) for route in routes]
+    pids = client.run(os.getpid)
+    done = {}
+    job = threading.Thread(target=lambda: done.update(reports=hullkit.dask.check_routes(
+        str(scene), routes, client=client, batch=50, send_scene=send_scene)))
+    job.start()
+    deadline = time.time() + 60
+    while not client.processing() or not any(client.processing().values()):
+        assert time.time() < deadline, "no batch started"
+        time.sleep(0.005)
+    time.sleep(0.05)  # the workers have their checkers and are checking legs
+    assert job.is_alive(), "the job finished before a worker could be killed"
+    victim = next(iter(pids.values()))
+    os.kill(victim, signal.SIGKILL)
+    job.join(timeout=300)
+    assert [strip(r) for r in done["reports"]] == expected
+    client.wait_for_workers(2, timeout=60)
+    assert victim not in client.run(os.getpid).values()  # it was killed, and replaced
