@@ -335,9 +335,10 @@ def _scene_here(where):
 
 @_on_worker
 def _check_batch(scene, routes, rotations, clearance, samples, threads):
-    """The reports of ``routes`` (``rotations``: None, or an array or None per route). ``scene``: (digest, source name, path, content) with content
-    (text, files) when sent, or None when the worker is to read the files at path (the client's
-    absolute path) and check that they hold the bytes the client read (the digest)."""
+    """The reports of ``routes`` (``rotations``: None, or an array or None per route).
+    ``scene``: (digest, source name, path, content) with content (text, files) when sent, or None
+    when the worker is to read the files at path (the client's absolute path) and check that they
+    hold the bytes the client read (the digest)."""
     digest, source, where, content = scene
     checker = _checkers.get(digest)
     if checker is None:
@@ -376,8 +377,8 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     dict or a scene file) on the cluster; returns their reports (as RouteChecker.check gives
     them) in order. ``rotations``: None (every route translates), or one entry per route: None,
     or a (k, 4) array of unit quaternions w x y z, one per waypoint (legs between different
-    orientations turn, as with RouteChecker.check). ``batch``: routes per task (default: two tasks per worker; more tasks cost
-    the scheduler more than they balance).
+    orientations turn, as with RouteChecker.check). ``batch``: routes per task (default: two
+    tasks per worker; more tasks cost the scheduler more than they balance).
 
     The scene and its mesh files are read here. A scene given as a file is read again by each
     worker from the same path when it can (a shared or local file system), and used there only

@@ -586,28 +586,29 @@ void append_python_float(double value, std::string* out) {
     const char* end = std::to_chars(text, text + sizeof text, value, std::chars_format::scientific).ptr;
     const char* p = text;
     if (*p == '-') out->push_back(*p++);
-    std::string digits;
+    char digits[24];  // at most 17 significant digits
+    int count = 0;
     for (; p < end && *p != 'e'; ++p) {
-        if (*p != '.') digits.push_back(*p);
+        if (*p != '.') digits[count++] = *p;
     }
     int exponent = 0;  // "e+20" -> 20 (the text is not NUL-terminated)
     const bool negative_exponent = p + 1 < end && p[1] == '-';
     std::from_chars(p + 2, end, exponent);
     if (negative_exponent) exponent = -exponent;
     const int point = exponent + 1;           // digits d1 d2 ... are 0.d1d2... x 10^point
-    const int count = static_cast<int>(digits.size());
+    const auto n = [](int k) { return static_cast<std::size_t>(k); };
     if (point > -4 && point <= 16) {
         if (point <= 0) {
-            out->append("0.").append(static_cast<std::size_t>(-point), '0').append(digits);
+            out->append("0.").append(n(-point), '0').append(digits, n(count));
         } else if (point >= count) {
-            out->append(digits).append(static_cast<std::size_t>(point - count), '0').append(".0");
+            out->append(digits, n(count)).append(n(point - count), '0').append(".0");
         } else {
-            out->append(digits, 0, static_cast<std::size_t>(point)).append(".").append(digits, static_cast<std::size_t>(point));
+            out->append(digits, n(point)).append(".").append(digits + point, n(count - point));
         }
         return;
     }
     out->push_back(digits[0]);
-    if (count > 1) out->append(".").append(digits, 1);
+    if (count > 1) out->append(".").append(digits + 1, n(count - 1));
     const int shown = point - 1;
     out->append(shown < 0 ? "e-" : "e+");
     const std::string magnitude = std::to_string(shown < 0 ? -shown : shown);

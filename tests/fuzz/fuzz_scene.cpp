@@ -17,13 +17,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/scene_io.hpp"
 #include "route/scene_arrays.hpp"
+#include "../route/scene_bits.hpp"
 
 namespace {
 
@@ -108,25 +108,6 @@ bool same_meshes(const std::vector<hullkit::TriangleMesh>& a, const std::vector<
     return true;
 }
 
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-/// Equal bit for bit (-0 and +0 differ).
-bool same_scene_bits(const hullkit::Scene& a, const hullkit::Scene& b) {
-    const auto meshes = [](const std::vector<hullkit::TriangleMesh>& x, const std::vector<hullkit::TriangleMesh>& y) {
-        if (x.size() != y.size()) return false;
-        for (std::size_t m = 0; m < x.size(); ++m) {
-            if (x[m].name != y[m].name || !same_bytes(x[m].xyz, y[m].xyz) || !same_bytes(x[m].triangles, y[m].triangles)) return false;
-        }
-        return true;
-    };
-    return meshes(a.parts, b.parts) && meshes(a.obstacles, b.obstacles) && same_bytes(a.route, b.route) &&
-           same_bytes(a.rotations, b.rotations) && std::memcmp(a.pivot, b.pivot, sizeof a.pivot) == 0 &&
-           std::memcmp(&a.margin, &b.margin, sizeof a.margin) == 0;
-}
-
 void run(const std::string& text, const std::string* mesh_bytes, bool require_route) {
     std::size_t loads = 0;
     const hullkit::MeshLoader loader = [&](const std::string& path, std::string* bytes, std::string* error) {
@@ -143,7 +124,7 @@ void run(const std::string& text, const std::string* mesh_bytes, bool require_ro
     options.require_route = require_route;
     const hullkit::SceneResult result = hullkit::parse_scene(text, "fuzz.json", loader, options);
     const hullkit::SceneResult tree = hullkit::route_detail::parse_scene_tree_only(text, "fuzz.json", loader, options);
-    if (tree.error != result.error || tree.warnings != result.warnings || !same_scene_bits(tree.scene, result.scene)) {
+    if (tree.error != result.error || tree.warnings != result.warnings || !hullkit_test::same_scene_bits(tree.scene, result.scene)) {
         std::abort();
     }
     if (!result.ok()) {

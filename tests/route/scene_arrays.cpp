@@ -3,12 +3,13 @@
 // a node of the JSON tree (parse_scene_tree_only); tricky numbers, indices, layouts and keys.
 #include "route/scene_arrays.hpp"
 
+#include "scene_bits.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -16,20 +17,6 @@
 namespace {
 
 using hullkit::route_detail::PackedMeshArrays;
-
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-void require_same_meshes(const std::vector<hullkit::TriangleMesh>& a, const std::vector<hullkit::TriangleMesh>& b) {
-    REQUIRE(a.size() == b.size());
-    for (std::size_t m = 0; m < a.size(); ++m) {
-        CHECK(a[m].name == b[m].name);
-        CHECK(same_bytes(a[m].xyz, b[m].xyz));  // bit for bit: -0 and +0 differ
-        CHECK(same_bytes(a[m].triangles, b[m].triangles));
-    }
-}
 
 /// parse_scene (with the fast path) and the tree-only reader agree on `text`; returns the result.
 hullkit::SceneResult both_ways(const std::string& text) {
@@ -39,10 +26,7 @@ hullkit::SceneResult both_ways(const std::string& text) {
     const hullkit::SceneResult tree = hullkit::route_detail::parse_scene_tree_only(text, "s.json", no_files);
     CHECK(fast.error == tree.error);
     CHECK(fast.warnings == tree.warnings);
-    require_same_meshes(fast.scene.parts, tree.scene.parts);
-    require_same_meshes(fast.scene.obstacles, tree.scene.obstacles);
-    CHECK(same_bytes(fast.scene.route, tree.scene.route));
-    CHECK(std::memcmp(&fast.scene.margin, &tree.scene.margin, sizeof(double)) == 0);
+    CHECK(hullkit_test::same_scene_bits(fast.scene, tree.scene));  // -0 and +0 differ
     return fast;
 }
 

@@ -83,10 +83,8 @@ struct LargeArrayAllocator {
         }
     }
 
-    /// resize(n) and sized construction leave elements unwritten (default-initialized): every
-    /// working array is written in full before it is read, and those writes, often on the
-    /// threads, then touch its pages first, instead of a zero fill on one thread. An explicit
-    /// value (resize(n, 0), assign(n, v)) is written as usual.
+    /// resize(n) and sized construction default-initialize (see the top of this file); an
+    /// explicit value is written as usual.
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
         ::new (static_cast<void*>(p)) U;

@@ -9,16 +9,14 @@
 #include <string_view>
 #include <utility>
 
-// fast_float (Debian libfast-float-dev, header-only): correctly rounded, as strtod. Without it
-// nothing is taken out of the text and every number goes through the JSON parser.
-#if __has_include(<fast_float/fast_float.h>)
-#include <fast_float/fast_float.h>
-#define HULLKIT_SCENE_FAST_FLOAT 1
-#endif
+// parse_count, and fast_float when it is there (HULLKIT_HAVE_FAST_FLOAT): correctly rounded, as
+// strtod. Without fast_float nothing is taken out of the text and every number goes through the
+// JSON parser.
+#include "io/text_fields.hpp"
 
 namespace hullkit::route_detail {
 
-#if defined(HULLKIT_SCENE_FAST_FLOAT)
+#if defined(HULLKIT_HAVE_FAST_FLOAT)
 namespace {
 
 // JSON's whitespace, and only it.
@@ -56,17 +54,8 @@ const char* number_end(const char* p, const char* end, bool* integer) {
     return p;
 }
 
-/// Digits [p, stop) as an unsigned 64-bit value; false on overflow.
-bool digits_value(const char* p, const char* stop, std::uint64_t* out) {
-    std::uint64_t value = 0;
-    for (; p < stop; ++p) {
-        const std::uint64_t digit = static_cast<std::uint64_t>(*p - '0');
-        if (value > (std::numeric_limits<std::uint64_t>::max() - digit) / 10) return false;
-        value = value * 10 + digit;
-    }
-    *out = value;
-    return true;
-}
+/// [p, stop) as a string_view (for io::text::parse_count: digits only, up to a limit).
+std::string_view text_of(const char* p, const char* stop) { return {p, static_cast<std::size_t>(stop - p)}; }
 
 /// The number [p, stop) (valid JSON) as the JSON tree's get<double>() gives it: an integer that
 /// fits a 64-bit integer is converted from that integer (so "-0" is +0), anything else is the
@@ -75,7 +64,7 @@ double number_value(const char* p, const char* stop, bool integer) {
     if (integer) {
         const bool negative = *p == '-';
         std::uint64_t magnitude = 0;
-        if (digits_value(p + (negative ? 1 : 0), stop, &magnitude)) {
+        if (io::text::parse_count(text_of(p + (negative ? 1 : 0), stop), std::numeric_limits<std::uint64_t>::max(), &magnitude)) {
             if (!negative) return static_cast<double>(magnitude);
             if (magnitude <= std::uint64_t{1} << 63) {
                 // Two's complement: -2^63 included. Zero stays +0 as an integer does.
@@ -127,7 +116,7 @@ const char* triples(const char* p, const char* end, Take&& take) {
 bool pack_mesh_arrays(const std::string& text, std::string* packed_text, PackedMeshArrays* arrays) {
     *arrays = PackedMeshArrays{};
     packed_text->clear();
-#if !defined(HULLKIT_SCENE_FAST_FLOAT)
+#if !defined(HULLKIT_HAVE_FAST_FLOAT)
     return false;
 #else
     const char* p = text.data();
@@ -170,7 +159,7 @@ bool pack_mesh_arrays(const std::string& text, std::string* packed_text, PackedM
         } else {
             stop = triples(value, end, [&indices](const char* a, const char* b, bool integer) {
                 std::uint64_t i = 0;
-                if (!integer || *a == '-' || !digits_value(a, b, &i) || i > 0xffffffffULL) return false;
+                if (!integer || !io::text::parse_count(text_of(a, b), 0xffffffffULL, &i)) return false;  // '-' is no digit
                 indices.push_back(static_cast<std::uint32_t>(i));
                 return true;
             });

@@ -298,8 +298,8 @@ public:
     /// The array read ahead for a "vertices" or "triangles" value (a binary node in the tree
     /// stands for it: JSON text cannot make one), or null for a value in the tree.
     template <class T>
-    std::vector<T>* packed(const json& value, std::vector<std::vector<T>>& arrays) {
-        if (!value.is_binary() || !packed_) return nullptr;
+    static std::vector<T>* packed(const json& value, std::vector<std::vector<T>>& arrays) {
+        if (!value.is_binary()) return nullptr;
         const std::uint64_t slot = value.get_binary().subtype();
         return slot < arrays.size() ? &arrays[slot] : nullptr;
     }
@@ -312,8 +312,8 @@ public:
         std::vector<std::uint32_t>* packed_indices = packed_ ? packed(triangles, packed_->triangles) : nullptr;
         if (!vertices.is_array() && !packed_xyz) return fail(path + ".vertices", std::string("expected an array of [x, y, z], got ") + type_name(vertices));
         if (!triangles.is_array() && !packed_indices) return fail(path + ".triangles", std::string("expected an array of [i, j, k], got ") + type_name(triangles));
-        const std::size_t vertex_count = packed_xyz ? packed_xyz->size() / 3 : vertices.size();
-        if (vertex_count > 0xffffffffULL) return fail(path + ".vertices", "too many vertices");
+        const std::uint64_t count = packed_xyz ? packed_xyz->size() / 3 : vertices.size();
+        if (count > 0xffffffffULL) return fail(path + ".vertices", "too many vertices");
         if (packed_xyz) {
             mesh->xyz = std::move(*packed_xyz);  // every [x, y, z] finite, checked as it was read
         } else {
@@ -322,7 +322,6 @@ public:
                 if (!vec3_at(vertices[i], [&] { return path + ".vertices[" + std::to_string(i) + "]"; }, &mesh->xyz)) return false;
             }
         }
-        const std::uint64_t count = vertex_count;
         if (packed_indices) {  // non-empty, every index an integer below 2^32
             for (std::size_t i = 0; i < packed_indices->size(); ++i) {
                 if ((*packed_indices)[i] >= count) {
