@@ -334,8 +334,12 @@ def _scene_here(where):
 
 
 @_on_worker
-def _check_batch(scene, routes, rotations, clearance, samples, threads):
-    """The reports of ``routes`` (``rotations``: None, or an array or None per route).
+def _check_batch(scene, points, sizes, turns, turn_sizes, clearance, samples, threads):
+    """The reports of a batch of routes, as the text of a JSON array (one frame to send back,
+    parsed by the client; a list of dicts would be serialized object by object). The routes come
+    packed the same way: ``points`` (n, 3) holds every route's waypoints in turn, ``sizes`` how
+    many each has; ``turns`` every turning route's rotations (k, 4) in turn, ``turn_sizes`` how
+    many each route has (0: it translates).
     ``scene``: (digest, source name, path, content) with content (text, files) when sent, or None
     when the worker is to read the files at path (the client's absolute path) and check that they
     hold the bytes the client read (the digest)."""
@@ -351,11 +355,20 @@ def _check_batch(scene, routes, rotations, clearance, samples, threads):
         text, files = content
         with _translated():
             checker = _checkers[digest] = _core.RouteChecker(text, source, ".", files)
-    no_rotations = np.zeros((0, 4))  # a route that translates
-    turns = rotations if rotations is not None else [None] * len(routes)
+    ends, turn_ends = np.cumsum(sizes), np.cumsum(turn_sizes)
+    reports = []
     with _translated():
-        return [json.loads(checker.check(route, no_rotations if turn is None else turn, clearance, samples, threads))
-                for route, turn in zip(routes, turns)]
+        for end, size, turn_end, turn_size in zip(ends.tolist(), sizes.tolist(), turn_ends.tolist(), turn_sizes.tolist()):
+            reports.append(checker.check(points[end - size:end], turns[turn_end - turn_size:turn_end], clearance, samples, threads))
+    return "[" + ",".join(reports) + "]"
+
+
+def _packed(routes, rotations):
+    """A batch of routes (and their rotations or None) as _check_batch takes them: four arrays."""
+    sizes = np.array([len(route) for route in routes], dtype=np.int64)
+    turn_sizes = np.array([0 if turn is None else len(turn) for turn in rotations], dtype=np.int64)
+    turning = [turn for turn in rotations if turn is not None]
+    return (np.concatenate(routes), sizes, np.concatenate(turning) if turning else np.zeros((0, 4)), turn_sizes)
 
 
 def _scene_on_workers(client, digest, source, text, files):
@@ -411,13 +424,13 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         batch = math.ceil(len(routes) / (2 * max(1, workers)))
     batch = int(batch)
     starts = range(0, len(routes), batch)
-    chunks = [routes[k:k + batch] for k in starts]
-    turns = [None if rotations is None else rotations[k:k + batch] for k in starts]
+    if rotations is None:
+        rotations = [None] * len(routes)
+    chunks = [_packed(routes[k:k + batch], rotations[k:k + batch]) for k in starts]
     if client is None:
         shared = delayed((digest, source, None, (text, files)), traverse=False)
-        results = dask.compute(*[delayed(_check_batch)(shared, chunk, turn, clearance, samples, threads)
-                                 for chunk, turn in zip(chunks, turns)])
-        return [report for part in results for report in part]
+        results = dask.compute(*[delayed(_check_batch)(shared, *chunk, clearance, samples, threads) for chunk in chunks])
+        return [report for part in results for report in json.loads(part)]
     sent = _scattered.get((client.id, digest))
     if send_scene or not isinstance(scene, (str, os.PathLike)) or (sent is not None and sent.status == "finished"):
         shared = _scene_on_workers(client, digest, source, text, files)
@@ -427,7 +440,8 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     pending = list(range(len(chunks)))
     from distributed import as_completed
     while pending:
-        futures = client.map(_check_batch, [shared] * len(pending), [chunks[k] for k in pending], [turns[k] for k in pending],
+        # One map for every batch: each submission also walks the stack (for the dashboard).
+        futures = client.map(_check_batch, [shared] * len(pending), *zip(*[chunks[k] for k in pending]),
                              clearance=clearance, samples=samples, threads=threads, pure=False)
         position = {future.key: k for k, future in zip(pending, futures)}
         missing = []
@@ -437,7 +451,7 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
             if isinstance(part, _SceneNotHere):
                 missing.append(position[future.key])
             else:
-                results[position[future.key]] = part
+                results[position[future.key]] = json.loads(part)
         pending = sorted(missing)
         if pending:  # some workers could not read the scene: it is sent to every worker
             shared = _scene_on_workers(client, digest, source, text, files)

@@ -126,8 +126,9 @@ def test_route_batches_with_legs_that_turn(client):
     # a local RouteChecker, on the cluster and on Dask's local scheduler.
     scene = os.path.join(DATA, "route", "crane.json")
     rng = np.random.default_rng(8)
-    routes = [np.cumsum(rng.normal(scale=3.0, size=(4, 3)), axis=0) for _ in range(40)]
-    rotations = [unit_quaternions(rng, 4) if k % 3 else None for k in range(40)]
+    # Routes of 2 to 7 waypoints: the batches pack them (and their rotations) into flat arrays.
+    routes = [np.cumsum(rng.normal(scale=3.0, size=(2 + k % 6, 3)), axis=0) for k in range(40)]
+    rotations = [unit_quaternions(rng, len(route)) if k % 3 else None for k, route in enumerate(routes)]
     checker = hullkit.RouteChecker(scene)
     strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
     expected = [strip(checker.check(route, rotations=turn)) for route, turn in zip(routes, rotations)]
@@ -136,12 +137,12 @@ def test_route_batches_with_legs_that_turn(client):
     assert [strip(r) for r in hullkit.dask.check_routes(scene, routes, rotations=rotations, batch=7)] == expected
     with pytest.raises(hullkit.HullkitError, match="39 entries for 40 routes"):
         hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations[:39])
-    with pytest.raises(hullkit.HullkitError, match="rotations\\[1\\] has 3 rows for the 4 waypoints"):
-        hullkit.dask.check_routes(scene, routes, client=client, rotations=[None, rotations[1][:3]] + rotations[2:])
+    with pytest.raises(hullkit.HullkitError, match="rotations\\[1\\] has 2 rows for the 3 waypoints"):
+        hullkit.dask.check_routes(scene, routes, client=client, rotations=[None, rotations[1][:2]] + rotations[2:])
     with pytest.raises(hullkit.HullkitError, match="rotations\\[2\\] must have shape"):
         hullkit.dask.check_routes(scene, routes, client=client, rotations=[None, None, np.ones((4, 3))] + rotations[3:])
     not_unit = [None] * 40
-    not_unit[5] = np.full((4, 4), 0.9)
+    not_unit[5] = np.full((7, 4), 0.9)
     with pytest.raises(hullkit.HullkitError):  # raised on a worker, with the core's message
         hullkit.dask.check_routes(scene, routes, client=client, rotations=not_unit)
 
@@ -206,15 +207,15 @@ def test_route_batches_read_the_scene_on_the_workers_or_send_it(client, tmp_path
 def test_a_worker_uses_a_scene_file_only_if_it_holds_the_bytes_read_here(tmp_path):
     path = tmp_path / "scene.json"
     path.write_text(json.dumps({"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": []}))
-    route = [np.array([[0.0, 0, 0], [3, 0, 0]])]
+    batch = hullkit.dask._packed([np.array([[0.0, 0, 0], [3, 0, 0]])], [None])
     digest = scene_digest(str(path))
     # The same bytes: checked there. Other bytes (the file changed after it was read here, or
     # another machine's file at the same path): the client is asked to send its bytes.
-    assert hullkit.dask._check_batch((digest, "scene.json", str(path), None), route, None, True, 0, 1)[0]["clear"]
+    assert json.loads(hullkit.dask._check_batch((digest, "scene.json", str(path), None), *batch, True, 0, 1))[0]["clear"]
     other = hashlib.sha256(b"other").hexdigest()
-    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(path), None), route, None, True, 0, 1),
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(path), None), *batch, True, 0, 1),
                       hullkit.dask._SceneNotHere)
-    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(tmp_path / "gone.json"), None), route, None, True, 0, 1),
+    assert isinstance(hullkit.dask._check_batch((other, "scene.json", str(tmp_path / "gone.json"), None), *batch, True, 0, 1),
                       hullkit.dask._SceneNotHere)
 
 
