@@ -183,6 +183,7 @@ def run_routes(args):
     assert [strip(r) for r in again] == [strip(r) for r in reports]
     text = json.dumps([strip(r) for r in reports], sort_keys=True)
     return {"seconds": seconds, "warm_seconds": warm, "legs": sum(len(r["legs"]) for r in reports),
+            "scene": os.path.basename(args.scene), "route": os.path.basename(args.route),
             "not_clear": sum(leg["status"] != "clear" for r in reports for leg in r["legs"]),
             "reports": hashlib.sha256(text.encode()).hexdigest()[:16]}
 
