@@ -334,20 +334,21 @@ def _scene_here(where):
 
 
 @_on_worker
-def _check_batch(scene, points, sizes, turns, turn_sizes, clearance, samples, threads):
-    """The reports of a batch of routes, as the text of a JSON array (one frame to send back,
-    parsed by the client; a list of dicts would be serialized object by object). The routes come
-    packed the same way: ``points`` (n, 3) holds every route's waypoints in turn, ``sizes`` how
-    many each has; ``turns`` every turning route's rotations (k, 4) in turn, ``turn_sizes`` how
-    many each route has (0: it translates).
+def _check_batch(scene, points, sizes, turns, turn_sizes, where, clearance, samples, threads):
+    """The reports of a batch of routes or pieces of routes, as the text of a JSON array (one
+    frame to send back, parsed by the client; a list of dicts would be serialized object by
+    object). The pieces come packed the same way (_packed): ``points`` (n, 3) holds every piece's
+    waypoints in turn, ``sizes`` how many each has; ``turns`` every turning piece's rotations
+    (k, 4) in turn, ``turn_sizes`` how many each piece has (0: it translates); ``where`` (m, 2)
+    the route each piece belongs to and the index there of its first waypoint, for messages.
     ``scene``: (digest, source name, path, content) with content (text, files) when sent, or None
     when the worker is to read the files at path (the client's absolute path) and check that they
     hold the bytes the client read (the digest)."""
-    digest, source, where, content = scene
+    digest, source, where_scene, content = scene
     checker = _checkers.get(digest)
     if checker is None:
         if content is None:
-            content = _scene_here(where)
+            content = _scene_here(where_scene)
             if content is None or _digest(*content) != digest:
                 return _SceneNotHere()
         if len(_checkers) >= 8:
@@ -355,20 +356,73 @@ def _check_batch(scene, points, sizes, turns, turn_sizes, clearance, samples, th
         text, files = content
         with _translated():
             checker = _checkers[digest] = _core.RouteChecker(text, source, ".", files)
-    ends, turn_ends = np.cumsum(sizes), np.cumsum(turn_sizes)
+    ends, turn_ends = np.cumsum(sizes).tolist(), np.cumsum(turn_sizes).tolist()
     reports = []
-    with _translated():
-        for end, size, turn_end, turn_size in zip(ends.tolist(), sizes.tolist(), turn_ends.tolist(), turn_sizes.tolist()):
-            reports.append(checker.check(points[end - size:end], turns[turn_end - turn_size:turn_end], clearance, samples, threads))
+    try:
+        with _translated():
+            for end, size, turn_end, turn_size in zip(ends, sizes.tolist(), turn_ends, turn_sizes.tolist()):
+                reports.append(checker.check(points[end - size:end], turns[turn_end - turn_size:turn_end], clearance, samples, threads))
+    except HullkitError as error:  # the core counts waypoints from the piece's first
+        route, first = where[len(reports)].tolist()
+        message = _WAYPOINT.sub(lambda m: f"waypoint {int(m.group(1)) + first}", str(error), count=1)
+        raise HullkitError(f"routes[{route}]: {message}") from None
     return "[" + ",".join(reports) + "]"
 
 
-def _packed(routes, rotations):
-    """A batch of routes (and their rotations or None) as _check_batch takes them: four arrays."""
-    sizes = np.array([len(route) for route in routes], dtype=np.int64)
-    turn_sizes = np.array([0 if turn is None else len(turn) for turn in rotations], dtype=np.int64)
-    turning = [turn for turn in rotations if turn is not None]
-    return (np.concatenate(routes), sizes, np.concatenate(turning) if turning else np.zeros((0, 4)), turn_sizes)
+_WAYPOINT = re.compile(r"\bwaypoint (\d+)")
+
+
+def _batches(routes, rotations, legs):
+    """The routes cut into batches of ``legs`` legs (the last may have fewer): each a list of
+    pieces (route index, index of its first waypoint, waypoints, rotations or None). A route with
+    more legs than its batch has room for continues in the next batch, from the waypoint where
+    the piece before it ends: each leg is checked on its own, so the pieces' reports together
+    are the route's."""
+    batches, current, room = [], [], legs
+    for k, (route, turn) in enumerate(zip(routes, rotations)):
+        first, count = 0, len(route) - 1
+        while first < count:
+            take = min(count - first, room)
+            end = first + take + 1
+            current.append((k, first, route[first:end], None if turn is None else turn[first:end]))
+            first, room = first + take, room - take
+            if room == 0:
+                batches.append(current)
+                current, room = [], legs
+    if current:
+        batches.append(current)
+    return batches
+
+
+def _packed(pieces):
+    """A batch's pieces as _check_batch takes them: five arrays."""
+    sizes = np.array([len(points) for _, _, points, _ in pieces], dtype=np.int64)
+    turn_sizes = np.array([0 if turn is None else len(turn) for _, _, _, turn in pieces], dtype=np.int64)
+    turning = [turn for _, _, _, turn in pieces if turn is not None]
+    where = np.array([(route, first) for route, first, _, _ in pieces], dtype=np.int64).reshape(-1, 2)
+    return (np.concatenate([points for _, _, points, _ in pieces]), sizes,
+            np.concatenate(turning) if turning else np.zeros((0, 4)), turn_sizes, where)
+
+
+def _joined(batches, parts):
+    """The routes' reports from the batches' pieces and their reports (``parts``, one list per
+    batch): a route's later pieces are appended to its first piece's report. Its legs follow on;
+    it is clear when every piece is; its min_clearance is the least of the pieces' (None where a
+    piece has none), the first of equals, as the core takes it leg after leg; its seconds add up."""
+    reports = []
+    for pieces, part in zip(batches, parts):
+        for (_, first, _, _), report in zip(pieces, part):
+            if first == 0:
+                reports.append(report)
+                continue
+            whole = reports[-1]
+            whole["legs"].extend(report["legs"])
+            whole["clear"] = whole["clear"] and report["clear"]
+            least = report["min_clearance"]
+            if least is not None and (whole["min_clearance"] is None or least < whole["min_clearance"]):
+                whole["min_clearance"] = least
+            whole["seconds"] += report["seconds"]
+    return reports
 
 
 def _scene_on_workers(client, digest, source, text, files):
@@ -390,8 +444,13 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     dict or a scene file) on the cluster; returns their reports (as RouteChecker.check gives
     them) in order. ``rotations``: None (every route translates), or one entry per route: None,
     or a (k, 4) array of unit quaternions w x y z, one per waypoint (legs between different
-    orientations turn, as with RouteChecker.check). ``batch``: routes per task (default: two
-    tasks per worker; more tasks cost the scheduler more than they balance).
+    orientations turn, as with RouteChecker.check). ``batch``: legs per task (default: the legs
+    split evenly into two tasks per worker; more tasks cost the scheduler more than they
+    balance). Tasks take whole routes where they fit; a route longer than a task's room is cut
+    at a waypoint and continued in the next task (one long route is spread over the workers
+    too), and its pieces' reports are joined into one: the same report, leg for leg.
+    A route the core rejects (a coordinate out of range, a rotation that is not a unit
+    quaternion) raises HullkitError naming the route and the waypoint.
 
     The scene and its mesh files are read here. A scene given as a file is read again by each
     worker from the same path when it can (a shared or local file system), and used there only
@@ -418,19 +477,18 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
                 raise HullkitError(f"rotations[{k}] has {len(turn)} rows for the {len(route)} waypoints of routes[{k}]")
     if not routes:
         return []
+    if rotations is None:
+        rotations = [None] * len(routes)
     # A bad scene fails on the workers with the core's message (HullkitError), as it would here.
     if batch is None:
         workers = len(client.scheduler_info()["workers"]) if client is not None else os.cpu_count() or 1
-        batch = math.ceil(len(routes) / (2 * max(1, workers)))
-    batch = int(batch)
-    starts = range(0, len(routes), batch)
-    if rotations is None:
-        rotations = [None] * len(routes)
-    chunks = [_packed(routes[k:k + batch], rotations[k:k + batch]) for k in starts]
+        batch = math.ceil(sum(len(route) - 1 for route in routes) / (2 * max(1, workers)))
+    batches = _batches(routes, rotations, int(batch))
+    chunks = [_packed(pieces) for pieces in batches]
     if client is None:
         shared = delayed((digest, source, None, (text, files)), traverse=False)
         results = dask.compute(*[delayed(_check_batch)(shared, *chunk, clearance, samples, threads) for chunk in chunks])
-        return [report for part in results for report in json.loads(part)]
+        return _joined(batches, [json.loads(part) for part in results])
     sent = _scattered.get((client.id, digest))
     if send_scene or not isinstance(scene, (str, os.PathLike)) or (sent is not None and sent.status == "finished"):
         shared = _scene_on_workers(client, digest, source, text, files)
@@ -455,4 +513,4 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         pending = sorted(missing)
         if pending:  # some workers could not read the scene: it is sent to every worker
             shared = _scene_on_workers(client, digest, source, text, files)
-    return [report for part in results for report in part]
+    return _joined(batches, results)

@@ -1,6 +1,7 @@
 """hullkit.dask on a real local cluster: 2 worker processes, 1 thread each. The distributed hull
 equals hullkit.hull of the whole cloud bit for bit (Dask arrays and lists of files), route
-batches equal local checks (the scene read by the workers or sent to them), and a worker killed
+batches equal local checks (the scene read by the workers or sent to them; a long route cut
+between tasks, its pieces' reports joined), and a worker killed
 mid-job, a hull or route batches, changes nothing (Dask recomputes what was lost)."""
 import hashlib
 import json
@@ -147,6 +148,55 @@ def test_route_batches_with_legs_that_turn(client):
         hullkit.dask.check_routes(scene, routes, client=client, rotations=not_unit)
 
 
+def test_a_long_route_is_cut_between_workers_and_its_report_joined(client):
+    # One route of 400 legs, and one of 3 legs, cut into batches of 1, 7, 64 legs and the default
+    # (two tasks per worker): the same reports, leg for leg, as one local check of each route;
+    # also with turning legs, without clearances, and with samples.
+    scene = os.path.join(DATA, "route", "crane.json")
+    rng = np.random.default_rng(21)
+    routes = [np.cumsum(rng.normal(scale=2.0, size=(401, 3)), axis=0), np.cumsum(rng.normal(scale=2.0, size=(4, 3)), axis=0)]
+    rotations = [unit_quaternions(rng, 401), None]
+    rotations[0][::3] = rotations[0][1::3][: len(rotations[0][::3])]  # some legs keep their orientation
+    checker = hullkit.RouteChecker(scene)
+    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
+    for options in ({}, {"rotations": rotations}, {"clearance": False}, {"samples": 2}):
+        turns = options.get("rotations", [None, None])
+        local = {k: v for k, v in options.items() if k != "rotations"}
+        expected = [strip(checker.check(route, rotations=turn, **local)) for route, turn in zip(routes, turns)]
+        assert not expected[0]["clear"] and any(leg["status"] == "clear" for leg in expected[0]["legs"])
+        for batch in (1, 7, 64, None):
+            reports = hullkit.dask.check_routes(scene, routes, client=client, batch=batch, **options)
+            assert [strip(r) for r in reports] == expected, (options, batch)
+    # Without clearances a clear leg has none: a route that starts with 150 clear legs far from
+    # everything, then meets the crane, joins pieces with no min_clearance and pieces with one.
+    far = np.cumsum(np.full((150, 3), 0.5), axis=0) + 1000.0
+    mixed = np.concatenate([far[::-1], routes[0]])
+    assert checker.check(far, clearance=False)["min_clearance"] is None
+    expected = strip(checker.check(mixed, clearance=False))
+    assert expected["min_clearance"] is not None
+    for batch in (7, 64, None):
+        assert strip(hullkit.dask.check_routes(scene, [mixed], client=client, batch=batch, clearance=False)[0]) == expected
+    # The default batch: 403 legs in 4 tasks, the long route in all of them.
+    batches = hullkit.dask._batches(routes, [None, None], 101)
+    assert [[(route, first, len(points)) for route, first, points, _ in pieces] for pieces in batches] == [
+        [(0, 0, 102)], [(0, 101, 102)], [(0, 202, 102)], [(0, 303, 98), (1, 0, 4)]]
+    # A waypoint the core rejects, in the route's third piece: its index in the whole route.
+    bad = routes[0].copy()
+    bad[150, 1] = 1e301
+    with pytest.raises(hullkit.HullkitError) as here:
+        checker.check(bad)
+    with pytest.raises(hullkit.HullkitError) as there:
+        hullkit.dask.check_routes(scene, [routes[1], bad], client=client, batch=64)
+    assert "waypoint 150" in str(here.value) and str(there.value) == f"routes[1]: {here.value}"
+    not_unit = rotations[0].copy()
+    not_unit[333] *= 1.01
+    with pytest.raises(hullkit.HullkitError) as here:
+        checker.check(routes[0], rotations=not_unit)
+    with pytest.raises(hullkit.HullkitError) as there:
+        hullkit.dask.check_routes(scene, routes, rotations=[not_unit, None], batch=64)  # Dask's local scheduler
+    assert "waypoint 333" in str(here.value) and str(there.value) == f"routes[0]: {here.value}"
+
+
 def scene_digest(scene):
     text, _, files = hullkit.dask._self_contained(scene)
     return hullkit.dask._digest(text, files)
@@ -207,7 +257,7 @@ def test_route_batches_read_the_scene_on_the_workers_or_send_it(client, tmp_path
 def test_a_worker_uses_a_scene_file_only_if_it_holds_the_bytes_read_here(tmp_path):
     path = tmp_path / "scene.json"
     path.write_text(json.dumps({"traverse": {"parts": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}, "obstacles": []}))
-    batch = hullkit.dask._packed([np.array([[0.0, 0, 0], [3, 0, 0]])], [None])
+    batch = hullkit.dask._packed([(0, 0, np.array([[0.0, 0, 0], [3, 0, 0]]), None)])
     digest = scene_digest(str(path))
     # The same bytes: checked there. Other bytes (the file changed after it was read here, or
     # another machine's file at the same path): the client is asked to send its bytes.
@@ -294,7 +344,7 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
     pids = client.run(os.getpid)
     done = {}
     job = threading.Thread(target=lambda: done.update(reports=hullkit.dask.check_routes(
-        str(scene), routes, client=client, batch=50, send_scene=send_scene)))
+        str(scene), routes, client=client, batch=250, send_scene=send_scene)))  # 50 routes of 5 legs a task
     job.start()
     deadline = time.time() + 60
     while not client.processing() or not any(client.processing().values()):
