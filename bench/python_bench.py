@@ -7,7 +7,7 @@ call in a fresh process; it prints one JSON line.
     python_bench.py conversions --lib "float64 C"|"float32 Fortran" --n N   hullkit.hull outside the core
     python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
     python_bench.py files --mode single|dask --dir D            the hull of those files
-    python_bench.py routes --mode single|dask|dask-send --legs L --scene S --route R
+    python_bench.py routes --mode single|dask|dask-send --legs L --scene S --route R [--one-route]
 """
 import argparse
 import glob
@@ -151,7 +151,7 @@ def run_routes(args):
         waypoints = np.array(json.load(f), dtype=np.float64)
     # `legs` legs cycling through the route's waypoints, as routes of 10 legs each.
     cycle = np.array([waypoints[k % len(waypoints)] for k in range(args.legs + 1)])
-    routes = [cycle[k:k + 11] for k in range(0, args.legs, 10)]
+    routes = [cycle] if args.one_route else [cycle[k:k + 11] for k in range(0, args.legs, 10)]
     strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
     # First call (the checker built, the scene sent), then the same routes again (warm: the
     # checker reused, on the cluster one per worker).
@@ -183,7 +183,7 @@ def run_routes(args):
     assert [strip(r) for r in again] == [strip(r) for r in reports]
     text = json.dumps([strip(r) for r in reports], sort_keys=True)
     return {"seconds": seconds, "warm_seconds": warm, "legs": sum(len(r["legs"]) for r in reports),
-            "scene": os.path.basename(args.scene), "route": os.path.basename(args.route),
+            "scene": os.path.basename(args.scene), "route": os.path.basename(args.route), "one_route": args.one_route,
             "not_clear": sum(leg["status"] != "clear" for r in reports for leg in r["legs"]),
             "reports": hashlib.sha256(text.encode()).hexdigest()[:16]}
 
@@ -199,6 +199,7 @@ def main():
     parser.add_argument("--legs", type=int, default=10000)
     parser.add_argument("--scene")
     parser.add_argument("--route")
+    parser.add_argument("--one-route", action="store_true", help="the legs as one route, not routes of 10 legs")
     args = parser.parse_args()
     args.n = int(args.n)
     result = {"hull": run_hull, "delaunay": run_delaunay, "conversions": run_conversions, "write-ply": run_write_ply,

@@ -14,8 +14,9 @@
 #   5. 10 000 route legs (the route benchmark's scenes, bench/make_route_scene.mjs):
 #      hullkit.dask.check_routes on the 2-worker cluster against one process, one thread
 #      (5 processes each; beside them, the same call with send_scene=True); target <= 0.65x,
-#      identical reports. Three kinds of work: the benchmark's route (the target's row), the
-#      same scene with mostly hitting legs, the aligned scene (little checking per leg).
+#      identical reports. Four kinds of work: the benchmark's route as routes of 10 legs (the
+#      target's row) and as one route, the same scene with mostly hitting legs, the aligned scene
+#      (little checking per leg).
 # Environment: HULLKIT_BENCH_QUICK=1 (a tenth of the sizes, one process each; the report goes to
 # bench/out/python/results-python.md), HULLKIT_BENCH_NO_BUILD=1 (use build/python-bench-venv as
 # it is).
@@ -74,18 +75,20 @@ if [ ! -f bench/out/route-scene.json ]; then
   say "[routes] writing the route benchmark's scene"
   node bench/make_route_scene.mjs
 fi
-# Three kinds of work with the same number of legs: the benchmark's route (mostly clear legs, the
-# target's row), the same scene with mostly hitting legs, and the aligned scene (125 small boxes,
-# a tenth of the checking: Dask's fixed cost per call shows).
-works=("route-scene.json route-clear.json" "route-scene.json route-hit.json" "route-aligned-scene.json route-aligned.json")
+# Four kinds of work with the same number of legs: the benchmark's route as routes of 10 legs
+# (mostly clear legs, the target's row) and as one route (its legs cut between the workers), the
+# same scene with mostly hitting legs, and the aligned scene (125 small boxes, a tenth of the
+# checking: Dask's fixed cost per call shows).
+works=("route-scene.json route-clear.json" "route-scene.json route-clear.json --one-route"
+       "route-scene.json route-hit.json" "route-aligned-scene.json route-aligned.json")
 for ((k = 0; k < route_procs; k++)); do
   for work in "${works[@]}"; do
-    read -r scene route <<< "$work"
+    read -r scene route one <<< "$work"
     modes="single dask"
-    [ "$route" = route-clear.json ] && modes="single dask dask-send"
+    [ "$route" = route-clear.json ] && [ -z "$one" ] && modes="single dask dask-send"
     for mode in $modes; do
-      say "[routes] $route, $mode $legs legs, process $((k + 1))"
-      py routes --mode "$mode" --legs "$legs" --scene "../bench/out/$scene" --route "../bench/out/$route" | record
+      say "[routes] $route ${one:-}, $mode $legs legs, process $((k + 1))"
+      py routes --mode "$mode" --legs "$legs" --scene "../bench/out/$scene" --route "../bench/out/$route" $one | record
     done
   done
 done
@@ -148,20 +151,21 @@ if files:
             f"| identical result (triangles, volume bits) | {same} | {status(same == 'yes')} |",
             f"| peak memory per worker <= 400 MB | {worker_peak:.0f} MB | {status(worker_peak <= 400)} |"]
 routes = pick(what="routes")
-works = [("route-scene.json", "route-clear.json", "the benchmark's route: routes of 10 legs cycling through route-clear.json's waypoints among the bunnies (the target's row)"),
-         ("route-scene.json", "route-hit.json", "the same scene, route-hit.json's waypoints: most legs hit a bunny"),
-         ("route-aligned-scene.json", "route-aligned.json", "the aligned scene: 125 axis-aligned boxes, legs along the corridors (a tenth of the checking per leg)")]
+works = [("route-scene.json", "route-clear.json", False, "the benchmark's route: routes of 10 legs cycling through route-clear.json's waypoints among the bunnies (the target's row)"),
+         ("route-scene.json", "route-clear.json", True, "the same legs as one route (cut between the workers' tasks, the reports joined)"),
+         ("route-scene.json", "route-hit.json", False, "the same scene, route-hit.json's waypoints: most legs hit a bunny"),
+         ("route-aligned-scene.json", "route-aligned.json", False, "the aligned scene: 125 axis-aligned boxes, legs along the corridors (a tenth of the checking per leg)")]
 if routes:
     out += ["", "## 4. Route batches across a cluster", "",
-            f"{routes[0]['legs']} legs (routes of 10 legs) for each of three kinds of work. "
+            f"{routes[0]['legs']} legs for each of four kinds of work. "
             "single: one RouteChecker, one thread, the whole call including building it; dask: `hullkit.dask.check_routes(scene, routes, client)` on the 2-worker cluster "
             "(cluster start not timed), one checker per worker: each worker reads the scene file itself (the same path; used because its digest matches what the client read); "
             "scene sent: `send_scene=True`, the scene's bytes sent to every worker from the client, as to workers on other machines (not a target, shown beside). "
             "again: the same call a second time in the process (checkers reused).", "",
             "| work | legs not clear | single, first (again) | dask, first (again) | dask ÷ single, first | again | runs single / dask (first) | target <= 0.65, first / again |",
             "|---|---:|---:|---:|---:|---:|---|---|"]
-    for scene, route, label in works:
-        rs = [r for r in routes if r.get("scene") == scene and r.get("route") == route]
+    for scene, route, one, label in works:
+        rs = [r for r in routes if r.get("scene") == scene and r.get("route") == route and r.get("one_route", False) == one]
         single, dsk = [r for r in rs if r["mode"] == "single"], [r for r in rs if r["mode"] == "dask"]
         if not single or not dsk:
             continue
@@ -169,11 +173,12 @@ if routes:
         out.append(f"| {label} | {rs[0]['not_clear']} | {med(single):.3g} s ({med(single, 'warm_seconds'):.3g}) | {med(dsk):.3g} s ({med(dsk, 'warm_seconds'):.3g}) "
                    f"| {first:.3f} | {again:.3f} | {runs(single)} / {runs(dsk)} | {status(first <= 0.65)} / {status(again <= 0.65)} |")
     sent = [r for r in routes if r["mode"] == "dask-send"]
-    clear_single = [r for r in routes if r["mode"] == "single" and r.get("route") == "route-clear.json"]
+    clear_single = [r for r in routes if r["mode"] == "single" and r.get("route") == "route-clear.json" and not r.get("one_route")]
     if sent and clear_single:
         out.append(f"| the benchmark's route, scene sent (`send_scene=True`) | {sent[0]['not_clear']} | | {med(sent):.3g} s ({med(sent, 'warm_seconds'):.3g}) "
                    f"| {med(sent) / med(clear_single):.3f} | {med(sent, 'warm_seconds') / med(clear_single, 'warm_seconds'):.3f} | {runs(sent)} | not a target |")
-    same = all(len({r["reports"] for r in routes if r.get("route") == route}) == 1 for _, route, _ in works)
+    same = all(len({r["reports"] for r in routes if r.get("route") == route and r.get("one_route", False) == one}) == 1
+               for _, route, one, _ in works)
     out += ["", f"Identical reports in every mode and process, for each work: {'yes' if same else 'no'} ({status(same)})."]
 out += ["", f"Raw figures: `{results}` (one JSON line per process)."]
 open(report, "w").write("\n".join(out) + "\n")
