@@ -344,7 +344,7 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
     pids = client.run(os.getpid)
     done = {}
     job = threading.Thread(target=lambda: done.update(reports=hullkit.dask.check_routes(
-        str(scene), routes, client=client, batch=250, send_scene=send_scene)))  # 50 routes of 5 legs a task
+        str(scene), routes, client=client, batch=247, send_scene=send_scene)))  # most tasks end inside a route
     job.start()
     deadline = time.time() + 60
     while not client.processing() or not any(client.processing().values()):
