@@ -19,9 +19,10 @@ check_routes: the scene is made self-contained here (its text, and the bytes of 
 names and of their glTF buffers) and identified by a digest of those bytes. Each worker builds one
 RouteChecker per scene and reuses it, by later calls with the same scene too. A worker gets the
 scene once: it reads a scene file itself from the same path when it can (a shared or local file
-system) and the digest matches, and is otherwise sent the bytes read here. The routes are checked
-in batches on the workers and the reports come back in the order of the routes, identical to
-RouteChecker(scene).check(route) here.
+system) and the digest matches, and is otherwise sent the bytes read here. The routes' legs are
+checked in batches on the workers (a long route cut between batches, its pieces' reports joined)
+and the reports come back in the order of the routes, identical to RouteChecker(scene).check(route)
+here.
 
 Every task runs hullkit on one thread by default (``threads=1``): the cluster's workers are the
 parallelism. hullkit must be installed on the workers.
@@ -333,6 +334,9 @@ def _scene_here(where):
     return text, files
 
 
+_WAYPOINT = re.compile(r"\bwaypoint (\d+)")  # in the core's messages about a route
+
+
 @_on_worker
 def _check_batch(scene, points, sizes, turns, turn_sizes, where, clearance, samples, threads):
     """The reports of a batch of routes or pieces of routes, as the text of a JSON array (one
@@ -367,9 +371,6 @@ def _check_batch(scene, points, sizes, turns, turn_sizes, where, clearance, samp
         message = _WAYPOINT.sub(lambda m: f"waypoint {int(m.group(1)) + first}", str(error), count=1)
         raise HullkitError(f"routes[{route}]: {message}") from None
     return "[" + ",".join(reports) + "]"
-
-
-_WAYPOINT = re.compile(r"\bwaypoint (\d+)")
 
 
 def _batches(routes, rotations, legs):
@@ -425,16 +426,17 @@ def _joined(batches, parts):
     return reports
 
 
-def _scene_on_workers(client, digest, source, text, files):
-    """The scene scattered to every worker once per client: later calls with the same scene (the
-    same text and file bytes) reuse it, and the workers their checkers."""
-    key = (client.id, digest)
+def _scene_on_workers(client, sent):
+    """The scene ``sent`` (_check_batch's scene with its content) scattered to every worker once
+    per client: later calls with the same scene (the same text and file bytes) reuse it, and the
+    workers their checkers."""
+    key = (client.id, sent[0])
     future = _scattered.get(key)
     if future is None or future.status != "finished":  # lost with its workers: sent again
         if len(_scattered) >= 8:
             _scattered.clear()
         # One object: a tuple handed to scatter() would be scattered element by element.
-        future = _scattered[key] = client.scatter([(digest, source, None, (text, files))], broadcast=True, hash=False)[0]
+        future = _scattered[key] = client.scatter([sent], broadcast=True, hash=False)[0]
     return future
 
 
@@ -485,13 +487,14 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         batch = math.ceil(sum(len(route) - 1 for route in routes) / (2 * max(1, workers)))
     batches = _batches(routes, rotations, int(batch))
     chunks = [_packed(pieces) for pieces in batches]
+    sent = (digest, source, None, (text, files))  # the scene with its content, for workers that cannot read it
     if client is None:
-        shared = delayed((digest, source, None, (text, files)), traverse=False)
+        shared = delayed(sent, traverse=False)
         results = dask.compute(*[delayed(_check_batch)(shared, *chunk, clearance, samples, threads) for chunk in chunks])
         return _joined(batches, [json.loads(part) for part in results])
-    sent = _scattered.get((client.id, digest))
-    if send_scene or not isinstance(scene, (str, os.PathLike)) or (sent is not None and sent.status == "finished"):
-        shared = _scene_on_workers(client, digest, source, text, files)
+    scattered = _scattered.get((client.id, digest))
+    if send_scene or not isinstance(scene, (str, os.PathLike)) or (scattered is not None and scattered.status == "finished"):
+        shared = _scene_on_workers(client, sent)
     else:  # the workers read the scene file themselves where they can
         shared = (digest, source, os.path.abspath(os.fspath(scene)), None)
     results = [None] * len(chunks)
@@ -512,5 +515,5 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
                 results[position[future.key]] = json.loads(part)
         pending = sorted(missing)
         if pending:  # some workers could not read the scene: it is sent to every worker
-            shared = _scene_on_workers(client, digest, source, text, files)
+            shared = _scene_on_workers(client, sent)
     return _joined(batches, results)

@@ -30,6 +30,11 @@ def client():
     cluster.close()
 
 
+def timeless(report):
+    """A route report without its timings, which differ from run to run."""
+    return {k: v for k, v in report.items() if k not in ("build_seconds", "seconds")}
+
+
 def same_hull(distributed, local):
     assert distributed.dimension == local.dimension
     np.testing.assert_array_equal(distributed.triangles, local.triangles.astype(np.int64))
@@ -105,8 +110,7 @@ def test_route_batches_equal_local_checks(client):
     routes = [np.cumsum(rng.normal(scale=3.0, size=(5, 3)), axis=0) for _ in range(60)]
     reports = hullkit.dask.check_routes(scene, routes, client=client)
     checker = hullkit.RouteChecker(scene)
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
-    assert [strip(r) for r in reports] == [strip(checker.check(route)) for route in routes]
+    assert [timeless(r) for r in reports] == [timeless(checker.check(route)) for route in routes]
     assert any(not r["clear"] for r in reports) and any(r["clear"] for r in reports)
     with pytest.raises(hullkit.HullkitError, match="routes\\[1\\]"):
         hullkit.dask.check_routes(scene, [routes[0], np.zeros((1, 3))], client=client)
@@ -131,11 +135,10 @@ def test_route_batches_with_legs_that_turn(client):
     routes = [np.cumsum(rng.normal(scale=3.0, size=(2 + k % 6, 3)), axis=0) for k in range(40)]
     rotations = [unit_quaternions(rng, len(route)) if k % 3 else None for k, route in enumerate(routes)]
     checker = hullkit.RouteChecker(scene)
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
-    expected = [strip(checker.check(route, rotations=turn)) for route, turn in zip(routes, rotations)]
+    expected = [timeless(checker.check(route, rotations=turn)) for route, turn in zip(routes, rotations)]
     assert any("rotation" in leg for r in expected for leg in r["legs"])  # the turning legs report their orientation
-    assert [strip(r) for r in hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations)] == expected
-    assert [strip(r) for r in hullkit.dask.check_routes(scene, routes, rotations=rotations, batch=7)] == expected
+    assert [timeless(r) for r in hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations)] == expected
+    assert [timeless(r) for r in hullkit.dask.check_routes(scene, routes, rotations=rotations, batch=7)] == expected
     with pytest.raises(hullkit.HullkitError, match="39 entries for 40 routes"):
         hullkit.dask.check_routes(scene, routes, client=client, rotations=rotations[:39])
     with pytest.raises(hullkit.HullkitError, match="rotations\\[1\\] has 2 rows for the 3 waypoints"):
@@ -158,24 +161,23 @@ def test_a_long_route_is_cut_between_workers_and_its_report_joined(client):
     rotations = [unit_quaternions(rng, 401), None]
     rotations[0][::3] = rotations[0][1::3][: len(rotations[0][::3])]  # some legs keep their orientation
     checker = hullkit.RouteChecker(scene)
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
     for options in ({}, {"rotations": rotations}, {"clearance": False}, {"samples": 2}):
         turns = options.get("rotations", [None, None])
         local = {k: v for k, v in options.items() if k != "rotations"}
-        expected = [strip(checker.check(route, rotations=turn, **local)) for route, turn in zip(routes, turns)]
+        expected = [timeless(checker.check(route, rotations=turn, **local)) for route, turn in zip(routes, turns)]
         assert not expected[0]["clear"] and any(leg["status"] == "clear" for leg in expected[0]["legs"])
         for batch in (1, 7, 64, None):
             reports = hullkit.dask.check_routes(scene, routes, client=client, batch=batch, **options)
-            assert [strip(r) for r in reports] == expected, (options, batch)
+            assert [timeless(r) for r in reports] == expected, (options, batch)
     # Without clearances a clear leg has none: a route that starts with 150 clear legs far from
     # everything, then meets the crane, joins pieces with no min_clearance and pieces with one.
     far = np.cumsum(np.full((150, 3), 0.5), axis=0) + 1000.0
     mixed = np.concatenate([far[::-1], routes[0]])
     assert checker.check(far, clearance=False)["min_clearance"] is None
-    expected = strip(checker.check(mixed, clearance=False))
+    expected = timeless(checker.check(mixed, clearance=False))
     assert expected["min_clearance"] is not None
     for batch in (7, 64, None):
-        assert strip(hullkit.dask.check_routes(scene, [mixed], client=client, batch=batch, clearance=False)[0]) == expected
+        assert timeless(hullkit.dask.check_routes(scene, [mixed], client=client, batch=batch, clearance=False)[0]) == expected
     # The default batch: 403 legs in 4 tasks, the long route in all of them.
     batches = hullkit.dask._batches(routes, [None, None], 101)
     assert [[(route, first, len(points)) for route, first, points, _ in pieces] for pieces in batches] == [
@@ -220,7 +222,6 @@ def test_route_batches_read_the_scene_on_the_workers_or_send_it(client, tmp_path
     (tmp_path / "plate.obj").write_text("v 4 -5 -5\nv 4 5 -5\nv 4 0 5\nf 1 2 3\nf 1 3 2\n")
     rng = np.random.default_rng(9)
     routes = [np.cumsum(rng.normal(scale=2.0, size=(4, 3)), axis=0) for _ in range(30)]
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
 
     def scene(margin):  # a new scene (new bytes) for each way, so that no worker has its checker
         path = tmp_path / f"scene-{margin}.json"
@@ -230,21 +231,21 @@ def test_route_batches_read_the_scene_on_the_workers_or_send_it(client, tmp_path
 
     def expected(path):
         checker = hullkit.RouteChecker(path)
-        return [strip(checker.check(route)) for route in routes]
+        return [timeless(checker.check(route)) for route in routes]
 
     read = scene(0.0)
-    assert [strip(r) for r in hullkit.dask.check_routes(read, routes, client=client)] == expected(read)
+    assert [timeless(r) for r in hullkit.dask.check_routes(read, routes, client=client)] == expected(read)
     assert not sent_to_workers(client, read)
     assert sum(not r["clear"] for r in expected(read)) > 0
 
     pushed = scene(0.25)
-    assert [strip(r) for r in hullkit.dask.check_routes(pushed, routes, client=client, send_scene=True)] == expected(pushed)
+    assert [timeless(r) for r in hullkit.dask.check_routes(pushed, routes, client=client, send_scene=True)] == expected(pushed)
     assert sent_to_workers(client, pushed)
 
     set_worker_reading(client, False)  # as on machines that do not see these files
     try:
         unseen = scene(0.5)
-        assert [strip(r) for r in hullkit.dask.check_routes(unseen, routes, client=client)] == expected(unseen)
+        assert [timeless(r) for r in hullkit.dask.check_routes(unseen, routes, client=client)] == expected(unseen)
         assert sent_to_workers(client, unseen)
     finally:
         set_worker_reading(client, True)
@@ -290,13 +291,12 @@ def test_route_batches_with_a_gltf_whose_buffer_is_a_file(client, tmp_path):
                                  "obstacles": [{"box": {"min": [4, -5, -5], "max": [4.2, 5, 5]}}]}))
     routes = [np.array([[0.0, 0, 0], [10, 0, 0]]), np.array([[0.0, 2, 0], [0, 8, 0]]), np.array([[0.0, 0, 0], [2.5, 0, 0]])]
     checker = hullkit.RouteChecker(str(scene))
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
-    expected = [strip(checker.check(route)) for route in routes]
+    expected = [timeless(checker.check(route)) for route in routes]
     assert [r["clear"] for r in expected] == [False, True, True]
     set_worker_reading(client, False)  # the workers get the .gltf and the .bin from here
     try:
         for _ in range(2):  # the second call reuses the scene on the workers
-            assert [strip(r) for r in hullkit.dask.check_routes(str(scene), routes, client=client)] == expected
+            assert [timeless(r) for r in hullkit.dask.check_routes(str(scene), routes, client=client)] == expected
         assert sent_to_workers(client, str(scene))
     finally:
         set_worker_reading(client, True)
@@ -339,8 +339,7 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
     rng = np.random.default_rng(12)
     routes = [np.cumsum(rng.normal(scale=2.0, size=(6, 3)), axis=0) for _ in range(3000)]
     checker = hullkit.RouteChecker(str(scene))
-    strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
-    expected = [strip(checker.check(route)) for route in routes]
+    expected = [timeless(checker.check(route)) for route in routes]
     pids = client.run(os.getpid)
     done = {}
     job = threading.Thread(target=lambda: done.update(reports=hullkit.dask.check_routes(
@@ -355,6 +354,6 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
     victim = next(iter(pids.values()))
     os.kill(victim, signal.SIGKILL)
     job.join(timeout=300)
-    assert [strip(r) for r in done["reports"]] == expected
+    assert [timeless(r) for r in done["reports"]] == expected
     client.wait_for_workers(2, timeout=60)
     assert victim not in client.run(os.getpid).values()  # it was killed, and replaced
