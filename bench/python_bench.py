@@ -149,7 +149,7 @@ def run_routes(args):
 
     with open(args.route) as f:
         waypoints = np.array(json.load(f), dtype=np.float64)
-    # `legs` legs cycling through the route's waypoints, as routes of 10 legs each.
+    # `legs` legs cycling through the route's waypoints, as routes of 10 legs each (or one route).
     cycle = np.array([waypoints[k % len(waypoints)] for k in range(args.legs + 1)])
     routes = [cycle] if args.one_route else [cycle[k:k + 11] for k in range(0, args.legs, 10)]
     strip = lambda r: {k: v for k, v in r.items() if k not in ("build_seconds", "seconds")}
