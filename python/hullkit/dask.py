@@ -426,17 +426,23 @@ def _joined(batches, parts):
     return reports
 
 
+def _scene_scattered(client, digest):
+    """The future of the scene with this digest on every worker of ``client``, or None where it
+    was never scattered or was lost with its workers."""
+    future = _scattered.get((client.id, digest))
+    return future if future is not None and future.status == "finished" else None
+
+
 def _scene_on_workers(client, sent):
     """The scene ``sent`` (_check_batch's scene with its content) scattered to every worker once
     per client: later calls with the same scene (the same text and file bytes) reuse it, and the
     workers their checkers."""
-    key = (client.id, sent[0])
-    future = _scattered.get(key)
-    if future is None or future.status != "finished":  # lost with its workers: sent again
+    future = _scene_scattered(client, sent[0])
+    if future is None:  # never sent, or lost with its workers: sent (again)
         if len(_scattered) >= 8:
             _scattered.clear()
         # One object: a tuple handed to scatter() would be scattered element by element.
-        future = _scattered[key] = client.scatter([sent], broadcast=True, hash=False)[0]
+        future = _scattered[(client.id, sent[0])] = client.scatter([sent], broadcast=True, hash=False)[0]
     return future
 
 
@@ -492,8 +498,7 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         shared = delayed(sent, traverse=False)
         results = dask.compute(*[delayed(_check_batch)(shared, *chunk, clearance, samples, threads) for chunk in chunks])
         return _joined(batches, [json.loads(part) for part in results])
-    scattered = _scattered.get((client.id, digest))
-    if send_scene or not isinstance(scene, (str, os.PathLike)) or (scattered is not None and scattered.status == "finished"):
+    if send_scene or not isinstance(scene, (str, os.PathLike)) or _scene_scattered(client, digest) is not None:
         shared = _scene_on_workers(client, sent)
     else:  # the workers read the scene file themselves where they can
         shared = (digest, source, os.path.abspath(os.fspath(scene)), None)
