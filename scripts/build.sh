@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Builds hullkit. With no arguments: the native library, CLI and tests (build/native) and the wasm
-# module (build/wasm). Arguments pick among: native, cli (the library and the hullkit command
-# alone, in build/native), wasm, asan (the C++ tests under AddressSanitizer +
-# UndefinedBehaviorSanitizer, in build/asan), tsan (the C++ test executables under ThreadSanitizer,
-# in build/tsan; scripts/test.sh runs their "[threads]" tests).
+# Builds hullkit. With no arguments: the native library, CLI and tests (build/native), the wasm
+# module (build/wasm) and the page as a static site (build/site). Arguments pick among: native,
+# cli (the library and the hullkit command alone, in build/native), wasm, site (build/site from
+# the wasm build and three.js: scripts/build-site.js, docs/site.md; after wasm), asan (the C++
+# tests under AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan), tsan (the C++ test
+# executables under ThreadSanitizer, in build/tsan; scripts/test.sh runs their "[threads]" tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=("$@")
-((${#targets[@]})) || targets=(native wasm)
+((${#targets[@]})) || targets=(native wasm site)
 jobs=$(nproc)
 
 for target in "${targets[@]}"; do
@@ -25,6 +26,9 @@ for target in "${targets[@]}"; do
       export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
       emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release >/dev/null
       cmake --build build/wasm -j "$jobs"
+      ;;
+    site)
+      node scripts/build-site.js build/site
       ;;
     asan)
       # Built with clang (installed for the fuzzers) at -O1 with line tables only: GCC took about
@@ -47,7 +51,7 @@ for target in "${targets[@]}"; do
       cmake --build build/tsan -j "$jobs" --target hullkit_tests hullkit_route_tests hullkit_delaunay_tests
       ;;
     *)
-      echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, asan, tsan)" >&2
+      echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, site, asan, tsan)" >&2
       exit 2
       ;;
   esac

@@ -1,14 +1,22 @@
-// Dependency-free static file server for the hullkit repository root.
+// Dependency-free static file server for the hullkit page.
 //
-//   node scripts/serve.js            -> http://localhost:8080/  (PORT / HOST override)
+//   node scripts/serve.js             -> http://localhost:8080/  (PORT / HOST override)
+//   node scripts/serve.js build/site  -> serves a built site folder as any static host would
 //
-// Also usable as a library (the browser test starts it on an ephemeral port):
+// From the repository it serves the page's files alone, the allow-list of scripts/site-files.js
+// (web/, the wasm module and its wrapper, the three.js files the page imports): everything else
+// (build trees, scripts, node_modules, .git, links out of those files) is 404. A folder given on
+// the command line (or as `folder`) is served whole, but nothing outside it, through links neither.
+//
+// Also usable as a library (the browser tests start it on an ephemeral port):
 //   import { startServer } from './scripts/serve.js';
-//   const server = await startServer({ port: 0, root });
+//   const server = await startServer({ port: 0, root });                // the page, from a checkout
+//   const server = await startServer({ port: 0, folder, prefix: '/demo/' }); // a folder at /demo/
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { allowList, plainFolder, relativeRequestPath } from './site-files.js';
 
 const DEFAULT_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 
@@ -34,118 +42,107 @@ function send(res, status, body, headers = {}) {
     'Content-Type': 'text/plain; charset=utf-8',
     'Content-Length': Buffer.byteLength(text),
     'Cache-Control': 'no-store',
+    'X-Content-Type-Options': 'nosniff',
     ...headers,
   });
   res.end(res.req.method === 'HEAD' ? undefined : text);
 }
 
 /**
- * Map a request path onto a file system path inside `root`, or return null
- * when the request must be refused (escapes the root, hidden path segment,
- * NUL bytes, malformed escapes).
+ * Request handler. `files.lookup(rel)` decides what exists (see site-files.js); `prefix` is where
+ * the files are mounted ("/" or e.g. "/demo/"); `home` the path the prefix itself redirects to
+ * ("web/" for the repository), or null to serve the prefix folder's index.html.
  */
-export function resolveInsideRoot(root, urlPath) {
-  let decoded;
-  try {
-    decoded = decodeURIComponent(urlPath);
-  } catch {
-    return null;
-  }
-  if (decoded.includes('\0')) return null;
-  const segments = decoded.split(/[\\/]+/).filter(Boolean);
-  // No "..", and no dot-files/dot-directories (.git, .env, ...).
-  if (segments.some((s) => s.startsWith('.'))) return null;
-  const resolved = path.resolve(root, ...segments);
-  if (resolved !== root && !resolved.startsWith(root + path.sep)) return null;
-  return resolved;
-}
-
-function handler(root) {
-  return (req, res) => {
+function handler(files, prefix, home) {
+  return async (req, res) => {
     if (req.method !== 'GET' && req.method !== 'HEAD') {
       send(res, 405, 'Method Not Allowed\n', { Allow: 'GET, HEAD' });
       return;
     }
+    // The path exactly as sent (the URL parser would resolve "/web/%2e%2e/" before we could refuse
+    // it, and read "//host/..." as a host); the query through the parser, which percent-encodes it.
     let pathname, search;
     try {
-      ({ pathname, search } = new URL(req.url, 'http://localhost'));
+      if (!req.url.startsWith('/')) throw new Error('not an origin-form request target');
+      pathname = req.url.split('?', 1)[0];
+      search = new URL(req.url, 'http://localhost').search;
     } catch {
       send(res, 400, 'Bad Request\n');
       return;
     }
-    if (pathname === '/') {
-      // The query stays: a hand-written link such as /?view=delaunay keeps its view.
-      send(res, 302, `Found: /web/${search}\n`, { Location: `/web/${search}` });
+    if (prefix !== '/' && pathname === prefix.slice(0, -1)) {
+      send(res, 301, 'Moved Permanently\n', { Location: prefix + search });
       return;
     }
-    const filePath = resolveInsideRoot(root, pathname);
-    if (filePath === null) {
+    if (!pathname.startsWith(prefix)) {
       send(res, 404, 'Not Found\n');
       return;
     }
-    fs.stat(filePath, (err, stat) => {
-      if (err) {
-        send(res, 404, 'Not Found\n');
-        return;
-      }
-      if (stat.isDirectory()) {
+    if (pathname === prefix && home !== null) {
+      // The query stays: a hand-written link such as /?view=delaunay keeps its view.
+      send(res, 302, `Found: ${prefix}${home}${search}\n`, { Location: `${prefix}${home}${search}` });
+      return;
+    }
+    const rel = relativeRequestPath(pathname.slice(prefix.length));
+    let found;
+    try {
+      found = rel === null ? null : await files.lookup(rel);
+      if (found?.stat.isDirectory()) {
         if (!pathname.endsWith('/')) {
-          // Redirect so that relative URLs inside index.html resolve correctly.
-          send(res, 301, 'Moved Permanently\n', { Location: pathname + '/' + search });
+          // Redirect so that relative URLs inside index.html resolve correctly. The location is
+          // rebuilt from the checked path: "//web" must not send the browser to the host "web".
+          const location = prefix + rel.split('/').map(encodeURIComponent).join('/') + '/';
+          send(res, 301, 'Moved Permanently\n', { Location: location + search });
           return;
         }
-        serveFile(req, res, path.join(filePath, 'index.html'));
-        return;
+        found = await files.lookup(rel ? `${rel}/index.html` : 'index.html');
       }
-      serveFile(req, res, filePath, stat);
-    });
+    } catch {
+      send(res, 500, 'Internal Server Error\n');
+      return;
+    }
+    if (!found?.stat.isFile()) {
+      send(res, 404, 'Not Found\n');
+      return;
+    }
+    serveFile(req, res, found.real, found.stat);
   };
 }
 
-function serveFile(req, res, filePath, knownStat) {
-  const withStat = (stat) => {
-    if (!stat.isFile()) {
-      send(res, 404, 'Not Found\n');
-      return;
-    }
-    const type = MIME_TYPES[path.extname(filePath).toLowerCase()] ?? 'application/octet-stream';
-    const headers = {
-      'Content-Type': type,
-      'Content-Length': stat.size,
-      'Cache-Control': 'no-store',
-      'X-Content-Type-Options': 'nosniff',
-    };
-    if (req.method === 'HEAD') {
-      res.writeHead(200, headers);
-      res.end();
-      return;
-    }
-    const stream = fs.createReadStream(filePath);
-    stream.once('open', () => {
-      res.writeHead(200, headers);
-      stream.pipe(res);
-    });
-    stream.once('error', () => {
-      if (!res.headersSent) send(res, 404, 'Not Found\n');
-      else res.destroy();
-    });
+function serveFile(req, res, filePath, stat) {
+  const headers = {
+    'Content-Type': MIME_TYPES[path.extname(filePath).toLowerCase()] ?? 'application/octet-stream',
+    'Content-Length': stat.size,
+    'Cache-Control': 'no-store',
+    'X-Content-Type-Options': 'nosniff',
   };
-  if (knownStat) withStat(knownStat);
-  else {
-    fs.stat(filePath, (err, stat) => {
-      if (err) send(res, 404, 'Not Found\n');
-      else withStat(stat);
-    });
+  if (req.method === 'HEAD') {
+    res.writeHead(200, headers);
+    res.end();
+    return;
   }
+  const stream = fs.createReadStream(filePath);
+  stream.once('open', () => {
+    res.writeHead(200, headers);
+    stream.pipe(res);
+  });
+  stream.once('error', () => {
+    if (!res.headersSent) send(res, 404, 'Not Found\n');
+    else res.destroy();
+  });
 }
 
 /**
- * Start the static server. Resolves with the listening http.Server
- * (use `server.address().port` when started with port 0).
+ * Start the static server. Resolves with the listening http.Server (use
+ * `server.address().port` when started with port 0).
+ *   root    the repository whose page is served (allow-list; `/` redirects to `/web/`)
+ *   folder  instead: a folder served whole (a built site; `/` serves its index.html)
+ *   prefix  where it is mounted, "/" by default (e.g. "/demo/", as a host serving a sub-path)
  */
-export function startServer({ port = 8080, root = DEFAULT_ROOT, host = '127.0.0.1' } = {}) {
-  const absRoot = path.resolve(root);
-  const server = http.createServer(handler(absRoot));
+export function startServer({ port = 8080, root = DEFAULT_ROOT, folder, prefix = '/', host = '127.0.0.1' } = {}) {
+  if (!prefix.startsWith('/') || !prefix.endsWith('/')) throw new Error(`prefix must start and end with "/": ${prefix}`);
+  const files = folder === undefined ? allowList(root) : plainFolder(folder);
+  const server = http.createServer(handler(files, prefix, folder === undefined ? 'web/' : null));
   return new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, host, () => {
@@ -159,13 +156,18 @@ const isMain = process.argv[1] && import.meta.url === pathToFileURL(path.resolve
 if (isMain) {
   const port = process.env.PORT !== undefined && process.env.PORT !== '' ? Number(process.env.PORT) : 8080;
   const host = process.env.HOST || '127.0.0.1';
+  const folder = process.argv[2];
   if (!Number.isInteger(port) || port < 0 || port > 65535) {
     console.error(`serve.js: invalid PORT ${JSON.stringify(process.env.PORT)}`);
     process.exit(2);
   }
-  startServer({ port, host }).then(
+  if (folder !== undefined && !fs.statSync(folder, { throwIfNoEntry: false })?.isDirectory()) {
+    console.error(`serve.js: ${folder} is not a folder`);
+    process.exit(2);
+  }
+  startServer({ port, host, folder }).then(
     (server) => {
-      console.log(`hullkit page: http://localhost:${server.address().port}/`);
+      console.log(`hullkit page${folder === undefined ? '' : ` (${folder})`}: http://localhost:${server.address().port}/`);
     },
     (err) => {
       console.error(`serve.js: cannot listen on ${host}:${port}: ${err.message}`);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Runs every suite against what `scripts/build.sh native wasm asan tsan` built: ctest (release and
-# sanitized), the threaded tests under ThreadSanitizer, a short libFuzzer run of every fuzz
+# Runs every suite against what `scripts/build.sh native wasm site asan tsan` built: ctest (release
+# and sanitized), the threaded tests under ThreadSanitizer, a short libFuzzer run of every fuzz
 # target (HULLKIT_FUZZ_SECONDS each, default 20), node:test (the wasm module), the TypeScript
 # type test, the installed CMake package's consumers, the Python package's pytest suite (with
-# Dask), and the browser tests of the page.
+# Dask), and the browser tests of the page, served from the checkout and from build/site.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 step_started=$SECONDS

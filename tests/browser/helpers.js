@@ -114,17 +114,19 @@ export function averageColor(img, x0, y0, w, h) {
 // ------------------------------------------------------------------ a browser on the page
 
 /**
- * Serves the repository and launches Debian's Chromium: {browser, base (the page's URL), errors,
- * watch(page), close()}. watch(page) collects console errors, page errors, failed requests and
- * any request outside the page's own server into `errors` (the page must fetch nothing else).
+ * Serves the repository (or, with `folder`, that folder as a plain static host would, mounted at
+ * `prefix`) and launches Debian's Chromium: {browser, base (the page's URL), mount (where the
+ * files are served), errors, watch(page), close()}. watch(page) collects console errors, page
+ * errors, failed requests and any request outside the served files into `errors` (the page must
+ * fetch nothing else).
  */
-export async function openBrowser() {
+export async function openBrowser({ folder, prefix = '/' } = {}) {
   const fs = await import('node:fs');
   if (!fs.existsSync(CHROMIUM)) throw new Error(`Chromium not found at ${CHROMIUM}`);
   const { startServer } = await import('../../scripts/serve.js');
   const { chromium } = await import('playwright-core');
-  const server = await startServer({ port: 0, root: ROOT });
-  const origin = `http://127.0.0.1:${server.address().port}/`;
+  const server = await startServer(folder === undefined ? { port: 0, root: ROOT } : { port: 0, folder, prefix });
+  const origin = `http://127.0.0.1:${server.address().port}${prefix}`;
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
   const errors = [];
   const watch = (page) => {
@@ -140,5 +142,5 @@ export async function openBrowser() {
     await browser.close();
     await new Promise((resolve) => server.close(resolve));
   };
-  return { browser, base: `${origin}web/`, errors, watch, close };
+  return { browser, base: `${origin}web/`, mount: origin, errors, watch, close };
 }
