@@ -141,6 +141,37 @@ int incircle(double ax, double ay, double bx, double by, double cx, double cy, d
 /// +1: b is nearer, 0: exactly as far). Exact in the same range as incircle.
 int compare_distance(double ax, double ay, double bx, double by, double qx, double qy);
 
+/// Largest |coordinate| for which insphere is guaranteed exact: 2^+195 (about 5.0e+58). insphere
+/// is a polynomial of degree 5, so its range is tighter still than incircle's: see insphere.cpp.
+inline constexpr double kInsphereMaxMagnitude = 0x1p+195;
+/// Smallest nonzero |coordinate| for which insphere is guaranteed exact: 2^-120 (about 7.5e-37).
+inline constexpr double kInsphereMinMagnitude = 0x1p-120;
+
+/// As predicates_range_ok, for the range of insphere. Inside this range orient3d is exact too.
+inline constexpr bool insphere_range_ok(double max_abs_coordinate, double min_abs_nonzero_coordinate) {
+    return max_abs_coordinate <= kInsphereMaxMagnitude &&
+           (max_abs_coordinate == 0.0 || min_abs_nonzero_coordinate >= kInsphereMinMagnitude);
+}
+
+/// As predicates_scale_exponent, for the range of insphere (data spanning less than 2^315 between
+/// its largest and smallest nonzero |coordinate| can be brought into range).
+bool insphere_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate, int* exponent);
+
+/// In-sphere test: where e lies relative to the sphere through a, b, c, d (pointers to x, y, z):
+///   +1  e is strictly inside the sphere when a, b, c, d are positively oriented
+///       (orient3d(a, b, c, d) > 0), strictly outside when they are negatively oriented,
+///   -1  the opposite,
+///    0  the five points are exactly cospherical (or a, b, c, d coplanar and e on their circle or
+///       plane, or points coincide so that the determinant vanishes).
+/// Exact sign of -det[b-a, |b|^2-|a|^2; c-a, ...; d-a, ...; e-a, ...] (rows x, y, z, lift), i.e.
+/// the orientation of the lifted points (x, y, z, x^2 + y^2 + z^2): for positively oriented
+/// a, b, c, d, +1 means the lifted e lies strictly BELOW the hyperplane of the lifted a, b, c, d.
+/// NOTE: like orient3d, the opposite sign of Shewchuk's insphere in predicates.c
+/// (hullkit insphere(a,b,c,d,e) == -shewchuk_insphere(a,b,c,d,e)), so that "positively oriented,
+/// +1 inside" holds with hullkit's orient3d. Exact for coordinates inside
+/// [kInsphereMinMagnitude, kInsphereMaxMagnitude] (or 0).
+int insphere(const double* a, const double* b, const double* c, const double* d, const double* e);
+
 namespace detail {
 
 // Testing and diagnostics hooks. Same results as the public functions.
@@ -260,6 +291,112 @@ inline int incircle_semi_static(double bound, double ax, double ay, double bx, d
     if (det > bound) return 1;
     if (-det > bound) return -1;
     return incircle(ax, ay, bx, by, cx, cy, dx, dy);
+}
+
+/// insphere that reports the deciding stage: 0 = floating-point filter, 1 = exact arithmetic on
+/// exactly computed differences (integer fast path or expansions), 3 = the full exact expansion
+/// from the rounded differences and their roundoff. And its full exact evaluation alone.
+int insphere_traced(const double* a, const double* b, const double* c, const double* d, const double* e,
+                    int* stage);
+int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e);
+
+/// Stage A bounds of orient3d and insphere (multiples of the permanent; Shewchuk 1997).
+inline constexpr double kOrient3dFilterBound = (7.0 + 56.0 * 0x1p-53) * 0x1p-53;
+inline constexpr double kInsphereFilterBound = (16.0 + 224.0 * 0x1p-53) * 0x1p-53;
+
+/// orient3d's stage A value det[b-a; c-a; d-a] in floating point (without its permanent).
+inline double orient3d_stage_a(const double* a, const double* b, const double* c, const double* d) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
+    const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+    const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
+    return bx * (cy * dz - cz * dy) + by * (cz * dx - cx * dz) + bz * (cx * dy - cy * dx);
+}
+
+/// With every coordinate difference of the points (as computed) at most `span`: the permanent of
+/// orient3d's determinant is below 6 span^3 (1 + 2^-48), so a stage A value beyond this bound has
+/// the exact sign (the factor 1 + 2^-40 covers the rounding of the bound's own products and the
+/// order in which orient3d_stage_a sums, which rounds no worse than the filter's own formula).
+inline double orient3d_static_bound(double span) {
+    return kOrient3dFilterBound * 6.0 * (span * span * span) * (1.0 + 0x1p-40);
+}
+inline int orient3d_semi_static(double bound, const double* a, const double* b, const double* c, const double* d) {
+    const double det = orient3d_stage_a(a, b, c, d);
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return orient3d(a, b, c, d);
+}
+
+/// insphere's stage A value in floating point (hullkit's sign): rows relative to e, the
+/// determinant expanded by its lift column into four 3x3 minors, each from the six 2x2 minors of
+/// the x, y columns.
+inline double insphere_stage_a_det(const double* a, const double* b, const double* c, const double* d,
+                                   const double* e) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+    const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+    const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+    const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
+    const double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    const double abc = aez * bc - bez * ac + cez * ab;
+    const double bcd = bez * cd - cez * bd + dez * bc;
+    const double cda = cez * da + dez * ac + aez * cd;
+    const double dab = dez * ab + aez * bd + bez * da;
+    const double alift = aex * aex + aey * aey + aez * aez;
+    const double blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez;
+    const double dlift = dex * dex + dey * dey + dez * dez;
+    return (alift * bcd - blift * cda) + (clift * dab - dlift * abc);
+}
+
+/// insphere's stage A: the value above and its permanent (the determinant's terms in absolute
+/// value, as computed; the bound on the value's rounding error is kInsphereFilterBound times it).
+struct InsphereStageA {
+    double det;
+    double permanent;
+};
+inline InsphereStageA insphere_stage_a(const double* a, const double* b, const double* c, const double* d,
+                                       const double* e) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+    const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+    const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+    const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+    auto mag = [](double x) { return x < 0 ? -x : x; };
+    auto pair = [&](double p, double q, double r, double t) { return mag(p * q) + mag(r * t); };
+    const double abp = pair(aex, bey, bex, aey), bcp = pair(bex, cey, cex, bey), cdp = pair(cex, dey, dex, cey);
+    const double dap = pair(dex, aey, aex, dey), acp = pair(aex, cey, cex, aey), bdp = pair(bex, dey, dex, bey);
+    const double az = mag(aez), bz = mag(bez), cz = mag(cez), dz = mag(dez);
+    const double alift = aex * aex + aey * aey + aez * aez;
+    const double blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez;
+    const double dlift = dex * dex + dey * dey + dez * dez;
+    const double permanent = ((cdp * bz + bdp * cz + bcp * dz) * alift + (dap * cz + acp * dz + cdp * az) * blift) +
+                             ((abp * dz + bdp * az + dap * bz) * clift + (bcp * az + acp * bz + abp * cz) * dlift);
+    return {insphere_stage_a_det(a, b, c, d, e), permanent};
+}
+
+/// With every coordinate difference of the points (as computed) at most `span`: each lift is
+/// below 3 span^2 and each row's minor permanent below 6 span^3, so the permanent is below
+/// 72 span^5 (1 + 2^-47); the factor 1 + 2^-40 covers that and the bound's own rounding.
+inline double insphere_static_bound(double span) {
+    const double s2 = span * span;
+    return kInsphereFilterBound * 72.0 * (s2 * s2 * span) * (1.0 + 0x1p-40);
+}
+/// insphere with the semi-static bound first (exact sign always).
+inline int insphere_semi_static(double bound, const double* a, const double* b, const double* c, const double* d,
+                                const double* e) {
+    const double det = insphere_stage_a_det(a, b, c, d, e);
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return insphere(a, b, c, d, e);
 }
 
 /// incircle with stage A inline.

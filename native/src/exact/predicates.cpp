@@ -296,6 +296,7 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
 namespace detail {
 
 static_assert(kOrient2dFilterBound == kOrient2dBoundA, "the header's stage A bound must match");
+static_assert(kOrient3dFilterBound == kOrient3dBoundA, "the header's stage A bound must match");
 
 int orient2d_adapt_entry(double ax, double ay, double bx, double by, double cx, double cy,
                          double detsum) {
@@ -310,6 +311,12 @@ bool incircle_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_c
                   "update the exponents below");
     return scale_exponent_for_range(max_abs_coordinate, min_abs_nonzero_coordinate, -170, 240,
                                     exponent);
+}
+
+bool insphere_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_coordinate, int* exponent) {
+    static_assert(kInsphereMaxMagnitude == 0x1p+195 && kInsphereMinMagnitude == 0x1p-120,
+                  "update the exponents below");
+    return scale_exponent_for_range(max_abs_coordinate, min_abs_nonzero_coordinate, -120, 195, exponent);
 }
 
 int collinear3d(const double* a, const double* b, const double* c) {

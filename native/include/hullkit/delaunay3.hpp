@@ -1,0 +1,121 @@
+// hullkit: Delaunay tetrahedralization of 3D points by lifting to the paraboloid in 4D.
+//
+// Lift each point (x, y, z) to (x, y, z, x^2 + y^2 + z^2): the lower facets of the 4D convex hull of
+// the lifted points, projected back, are the Delaunay tetrahedra (the seed document's lifting, one
+// dimension up). "Is the lifted point e below the lifted hyperplane of tetrahedron a, b, c, d" is
+// exactly the in-sphere test, so every decision here is made by the exact predicates orient3d and
+// insphere (predicates.hpp) on the input coordinates; no rounded lift decides anything.
+//
+// The construction is the incremental one of the lower 4D hull: Bowyer-Watson insertion (each
+// point removes the tetrahedra whose circumsphere holds it and joins the cavity's boundary to it)
+// in a biased randomized insertion order (BRIO, Amenta, Choi & Rote 2003: rounds of doubling size,
+// each sorted along a Hilbert curve), each point located by a walk from the last new tetrahedron.
+// Outside the hull "ghost" tetrahedra join each hull triangle to a vertex at infinity.
+//
+// Ties. Five or more cospherical points (grids, lattices, points on a sphere) have more than one
+// Delaunay tetrahedralization. hullkit returns exactly one, which depends only on the points:
+// the Delaunay tetrahedralization of the points symbolically perturbed as Devillers & Teillaud
+// describe ("Perturbations for Delaunay and weighted Delaunay 3D triangulations", CGAL research
+// report 2009 / CGTA 2011; after Edelsbrunner & Muecke's simulation of simplicity, 1990): each
+// point's lift is raised by an infinitesimal that is larger the later the point comes in the
+// lexicographic order of (x, y, z). An in-sphere test that is exactly 0 is decided by the first
+// nonzero term of that perturbation, each an orient3d of the points involved. The result is a
+// true tetrahedralization of the convex hull (no flat tetrahedron, every point a vertex, every face
+// locally Delaunay) that is Delaunay for the unperturbed points, the same for every insertion
+// order and thread count; it is the one CGAL's Delaunay_triangulation_3 builds with its default
+// perturbation. Coplanar hull faces are triangulated by the same rule.
+//
+// Memory: the working mesh is two arrays of 16 bytes per tetrahedron (corners, neighbours), about
+// 6.7 tetrahedra per point for uniform points; the output reuses them. About 230 bytes per point
+// at the peak, the input not counted.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hullkit/hull.hpp"  // PointSpan
+
+namespace hullkit {
+
+struct Delaunay3Options {
+    /// Threads: 0 (the default) every hardware thread, 1 the calling thread only. The result is
+    /// the same bits for every value (it depends only on the points). The WebAssembly build runs
+    /// on the calling thread.
+    unsigned threads = 0;
+    /// Called on the calling thread as points are inserted: points_done of total, every 65 536
+    /// points and once at the end (points_done == total). Leave empty for none.
+    std::function<void(std::size_t points_done, std::size_t total)> progress;
+};
+
+/// A Delaunay tetrahedralization. On failure `error` says what is wrong and, where one point is to
+/// blame, `error_point` is its index; the other fields are then empty.
+///
+/// What the fields hold depends on `dimension`, the dimension of the points' affine hull:
+///   3  `tetrahedra`: 4 indices per tetrahedron into the input points, positively oriented
+///      (orient3d(t0, t1, t2, t3) > 0: t3 on the side the normal (t1 - t0) x (t2 - t0) points to);
+///      `neighbors`: 4 per tetrahedron, neighbors[4t + k] the tetrahedron sharing the face opposite
+///      corner k, -1 on the hull (scipy's convention); `hull`: the convex hull's triangles,
+///      3 indices each, counter-clockwise seen from outside (every hull face, coplanar ones
+///      triangulated by the tie rule above).
+///   2  all points on one plane: `triangles` their 2D Delaunay triangulation in that plane, 3 indices
+///      each, counter-clockwise seen from the side `normal` points to (the side where the normal's
+///      largest component, x before y before z on ties, is positive); `neighbors`: 3 per triangle,
+///      the triangle across the edge opposite corner k, -1 on the boundary.
+///   1  all points on one line: `vertices` the distinct points in order along it (the segments
+///      join consecutive ones).
+///   0  one distinct point: `vertices` holds it.  -1  no points.
+///
+/// Canonical order (depends only on the input): each tetrahedron (triangle) starts at its lowest
+/// index, then its second lowest (the other two follow in the order that keeps the orientation);
+/// tetrahedra are sorted by the position of their first, then second, then third corner along a
+/// Hilbert curve over the input's bounding box (points with one curve key by index); hull
+/// triangles start at their lowest index and are sorted by their corners' indices.
+struct Delaunay3 {
+    int dimension = -1;
+    std::vector<std::uint32_t> tetrahedra;  ///< dimension 3: 4 per tetrahedron
+    std::vector<std::int32_t> neighbors;    ///< dimension 3: 4 per tetrahedron; dimension 2: 3 per triangle
+    std::vector<std::uint32_t> hull;        ///< dimension 3: 3 per hull triangle, outward
+    std::vector<std::uint32_t> triangles;   ///< dimension 2: 3 per triangle
+    std::vector<std::uint32_t> vertices;    ///< dimension 1: the points along the line; dimension 0: the point
+    double normal[3] = {0.0, 0.0, 0.0};     ///< dimension 2: unit normal of the plane (rounded)
+    /// For each input point, the index of the point that represents it: itself, or the lowest
+    /// index with exactly the same coordinates (duplicates are merged, never dropped silently).
+    std::vector<std::uint32_t> representative;
+    std::size_t duplicate_count = 0;  ///< points whose representative is not themselves
+
+    std::string error;              ///< empty on success
+    std::int64_t error_point = -1;  ///< index of the offending point, -1 if none
+
+    bool ok() const { return error.empty(); }
+    std::size_t tetrahedron_count() const { return tetrahedra.size() / 4; }
+};
+
+/// Tetrahedralizes `points` exactly. Fails only on a non-finite coordinate (naming the point), more
+/// than 2^31 - 1 points, or coordinates whose nonzero magnitudes span more than a factor of about
+/// 2^313 (insphere's exact range after a power-of-two rescaling, see predicates.hpp; the error
+/// names the smallest and largest point).
+Delaunay3 delaunay3(PointSpan points, const Delaunay3Options& options = {});
+
+/// An exact check that `tetrahedra` (count index quadruples) is the Delaunay tetrahedralization
+/// of the distinct points of `points`: indices in range, every tetrahedron positively oriented
+/// (none flat), each face shared by at most two tetrahedra with opposite orientations, the boundary
+/// faces exactly a triangulation of the convex hull's boundary (every boundary face on a hull
+/// plane with every point on its inner side, the boundary a closed surface), every distinct point
+/// a vertex, the total volume equal to the hull's (exactly, as a sum of exact determinants), and
+/// every interior face locally Delaunay by the exact in-sphere test. With `perturbed` (the default)
+/// each interior face must also be locally Delaunay under the tie rule of delaunay3(), which makes
+/// the tetrahedralization unique; without, cospherical ties may go either way.
+struct Delaunay3VerifyReport {
+    bool ok = true;
+    std::vector<std::string> problems;  ///< one line each, at most a few dozen, then a count
+    std::size_t problem_count = 0;
+    std::size_t distinct_points = 0;
+    std::size_t hull_triangles = 0;
+};
+Delaunay3VerifyReport verify_delaunay3(PointSpan points, const std::uint32_t* tetrahedra, std::size_t count,
+                                       bool perturbed = true);
+
+}  // namespace hullkit

@@ -1,0 +1,354 @@
+// hullkit::delaunay3: input checks, exact duplicates, the Hilbert and insertion orders, the
+// dimension, then the tetrahedralization (insert.cpp) written out in the canonical order of
+// delaunay3.hpp.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "delaunay3_internal.hpp"
+#include "hull/large_array.hpp"
+
+namespace hullkit {
+namespace {
+
+using delaunay3_detail::kGhost;
+using delaunay3_detail::Mesh;
+using delaunay3_detail::Points;
+
+Delaunay3 failure(std::string message, std::int64_t point = -1) {
+    Delaunay3 d;
+    d.error = std::move(message);
+    d.error_point = point;
+    return d;
+}
+
+struct Extent {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    int exponent = 0;  ///< power of two bringing the coordinates into insphere's exact range
+};
+
+/// Rejects non-finite coordinates and too many points; finds the bounding box and the scale. The
+/// scale leaves a factor of 4 of room below insphere's largest magnitude: the perturbed coplanar
+/// test places a point up to 3 times the largest coordinate away (perturbed.cpp).
+Delaunay3 check_input(PointSpan points, Extent* extent) {
+    if (points.count >= 0x7fffffffu) {
+        return failure("too many points: " + std::to_string(points.count) + " (at most 2147483646)");
+    }
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    std::size_t largest_at = 0, smallest_at = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        extent->lo[axis] = std::numeric_limits<double>::infinity();
+        extent->hi[axis] = -std::numeric_limits<double>::infinity();
+    }
+    for (std::size_t i = 0; i < points.count; ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double value = points[i][axis];
+            const double magnitude = std::fabs(value);
+            if (!(magnitude <= std::numeric_limits<double>::max())) {
+                const char* what = std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+                return failure("point " + std::to_string(i) + " has a non-finite " + "xyz"[axis] + " coordinate (" +
+                                   what + ")",
+                               static_cast<std::int64_t>(i));
+            }
+            if (magnitude > largest) largest = magnitude, largest_at = i;
+            if (magnitude != 0.0 && magnitude < smallest) smallest = magnitude, smallest_at = i;
+            extent->lo[axis] = std::min(extent->lo[axis], value);
+            extent->hi[axis] = std::max(extent->hi[axis], value);
+        }
+    }
+    if (!insphere_scale_exponent(4.0 * largest, smallest, &extent->exponent)) {
+        return failure("coordinates span too many orders of magnitude for exact in-sphere tests: point " +
+                           std::to_string(smallest_at) + " (smallest nonzero |coordinate|) and point " +
+                           std::to_string(largest_at) + " (largest) must be within a factor of 2^313 (about 1e94)",
+                       static_cast<std::int64_t>(smallest_at));
+    }
+    return Delaunay3{};
+}
+
+/// Spreads the low 10 bits of v to every third bit.
+std::uint32_t spread3(std::uint32_t v) {
+    v &= 0x3ffu;
+    v = (v | (v << 16)) & 0x030000ffu;
+    v = (v | (v << 8)) & 0x0300f00fu;
+    v = (v | (v << 4)) & 0x030c30c3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+}  // namespace
+
+namespace delaunay3_detail {
+
+/// Index along a 3D Hilbert curve on a 1024^3 grid (Skilling, "Programming the Hilbert curve",
+/// AIP Conf. Proc. 707, 2004: the coordinates turned into the curve's "transpose" by its
+/// inverse-undo and Gray-code steps, then interleaved, x's bit most significant).
+std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    std::uint32_t axes[3] = {x & 0x3ffu, y & 0x3ffu, z & 0x3ffu};
+    for (std::uint32_t q = 1u << 9; q > 1; q >>= 1) {
+        const std::uint32_t p = q - 1;
+        for (int i = 0; i < 3; ++i) {
+            if (axes[i] & q) {
+                axes[0] ^= p;
+            } else {
+                const std::uint32_t t = (axes[0] ^ axes[i]) & p;
+                axes[0] ^= t;
+                axes[i] ^= t;
+            }
+        }
+    }
+    axes[1] ^= axes[0];
+    axes[2] ^= axes[1];
+    std::uint32_t t = 0;
+    for (std::uint32_t q = 1u << 9; q > 1; q >>= 1)
+        if (axes[2] & q) t ^= q - 1;
+    for (std::uint32_t& a : axes) a ^= t;
+    return spread3(axes[0]) << 2 | spread3(axes[1]) << 1 | spread3(axes[2]);
+}
+
+}  // namespace delaunay3_detail
+
+namespace {
+
+/// The input as (Hilbert key << 32 | index), sorted (stable LSD radix sort on the 30-bit key).
+std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box) {
+    const std::size_t n = p.count;
+    double scale[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        const double width = box.hi[axis] - box.lo[axis];
+        scale[axis] = width > 0 ? 1023.0 / width : 0.0;
+    }
+    std::vector<std::uint64_t> keyed(n), swap(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t cell[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            // A box narrower than 1023 / DBL_MAX makes the scale infinite, one wider than DBL_MAX
+            // the width infinite: NaN and negatives go to 0 (the order only affects speed).
+            double f = (p[i][axis] - box.lo[axis]) * scale[axis];
+            f = f > 0.0 ? std::min(f, 1023.0) : 0.0;
+            cell[axis] = static_cast<std::uint32_t>(f);
+        }
+        const std::uint32_t key = delaunay3_detail::hilbert3(cell[0], cell[1], cell[2]);
+        keyed[i] = (std::uint64_t{key} << 32) | i;
+    }
+    std::vector<std::uint32_t> count(1025);
+    for (int shift = 32; shift < 62; shift += 10) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::size_t i = 0; i < n; ++i) ++count[((keyed[i] >> shift) & 0x3ffu) + 1];
+        for (std::size_t d = 0; d < 1024; ++d) count[d + 1] += count[d];
+        for (std::size_t k = 0; k < n; ++k) swap[count[(keyed[k] >> shift) & 0x3ffu]++] = keyed[k];
+        keyed.swap(swap);
+    }
+    return keyed;
+}
+
+/// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
+/// and stores the distinct points contiguously in that order, scaled by 2^exponent.
+void gather_distinct(PointSpan p, const Extent& box, Delaunay3& out, Points& points) {
+    const std::vector<std::uint64_t> keyed = hilbert_order(p, box);
+    const std::size_t n = p.count;
+    out.representative.resize(n);
+    std::iota(out.representative.begin(), out.representative.end(), 0u);
+    points.xyz.resize(3 * n);
+    points.original.clear();
+    points.original.reserve(n);
+    std::vector<std::uint32_t> run;
+    std::size_t distinct = 0;
+    for (std::size_t begin = 0; begin < n;) {
+        std::size_t end = begin + 1;
+        while (end < n && (keyed[end] >> 32) == (keyed[begin] >> 32)) ++end;
+        // Within a run of one key, points sorted by (x, y, z, index) so that duplicates are adjacent
+        // and the lowest index comes first; a run of one point needs nothing.
+        run.clear();
+        for (std::size_t k = begin; k < end; ++k) run.push_back(static_cast<std::uint32_t>(keyed[k]));
+        if (run.size() > 1) {
+            std::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
+                if (p[a][0] != p[b][0]) return p[a][0] < p[b][0];
+                if (p[a][1] != p[b][1]) return p[a][1] < p[b][1];
+                if (p[a][2] != p[b][2]) return p[a][2] < p[b][2];
+                return a < b;
+            });
+        }
+        for (std::size_t r = 0; r < run.size(); ++r) {
+            const std::uint32_t i = run[r];
+            if (r > 0 && p[i][0] == p[run[r - 1]][0] && p[i][1] == p[run[r - 1]][1] && p[i][2] == p[run[r - 1]][2]) {
+                out.representative[i] = points.original.back();
+                ++out.duplicate_count;
+                continue;
+            }
+            for (int axis = 0; axis < 3; ++axis) points.xyz[3 * distinct + axis] = std::ldexp(p[i][axis], box.exponent);
+            points.original.push_back(i);
+            ++distinct;
+        }
+        begin = end;
+    }
+    points.xyz.resize(3 * distinct);
+    double span = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lo = std::ldexp(box.lo[axis], box.exponent), hi = std::ldexp(box.hi[axis], box.exponent);
+        span = std::max(span, hi - lo);
+    }
+    points.span = span;
+}
+
+/// The biased randomized insertion order: each point falls in round r with probability 2^-(r+1)
+/// (a hash of its input index decides, so the order depends only on the input), rounds from the
+/// highest (smallest) to round 0 (half the points), the smallest rounds merged into a first round
+/// of a few hundred points; within a round, Hilbert order.
+void insertion_order(Points& points) {
+    const std::size_t m = points.size();
+    int top = 0;  // rounds above this merge into the first
+    while ((m >> (top + 9)) > 0 && top < 40) ++top;
+    std::vector<std::uint8_t> round(m);
+    std::vector<std::size_t> count(top + 2, 0);
+    for (std::size_t i = 0; i < m; ++i) {
+        std::uint64_t h = points.original[i] + 0x9e3779b97f4a7c15ull;  // splitmix64
+        h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+        h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+        h ^= h >> 31;
+        int level = 0;
+        while (level < top && (h >> (63 - level) & 1) == 0) ++level;
+        round[i] = static_cast<std::uint8_t>(top - level);  // 0 = inserted first
+        ++count[round[i] + 1];
+    }
+    for (int r = 0; r <= top; ++r) count[r + 1] += count[r];
+    points.order.resize(m);
+    for (std::size_t i = 0; i < m; ++i) points.order[count[round[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+/// The canonical corner order of a positively oriented tetrahedron (or triangle): the lowest
+/// original index first, then the second lowest, the rest in the order that keeps the orientation.
+/// Writes the positions (0-3) of the corners in that order.
+void canonical_corners(const std::uint32_t* original_of_corner, int* at) {
+    int p[4] = {0, 1, 2, 3};
+    std::sort(p, p + 4, [&](int a, int b) { return original_of_corner[a] < original_of_corner[b]; });
+    int rest[2] = {p[2], p[3]};
+    if (rest[0] > rest[1]) std::swap(rest[0], rest[1]);
+    at[0] = p[0], at[1] = p[1], at[2] = rest[0], at[3] = rest[1];
+    // Parity of the permutation `at`: an odd one swaps the last two.
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inversions += at[i] > at[j];
+    if (inversions & 1) std::swap(at[2], at[3]);
+}
+
+/// The tetrahedra in canonical order, their neighbours, and the hull triangles.
+void write_tetrahedra(const Mesh& mesh, const Points& points, Delaunay3& out) {
+    const std::size_t slots = mesh.size();
+    const std::size_t m = points.size();
+    const std::uint32_t* corner = mesh.corner.data();
+    const std::uint32_t* original = points.original.data();
+    constexpr std::uint32_t kNone = 0xffffffffu;
+    // Each finite tetrahedron's canonical corner order, packed as 2 bits per position.
+    std::vector<std::uint8_t> rotation(slots, 0);
+    std::vector<std::uint32_t> start(m + 1, 0);
+    std::size_t finite = 0;
+    auto first_corner = [&](std::size_t t) { return corner[4 * t + (rotation[t] & 3u)]; };
+    for (std::size_t t = 0; t < slots; ++t) {
+        const std::uint32_t* c = corner + 4 * t;
+        if (c[3] >= delaunay3_detail::kFree) continue;  // ghost or free
+        const std::uint32_t orig[4] = {original[c[0]], original[c[1]], original[c[2]], original[c[3]]};
+        int at[4];
+        canonical_corners(orig, at);
+        rotation[t] = static_cast<std::uint8_t>(at[0] | at[1] << 2 | at[2] << 4 | at[3] << 6);
+        ++start[first_corner(t) + 1];
+        ++finite;
+    }
+    for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> slot_of(finite);
+    for (std::size_t t = 0; t < slots; ++t) {
+        if (corner[4 * t + 3] >= delaunay3_detail::kFree) continue;
+        slot_of[start[first_corner(t)]++] = static_cast<std::uint32_t>(t);
+    }
+    // Buckets (about 6.7 tetrahedra each) by the second, then third corner's curve position.
+    auto corner_at = [&](std::uint32_t t, int position) { return corner[4 * t + ((rotation[t] >> (2 * position)) & 3u)]; };
+    auto before = [&](std::uint32_t a, std::uint32_t b) {
+        const std::uint32_t a1 = corner_at(a, 1), b1 = corner_at(b, 1);
+        return a1 < b1 || (a1 == b1 && corner_at(a, 2) < corner_at(b, 2));
+    };
+    std::uint32_t bucket_begin = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t bucket_end = start[i];
+        for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
+            const std::uint32_t moving = slot_of[q];
+            std::uint32_t s = q;
+            for (; s > bucket_begin && before(moving, slot_of[s - 1]); --s) slot_of[s] = slot_of[s - 1];
+            slot_of[s] = moving;
+        }
+        bucket_begin = bucket_end;
+    }
+    std::vector<std::uint32_t> position(slots, kNone);
+    for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
+    out.tetrahedra.resize(4 * finite);
+    out.neighbors.resize(4 * finite);
+    for (std::size_t q = 0; q < finite; ++q) {
+        const std::uint32_t t = slot_of[q];
+        for (int j = 0; j < 4; ++j) {
+            const int k = (rotation[t] >> (2 * j)) & 3;
+            out.tetrahedra[4 * q + j] = original[corner[4 * t + k]];
+            const std::uint32_t u = position[mesh.adjacent[4 * t + k] >> 2];
+            out.neighbors[4 * q + j] = u == kNone ? -1 : static_cast<std::int32_t>(u);
+        }
+    }
+    // Hull triangles: the ghosts' finite faces, each from its lowest index, sorted.
+    std::vector<std::array<std::uint32_t, 3>> hull;
+    for (std::size_t t = 0; t < slots; ++t) {
+        if (corner[4 * t + 3] != kGhost) continue;
+        std::array<std::uint32_t, 3> f = {original[corner[4 * t]], original[corner[4 * t + 1]], original[corner[4 * t + 2]]};
+        std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+        hull.push_back(f);
+    }
+    std::sort(hull.begin(), hull.end());
+    out.hull.reserve(3 * hull.size());
+    for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
+}
+
+}  // namespace
+
+Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
+    Extent extent;
+    Delaunay3 out = check_input(input, &extent);
+    if (!out.ok()) return out;
+    Points points;
+    gather_distinct(input, extent, out, points);
+    const std::size_t m = points.size();
+    if (m == 0) {
+        out.dimension = -1;
+        return out;
+    }
+    if (m == 1) {
+        out.dimension = 0;
+        out.vertices = points.original;
+        return out;
+    }
+    std::size_t c = 2;
+    while (c < m && collinear3d(points[0], points[1], points[c])) ++c;
+    if (c == m) {  // collinear: the lexicographic order is the order along the line
+        out.dimension = 1;
+        std::vector<std::uint32_t> along(m);
+        std::iota(along.begin(), along.end(), 0u);
+        std::sort(along.begin(), along.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return delaunay3_detail::lexicographically_less(points[a], points[b]);
+        });
+        for (std::uint32_t i : along) out.vertices.push_back(points.original[i]);
+        return out;
+    }
+    std::size_t d = 0;
+    while (d < m && orient3d(points[0], points[1], points[c], points[d]) == 0) ++d;
+    if (d == m) {
+        return failure("delaunay3: coplanar input is not handled yet");
+    }
+    out.dimension = 3;
+    insertion_order(points);
+    try {
+        const Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
+        write_tetrahedra(mesh, points, out);
+    } catch (const std::bad_alloc&) {
+        return failure("out of memory tetrahedralizing " + std::to_string(m) + " points");
+    }
+    return out;
+}
+
+}  // namespace hullkit

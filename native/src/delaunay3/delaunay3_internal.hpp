@@ -1,0 +1,85 @@
+// Private to native/src/delaunay3: the working mesh, the perturbed predicates, and what the
+// insertion shares with the driver (delaunay3.cpp) and the checks.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "hullkit/delaunay3.hpp"
+#include "hullkit/predicates.hpp"
+
+namespace hullkit {
+namespace delaunay3_detail {
+
+/// The vertex at infinity of the ghost tetrahedra; always their corner 3.
+constexpr std::uint32_t kGhost = 0xffffffffu;
+/// Corner 3 of a slot that holds no tetrahedron (freed and not reused).
+constexpr std::uint32_t kFree = 0xfffffffeu;
+
+/// The distinct points (duplicates merged), scaled into insphere's exact range, stored in
+/// Hilbert-curve order (local index = position along the curve); point i is input point original[i].
+/// `order` is the insertion order (BRIO: rounds of doubling size, each along the curve).
+struct Points {
+    std::vector<double> xyz;
+    std::vector<std::uint32_t> original;
+    std::vector<std::uint32_t> order;
+    double span = 0;  ///< no coordinate difference of two points, as computed, is larger
+
+    std::size_t size() const { return original.size(); }
+    const double* operator[](std::size_t i) const { return xyz.data() + 3 * i; }
+};
+
+/// Lexicographic order of (x, y, z): the tie-breaking rank of the perturbation (later = raised more).
+inline bool lexicographically_less(const double* a, const double* b) {
+    return a[0] < b[0] || (a[0] == b[0] && (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));
+}
+
+/// The tetrahedra: corners (positively oriented; ghosts have kGhost as corner 3 and their finite
+/// face, corners 0-2, counter-clockwise seen from outside) and, for face k (opposite corner k), the
+/// neighbour across it as 4 * tetrahedron + its face index.
+struct Mesh {
+    std::vector<std::uint32_t> corner;
+    std::vector<std::uint32_t> adjacent;
+    std::size_t size() const { return corner.size() / 4; }
+    bool is_ghost(std::size_t t) const { return corner[4 * t + 3] == kGhost; }
+    bool is_free(std::size_t t) const { return corner[4 * t + 3] == kFree; }
+};
+
+/// The exact predicates with the symbolic perturbation (delaunay3.hpp, "Ties").
+class Predicates {
+public:
+    explicit Predicates(const Points& points);
+
+    /// orient3d of four finite points.
+    int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
+        return detail::orient3d_semi_static(orient_bound_, p(a), p(b), p(c), p(d));
+    }
+    /// Whether e conflicts with tetrahedron `t` (its circumsphere, or for a ghost the open half-space
+    /// beyond its hull face, holds e), perturbed: never 0 for distinct points.
+    bool conflict(const std::uint32_t* t, std::uint32_t e) const;
+    /// The perturbed in-sphere sign of e against the positively oriented finite a, b, c, d.
+    int insphere_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                           std::uint32_t e) const;
+    /// The perturbed sign of e, coplanar with the hull face a, b, c (counter-clockwise seen from
+    /// outside), against that face's circumcircle: what the ghost a, b, c, infinity answers.
+    int coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t e) const;
+
+    const double* p(std::uint32_t i) const { return xyz_ + 3 * static_cast<std::size_t>(i); }
+
+private:
+    const double* xyz_;
+    double span_;
+    double orient_bound_;
+    double insphere_bound_;
+};
+
+/// Bowyer-Watson insertion of every point of `points` (in points.order) into one mesh; the points
+/// must not be all coplanar. `threads` as Delaunay3Options::threads. Returns the mesh, ghosts
+/// included (free slots have kFree as corner 3).
+Mesh tetrahedralize(const Points& points, unsigned threads,
+                    const std::function<void(std::size_t, std::size_t)>& progress);
+
+}  // namespace delaunay3_detail
+}  // namespace hullkit

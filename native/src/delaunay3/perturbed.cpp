@@ -1,0 +1,115 @@
+// The perturbed predicates of the 3D Delaunay tetrahedralization (delaunay3.hpp, "Ties").
+//
+// Each point's lift |p|^2 is raised by delta(p) = eps^(rank), the later a point comes in the
+// lexicographic (x, y, z) order the larger its infinitesimal. The in-sphere determinant G(e) of e
+// against a positively oriented a, b, c, d (hullkit's sign: > 0 inside) is affine in each delta,
+// with the partial derivatives
+//     dG/d delta_e = -orient3d(a, b, c, d)            (raising e moves it outside),
+//     dG/d delta_v =  orient3d(a, b, c, d with v replaced by e)   for each corner v,
+// so when G is exactly 0 its perturbed sign is the sign of the first nonzero derivative taken in
+// decreasing order of the five points' ranks (Devillers & Teillaud 2011, section 3). For distinct
+// points one of the first three is nonzero. A ghost (a, b, c, infinity) is the limit of a
+// tetrahedron whose fourth corner runs off to infinity beyond the hull face a, b, c: it holds e
+// when e is strictly beyond the face's plane, and for e on the plane its perturbed sphere is the
+// face's circumcircle in the plane, perturbed the same way. The corner at infinity has no term of
+// its own there (its derivative orient3d(a, b, c, e) is 0 for coplanar e), and the others' terms
+// depend on it only through its side, so any finite point q beyond the face stands in for it.
+#include <algorithm>
+#include <cmath>
+
+#include "delaunay3_internal.hpp"
+
+namespace hullkit {
+namespace delaunay3_detail {
+
+Predicates::Predicates(const Points& points)
+    : xyz_(points.xyz.data()),
+      span_(points.span),
+      orient_bound_(detail::orient3d_static_bound(points.span)),
+      insphere_bound_(detail::insphere_static_bound(points.span)) {}
+
+namespace {
+
+/// Sorts the positions 0..count-1 of `points` by decreasing lexicographic order (count <= 5).
+template <int count>
+void by_decreasing_rank(const double* const* points, int* rank_order) {
+    for (int i = 0; i < count; ++i) rank_order[i] = i;
+    for (int i = 1; i < count; ++i) {
+        const int moving = rank_order[i];
+        int j = i;
+        for (; j > 0 && lexicographically_less(points[rank_order[j - 1]], points[moving]); --j)
+            rank_order[j] = rank_order[j - 1];
+        rank_order[j] = moving;
+    }
+}
+
+/// The perturbation's decision for corners w[0..3] (positively oriented, w[3] possibly a stand-in
+/// for infinity that takes part in no ranking: `ranked` corners are w[0..ranked-1]) and the query e,
+/// when the unperturbed in-sphere sign is 0.
+int perturbation(const double* const* w, int ranked, const double* e) {
+    const double* points[5];
+    for (int i = 0; i < ranked; ++i) points[i] = w[i];
+    points[ranked] = e;
+    int order[5];
+    if (ranked == 4) {
+        by_decreasing_rank<5>(points, order);
+    } else {
+        by_decreasing_rank<4>(points, order);
+    }
+    for (int r = 0; r <= ranked; ++r) {
+        const int i = order[r];
+        if (i == ranked) return -1;  // e itself is raised most: outside
+        const double* replaced[4] = {w[0], w[1], w[2], w[3]};
+        replaced[i] = e;
+        if (const int o = orient3d(replaced[0], replaced[1], replaced[2], replaced[3]); o != 0) return o;
+    }
+    return -1;  // not reached for distinct points: e's own term is nonzero
+}
+
+}  // namespace
+
+int Predicates::insphere_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                                   std::uint32_t e) const {
+    if (const int s = detail::insphere_semi_static(insphere_bound_, p(a), p(b), p(c), p(d), p(e)); s != 0) return s;
+    const double* w[4] = {p(a), p(b), p(c), p(d)};
+    return perturbation(w, 4, p(e));
+}
+
+int Predicates::coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t e) const {
+    const double* pa = p(a);
+    const double* pb = p(b);
+    const double* pc = p(c);
+    // q beyond the face: a moved along the axis where the face's normal n = (b-a) x (c-a) is largest,
+    // in the direction of that component's exact sign; then orient3d(a, b, c, q) = n_k (q_k - a_k) > 0.
+    // The move is at least |a_k| and at least the points' span, so q_k != a_k, and |q_k| stays
+    // within 3 times the largest coordinate (delaunay3() leaves room for that in the exact range).
+    const double n[3] = {(pb[1] - pa[1]) * (pc[2] - pa[2]) - (pb[2] - pa[2]) * (pc[1] - pa[1]),
+                         (pb[2] - pa[2]) * (pc[0] - pa[0]) - (pb[0] - pa[0]) * (pc[2] - pa[2]),
+                         (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0])};
+    int axes[3] = {0, 1, 2};
+    std::stable_sort(axes, axes + 3, [&](int i, int j) { return std::fabs(n[i]) > std::fabs(n[j]); });
+    double q[3] = {pa[0], pa[1], pa[2]};
+    for (const int k : axes) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        const int sign = orient2d(pa[i], pa[j], pb[i], pb[j], pc[i], pc[j]);  // the exact sign of n_k
+        if (sign == 0) continue;
+        const double move = std::max(span_, std::fabs(pa[k]));
+        q[k] = pa[k] + (sign > 0 ? move : -move);
+        break;
+    }
+    if (const int s = insphere(pa, pb, pc, q, p(e)); s != 0) return s;
+    const double* w[4] = {pa, pb, pc, q};
+    return perturbation(w, 3, p(e));
+}
+
+bool Predicates::conflict(const std::uint32_t* t, std::uint32_t e) const {
+    if (t[3] == kGhost) {
+        const int side = orient(t[0], t[1], t[2], e);
+        if (side != 0) return side > 0;
+        return coplanar_perturbed(t[0], t[1], t[2], e) > 0;
+    }
+    return insphere_perturbed(t[0], t[1], t[2], t[3], e) > 0;
+}
+
+}  // namespace delaunay3_detail
+}  // namespace hullkit

@@ -1,0 +1,297 @@
+// hullkit: the exact in-sphere test (see predicates.hpp for the contract and the valid range), the
+// predicate of degree 5 that 3D Delaunay by lifting to 4D decides everything with.
+//
+// det = alift * M(b,c,d) - blift * M(c,d,a) + clift * M(d,a,b) - dlift * M(a,b,c), rows relative
+// to e (aex = ax - ex, ..., alift = aex^2 + aey^2 + aez^2) and M the 3x3 minors of the x, y, z
+// columns built from the six 2x2 minors of x and y (predicates.hpp, insphere_stage_a_det). This is
+// hullkit's sign: +1 inside for positively oriented a, b, c, d.
+//
+// Stages (as the other predicates, Shewchuk 1997):
+//   A  the value in floating point against Shewchuk's bound for this determinant,
+//      (16 + 224 eps) eps times the permanent (in the header, inlinable);
+//   B  when the twelve differences are exact (their roundoff is 0: grids, integer and dyadic
+//      coordinates, the common degenerate inputs): small integers (after a power-of-two scale,
+//      below 2^9) are evaluated in plain doubles, which is then exact; otherwise the determinant of
+//      the differences as an expansion (fixed arrays, exact);
+//   D  otherwise the full exact expansion from the exact differences (each of two components),
+//      compressed after every product (heap arrays: this path is rare).
+// There is no stage C: the inputs that get past stage A without exact differences are
+// near-degenerate floating-point data, rare enough that the exact stage costs nothing measurable.
+//
+// Valid range (kInsphereMinMagnitude = 2^-120 .. kInsphereMaxMagnitude = 2^+195), by the argument of
+// predicates.hpp for a polynomial of degree 5:
+//  * Overflow: differences are below 2^196, products of five below 2^980; the permanent (72 such
+//    products at most, each a lift of 3 squares times a minor of 6 products) and every partial sum of
+//    the exact expansions stay below 2^990. Veltkamp splitting multiplies components of degree at
+//    most 4 (below 2^790) by 2^27 + 1: nothing reaches 2^1024.
+//  * Underflow: a nonzero |x| >= 2^-120 is a multiple of q = 2^-172, so every value any stage
+//    computes is a multiple of q^5 = 2^-860; the smallest error bound, about 2^-49 times a nonzero
+//    permanent, stays normal (>= 2^-1022), so all error-free transformations are exact and the
+//    relative bounds hold.
+#include "hullkit/predicates.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "expansion.hpp"
+
+namespace hullkit {
+
+using namespace exact_detail;
+
+namespace {
+
+/// 2^(9 - e) for the e with 2^(e-1) <= x < 2^e (x > 0 normal), so that x times it is below 2^9;
+/// NaN when x is 0 or subnormal or the power is not a normal double (the caller's test then fails).
+inline double power_of_two_below_512_over(double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);  // x in [2^(biased-1023), 2^(biased-1022))
+    const int result = 2054 - biased;                            // biased exponent of 2^(1031 - biased)
+    if (biased == 0 || result < 1 || result > 2046) return std::numeric_limits<double>::quiet_NaN();
+    const std::uint64_t out = static_cast<std::uint64_t>(result) << 52;
+    double scale;
+    std::memcpy(&scale, &out, sizeof scale);
+    return scale;
+}
+
+/// The determinant (hullkit's sign) from twelve differences in plain doubles: exact when they are
+/// integers below 2^9 in magnitude (every product and sum is then an integer below 2^53: lifts
+/// below 3 * 2^18, minors below 6 * 2^27, terms below 18 * 2^45, the sum below 72 * 2^45).
+double insphere_plain(const double* d) {
+    const double aex = d[0], aey = d[1], aez = d[2], bex = d[3], bey = d[4], bez = d[5];
+    const double cex = d[6], cey = d[7], cez = d[8], dex = d[9], dey = d[10], dez = d[11];
+    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
+    const double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    const double abc = aez * bc - bez * ac + cez * ab;
+    const double bcd = bez * cd - cez * bd + dez * bc;
+    const double cda = cez * da + dez * ac + aez * cd;
+    const double dab = dez * ab + aez * bd + bez * da;
+    const double alift = aex * aex + aey * aey + aez * aez;
+    const double blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez;
+    const double dlift = dex * dex + dey * dey + dez * dez;
+    return (alift * bcd - blift * cda) + (clift * dab - dlift * abc);
+}
+
+/// Exact u * v - w * z of four doubles, as an expansion of at most 4 components.
+inline int product_diff(double u, double v, double w, double z, double* h) {
+    double hi1, lo1, hi2, lo2;
+    two_product(u, v, hi1, lo1);
+    two_product(w, z, hi2, lo2);
+    return two_two_diff(hi1, lo1, hi2, lo2, h);
+}
+
+/// h = p * z1 + q * z2 + r * z3 for expansions p, q, r of at most 4 components (a 3x3 minor from
+/// 2x2 minors); h has room for 24 components.
+int minor3(int plen, const double* p, double z1, int qlen, const double* q, double z2, int rlen, const double* r,
+           double z3, double* h) {
+    double t1[8], t2[8], t3[8], t12[16];
+    const int l1 = scale_expansion(plen, p, z1, t1);
+    const int l2 = scale_expansion(qlen, q, z2, t2);
+    const int l3 = scale_expansion(rlen, r, z3, t3);
+    const int l12 = expansion_sum(l1, t1, l2, t2, t12);
+    return expansion_sum(l12, t12, l3, t3, h);
+}
+
+/// h = minor * (x^2 + y^2 + z^2) * sign exactly, for a minor of at most 24 components (h: at most
+/// 288), by repeated scaling.
+int lift_times(int mlen, const double* minor, double x, double y, double z, double sign, double* h) {
+    double m1[48], mx[96], my[96], mz[96], mxy[192];
+    auto square_scaled = [&](double v, double* out) {
+        const int l1 = scale_expansion(mlen, minor, v * sign, m1);
+        return scale_expansion(l1, m1, v, out);
+    };
+    const int lx = square_scaled(x, mx);
+    const int ly = square_scaled(y, my);
+    const int lz = square_scaled(z, mz);
+    const int lxy = expansion_sum(lx, mx, ly, my, mxy);
+    return expansion_sum(lxy, mxy, lz, mz, h);
+}
+
+/// Stage B on exact differences d (aex, aey, aez, bex, ..., dez): the exact sign.
+int insphere_exact_differences(const double* d) {
+    const double aex = d[0], aey = d[1], aez = d[2], bex = d[3], bey = d[4], bez = d[5];
+    const double cex = d[6], cey = d[7], cez = d[8], dex = d[9], dey = d[10], dez = d[11];
+    double ab[4], bc[4], cd[4], da[4], ac[4], bd[4], ca[4], db[4];
+    const int lab = product_diff(aex, bey, bex, aey, ab), lbc = product_diff(bex, cey, cex, bey, bc);
+    const int lcd = product_diff(cex, dey, dex, cey, cd), lda = product_diff(dex, aey, aex, dey, da);
+    const int lac = product_diff(aex, cey, cex, aey, ac), lbd = product_diff(bex, dey, dex, bey, bd);
+    for (int i = 0; i < lac; ++i) ca[i] = -ac[i];
+    for (int i = 0; i < lbd; ++i) db[i] = -bd[i];
+    double abc[24], bcd[24], cda[24], dab[24];
+    const int labc = minor3(lbc, bc, aez, lac, ca, bez, lab, ab, cez, abc);  // aez bc - bez ac + cez ab
+    const int lbcd = minor3(lcd, cd, bez, lbd, db, cez, lbc, bc, dez, bcd);  // bez cd - cez bd + dez bc
+    const int lcda = minor3(lda, da, cez, lac, ac, dez, lcd, cd, aez, cda);  // cez da + dez ac + aez cd
+    const int ldab = minor3(lab, ab, dez, lbd, bd, aez, lda, da, bez, dab);  // dez ab + aez bd + bez da
+    double ta[288], tb[288], tc[288], td[288];
+    const int la = lift_times(lbcd, bcd, aex, aey, aez, 1.0, ta);
+    const int lb = lift_times(lcda, cda, bex, bey, bez, -1.0, tb);
+    const int lc = lift_times(ldab, dab, cex, cey, cez, 1.0, tc);
+    const int ld = lift_times(labc, abc, dex, dey, dez, -1.0, td);
+    double s1[576], s2[576], det[1152];
+    const int l1 = expansion_sum(la, ta, lb, tb, s1);
+    const int l2 = expansion_sum(lc, tc, ld, td, s2);
+    return expansion_sign(expansion_sum(l1, s1, l2, s2, det), det);
+}
+
+// ---- Stage D: general expansions on the heap, compressed after each product ----
+
+using Expansion = std::vector<double>;
+
+/// Shewchuk's Compress: the same value with (nearly) as few components as its bits allow, in
+/// increasing magnitude and without zeros.
+Expansion compress(const Expansion& e) {
+    const int m = static_cast<int>(e.size());
+    if (m == 0) return {};
+    Expansion g(m), h;
+    double big = e[m - 1];
+    int bottom = m - 1;
+    for (int i = m - 2; i >= 0; --i) {
+        double sum, small;
+        fast_two_sum(big, e[i], sum, small);
+        if (small != 0.0) {
+            g[bottom--] = sum;
+            big = small;
+        } else {
+            big = sum;
+        }
+    }
+    g[bottom] = big;
+    h.reserve(m - bottom);
+    double carry = g[bottom];
+    for (int i = bottom + 1; i < m; ++i) {
+        double sum, small;
+        fast_two_sum(g[i], carry, sum, small);
+        if (small != 0.0) h.push_back(small);
+        carry = sum;
+    }
+    if (carry != 0.0) h.push_back(carry);
+    return h;
+}
+
+Expansion add(const Expansion& e, const Expansion& f) {
+    Expansion h(e.size() + f.size());
+    h.resize(expansion_sum(static_cast<int>(e.size()), e.data(), static_cast<int>(f.size()), f.data(), h.data()));
+    return h;
+}
+
+Expansion negate(Expansion e) {
+    for (double& x : e) x = -x;
+    return e;
+}
+
+Expansion multiply(const Expansion& e, const Expansion& f) {
+    Expansion h, part;
+    for (double component : f) {
+        part.resize(2 * e.size());
+        part.resize(scale_expansion(static_cast<int>(e.size()), e.data(), component, part.data()));
+        h = add(h, part);
+    }
+    return compress(h);
+}
+
+Expansion difference(double a, double b) {
+    double h[2];
+    const int len = exact_diff(a, b, h);
+    return Expansion(h, h + len);
+}
+
+/// Stage D: the exact sign from the exact differences of the coordinates.
+int insphere_exact_sign(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    const double* rows[4] = {a, b, c, d};
+    Expansion x[4], y[4], z[4];
+    for (int i = 0; i < 4; ++i) {
+        x[i] = difference(rows[i][0], e[0]);
+        y[i] = difference(rows[i][1], e[1]);
+        z[i] = difference(rows[i][2], e[2]);
+    }
+    auto minor2 = [&](int i, int j) {  // x_i y_j - x_j y_i
+        double h[16];
+        const int len = exact_minor(static_cast<int>(x[i].size()), x[i].data(), static_cast<int>(y[j].size()),
+                                    y[j].data(), static_cast<int>(x[j].size()), x[j].data(),
+                                    static_cast<int>(y[i].size()), y[i].data(), h);
+        return Expansion(h, h + len);
+    };
+    // 3x3 minor of rows i, j, k of (x, y, z): z_i m(j,k) - z_j m(i,k) + z_k m(i,j).
+    auto minor3_of = [&](int i, int j, int k) {
+        return add(add(multiply(z[i], minor2(j, k)), negate(multiply(z[j], minor2(i, k)))), multiply(z[k], minor2(i, j)));
+    };
+    auto lift = [&](int i) { return add(add(multiply(x[i], x[i]), multiply(y[i], y[i])), multiply(z[i], z[i])); };
+    // Expanding det[rows - e, lift] by its lift column: the hullkit sign is
+    // alift M(b,c,d) - blift M(a,c,d) + clift M(a,b,d) - dlift M(a,b,c) (minors of the rows in order).
+    const Expansion ta = multiply(lift(0), minor3_of(1, 2, 3));
+    const Expansion tb = multiply(lift(1), minor3_of(0, 2, 3));
+    const Expansion tc = multiply(lift(2), minor3_of(0, 1, 3));
+    const Expansion td = multiply(lift(3), minor3_of(0, 1, 2));
+    const Expansion det = add(add(ta, negate(tb)), add(tc, negate(td)));
+    return expansion_sign(static_cast<int>(det.size()), det.data());
+}
+
+int insphere_adapt(const double* a, const double* b, const double* c, const double* d, const double* e,
+                   double permanent, int* stage) {
+    if (permanent == 0.0) {
+        // Every term has a factor that is exactly zero (in range no nonzero product rounds to 0).
+        return 0;
+    }
+    const double* rows[4] = {a, b, c, d};
+    double diff[12];
+    bool exact_differences = true;
+    for (int i = 0; i < 4; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            diff[3 * i + k] = rows[i][k] - e[k];
+            if (diff_roundoff(rows[i][k], e[k], diff[3 * i + k]) != 0.0) exact_differences = false;
+        }
+    }
+    if (exact_differences) {
+        if (stage) *stage = 1;
+        double largest = 0.0;
+        for (double v : diff) largest = std::max(largest, std::fabs(v));
+        const double scale = power_of_two_below_512_over(largest);
+        double scaled[12];
+        bool integers = true;
+        for (int i = 0; i < 12; ++i) {
+            scaled[i] = diff[i] * scale;
+            integers = integers && scaled[i] == std::trunc(scaled[i]);
+        }
+        if (integers) return sign_of(insphere_plain(scaled));
+        return insphere_exact_differences(diff);
+    }
+    if (stage) *stage = 3;
+    return insphere_exact_sign(a, b, c, d, e);
+}
+
+inline int insphere_impl(const double* a, const double* b, const double* c, const double* d, const double* e,
+                         int* stage) {
+    const detail::InsphereStageA s = detail::insphere_stage_a(a, b, c, d, e);
+    if (stage) *stage = 0;
+    const double errbound = detail::kInsphereFilterBound * s.permanent;
+    if (s.det > errbound) return 1;
+    if (-s.det > errbound) return -1;
+    return insphere_adapt(a, b, c, d, e, s.permanent, stage);
+}
+
+}  // namespace
+
+int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    return insphere_impl(a, b, c, d, e, nullptr);
+}
+
+namespace detail {
+
+int insphere_traced(const double* a, const double* b, const double* c, const double* d, const double* e,
+                    int* stage) {
+    int ignored = 0;
+    return insphere_impl(a, b, c, d, e, stage ? stage : &ignored);
+}
+
+int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    return insphere_exact_sign(a, b, c, d, e);
+}
+
+}  // namespace detail
+}  // namespace hullkit
