@@ -214,95 +214,76 @@ void insertion_order(Points& points) {
         ++count[round[i] + 1];
     }
     for (int r = 0; r <= top; ++r) count[r + 1] += count[r];
+    points.rounds.assign(count.begin(), count.end());
     points.order.resize(m);
     for (std::size_t i = 0; i < m; ++i) points.order[count[round[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-/// The canonical corner order of a positively oriented tetrahedron (or triangle): the lowest
-/// original index first, then the second lowest, the rest in the order that keeps the orientation.
-/// Writes the positions (0-3) of the corners in that order.
-void canonical_corners(const std::uint32_t* original_of_corner, int* at) {
-    int p[4] = {0, 1, 2, 3};
-    std::sort(p, p + 4, [&](int a, int b) { return original_of_corner[a] < original_of_corner[b]; });
-    int rest[2] = {p[2], p[3]};
-    if (rest[0] > rest[1]) std::swap(rest[0], rest[1]);
-    at[0] = p[0], at[1] = p[1], at[2] = rest[0], at[3] = rest[1];
-    // Parity of the permutation `at`: an odd one swaps the last two.
+/// The canonical corner order of a positively oriented tetrahedron: the lowest original index
+/// first, then the second lowest, the other two in the order that keeps the orientation. Returns
+/// the positions (0-3) of the corners in that order, packed 2 bits each.
+std::uint8_t canonical_rotation(const std::uint32_t* original_of_corner) {
+    int at[4];
+    for (int i = 0; i < 4; ++i) {
+        int rank = 0;
+        for (int j = 0; j < 4; ++j) rank += original_of_corner[j] < original_of_corner[i];
+        at[rank] = i;
+    }
+    if (at[2] > at[3]) std::swap(at[2], at[3]);
+    // An odd permutation swaps the last two.
     int inversions = 0;
     for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) inversions += at[i] > at[j];
     if (inversions & 1) std::swap(at[2], at[3]);
+    return static_cast<std::uint8_t>(at[0] | at[1] << 2 | at[2] << 4 | at[3] << 6);
 }
 
-/// The tetrahedra in canonical order, their neighbours, and the hull triangles.
-void write_tetrahedra(const Mesh& mesh, const Points& points, Delaunay3& out) {
+/// Writes the tetrahedra into the mesh's own arrays and moves them into `out` (the output costs no
+/// second copy of the mesh): the finite tetrahedra in slot order (the insertion's order, the same
+/// for every thread count), each row rewritten as original indices in canonical corner order and
+/// its neighbours' new positions; the hull triangles from the ghosts.
+void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
     const std::size_t slots = mesh.size();
-    const std::size_t m = points.size();
-    const std::uint32_t* corner = mesh.corner.data();
+    std::uint32_t* corner = mesh.corner.data();
+    std::uint32_t* link = mesh.links();
     const std::uint32_t* original = points.original.data();
-    constexpr std::uint32_t kNone = 0xffffffffu;
-    // Each finite tetrahedron's canonical corner order, packed as 2 bits per position.
-    std::vector<std::uint8_t> rotation(slots, 0);
-    std::vector<std::uint32_t> start(m + 1, 0);
-    std::size_t finite = 0;
-    auto first_corner = [&](std::size_t t) { return corner[4 * t + (rotation[t] & 3u)]; };
+    constexpr std::uint32_t kNone = 0xffffffffu;  // -1 as a neighbour
+    std::vector<std::uint32_t> position(slots);
+    std::vector<std::array<std::uint32_t, 3>> hull;
+    std::uint32_t finite = 0;
     for (std::size_t t = 0; t < slots; ++t) {
         const std::uint32_t* c = corner + 4 * t;
-        if (c[3] >= delaunay3_detail::kFree) continue;  // ghost or free
-        const std::uint32_t orig[4] = {original[c[0]], original[c[1]], original[c[2]], original[c[3]]};
-        int at[4];
-        canonical_corners(orig, at);
-        rotation[t] = static_cast<std::uint8_t>(at[0] | at[1] << 2 | at[2] << 4 | at[3] << 6);
-        ++start[first_corner(t) + 1];
-        ++finite;
-    }
-    for (std::size_t i = 0; i < m; ++i) start[i + 1] += start[i];
-    std::vector<std::uint32_t> slot_of(finite);
-    for (std::size_t t = 0; t < slots; ++t) {
-        if (corner[4 * t + 3] >= delaunay3_detail::kFree) continue;
-        slot_of[start[first_corner(t)]++] = static_cast<std::uint32_t>(t);
-    }
-    // Buckets (about 6.7 tetrahedra each) by the second, then third corner's curve position.
-    auto corner_at = [&](std::uint32_t t, int position) { return corner[4 * t + ((rotation[t] >> (2 * position)) & 3u)]; };
-    auto before = [&](std::uint32_t a, std::uint32_t b) {
-        const std::uint32_t a1 = corner_at(a, 1), b1 = corner_at(b, 1);
-        return a1 < b1 || (a1 == b1 && corner_at(a, 2) < corner_at(b, 2));
-    };
-    std::uint32_t bucket_begin = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t bucket_end = start[i];
-        for (std::uint32_t q = bucket_begin + 1; q < bucket_end; ++q) {
-            const std::uint32_t moving = slot_of[q];
-            std::uint32_t s = q;
-            for (; s > bucket_begin && before(moving, slot_of[s - 1]); --s) slot_of[s] = slot_of[s - 1];
-            slot_of[s] = moving;
+        position[t] = c[3] >= delaunay3_detail::kFree ? kNone : finite++;
+        if (c[3] == kGhost) {
+            std::array<std::uint32_t, 3> f = {original[c[0]], original[c[1]], original[c[2]]};
+            std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+            hull.push_back(f);
         }
-        bucket_begin = bucket_end;
-    }
-    std::vector<std::uint32_t> position(slots, kNone);
-    for (std::size_t q = 0; q < finite; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
-    out.tetrahedra.resize(4 * finite);
-    out.neighbors.resize(4 * finite);
-    for (std::size_t q = 0; q < finite; ++q) {
-        const std::uint32_t t = slot_of[q];
-        for (int j = 0; j < 4; ++j) {
-            const int k = (rotation[t] >> (2 * j)) & 3;
-            out.tetrahedra[4 * q + j] = original[corner[4 * t + k]];
-            const std::uint32_t u = position[mesh.adjacent[4 * t + k] >> 2];
-            out.neighbors[4 * q + j] = u == kNone ? -1 : static_cast<std::int32_t>(u);
-        }
-    }
-    // Hull triangles: the ghosts' finite faces, each from its lowest index, sorted.
-    std::vector<std::array<std::uint32_t, 3>> hull;
-    for (std::size_t t = 0; t < slots; ++t) {
-        if (corner[4 * t + 3] != kGhost) continue;
-        std::array<std::uint32_t, 3> f = {original[corner[4 * t]], original[corner[4 * t + 1]], original[corner[4 * t + 2]]};
-        std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-        hull.push_back(f);
     }
     std::sort(hull.begin(), hull.end());
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
+    // Rows move down only (position[t] <= t), so rewriting in slot order reads each row before any
+    // row is written over it.
+    for (std::size_t t = 0; t < slots; ++t) {
+        const std::uint32_t q = position[t];
+        if (q == kNone) continue;
+        const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
+                                       original[corner[4 * t + 2]], original[corner[4 * t + 3]]};
+        const std::uint32_t r = canonical_rotation(orig);
+        std::uint32_t c[4], n[4];
+        for (int j = 0; j < 4; ++j) {
+            const std::uint32_t k = (r >> (2 * j)) & 3u;
+            c[j] = orig[k];
+            n[j] = position[link[4 * t + k] >> 2];  // kNone (-1) across the hull
+        }
+        std::copy(c, c + 4, corner + 4 * std::size_t{q});
+        std::copy(n, n + 4, link + 4 * std::size_t{q});
+    }
+    mesh.corner.resize(4 * std::size_t{finite});
+    mesh.adjacent.resize(4 * std::size_t{finite});
+    out.tetrahedra = std::move(mesh.corner);
+    out.neighbors = std::move(mesh.adjacent);
 }
 
 }  // namespace
@@ -343,10 +324,12 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
     out.dimension = 3;
     insertion_order(points);
     try {
-        const Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
+        Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
         write_tetrahedra(mesh, points, out);
     } catch (const std::bad_alloc&) {
         return failure("out of memory tetrahedralizing " + std::to_string(m) + " points");
+    } catch (const std::length_error&) {
+        return failure("too many tetrahedra for " + std::to_string(m) + " points (at most 2^29)");
     }
     return out;
 }

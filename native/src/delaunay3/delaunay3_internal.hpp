@@ -25,6 +25,8 @@ struct Points {
     std::vector<double> xyz;
     std::vector<std::uint32_t> original;
     std::vector<std::uint32_t> order;
+    /// The rounds of `order`: round r is order[rounds[r]] ... order[rounds[r + 1] - 1].
+    std::vector<std::size_t> rounds;
     double span = 0;  ///< no coordinate difference of two points, as computed, is larger
 
     std::size_t size() const { return original.size(); }
@@ -38,10 +40,15 @@ inline bool lexicographically_less(const double* a, const double* b) {
 
 /// The tetrahedra: corners (positively oriented; ghosts have kGhost as corner 3 and their finite
 /// face, corners 0-2, counter-clockwise seen from outside) and, for face k (opposite corner k), the
-/// neighbour across it as 4 * tetrahedron + its face index.
+/// neighbour across it as 4 * tetrahedron + its face index. `adjacent` is stored as int32 (the type
+/// of the output's neighbours, which are written into the same array) and used as uint32 through
+/// links(): at most kMaxTetrahedra slots keep every value below 2^31.
+constexpr std::size_t kMaxTetrahedra = std::size_t{1} << 29;
 struct Mesh {
     std::vector<std::uint32_t> corner;
-    std::vector<std::uint32_t> adjacent;
+    std::vector<std::int32_t> adjacent;
+    std::uint32_t* links() { return reinterpret_cast<std::uint32_t*>(adjacent.data()); }
+    const std::uint32_t* links() const { return reinterpret_cast<const std::uint32_t*>(adjacent.data()); }
     std::size_t size() const { return corner.size() / 4; }
     bool is_ghost(std::size_t t) const { return corner[4 * t + 3] == kGhost; }
     bool is_free(std::size_t t) const { return corner[4 * t + 3] == kFree; }
@@ -75,9 +82,9 @@ private:
     double insphere_bound_;
 };
 
-/// Bowyer-Watson insertion of every point of `points` (in points.order) into one mesh; the points
-/// must not be all coplanar. `threads` as Delaunay3Options::threads. Returns the mesh, ghosts
-/// included (free slots have kFree as corner 3).
+/// Bowyer-Watson insertion of every point of `points` (round by round of points.order) into one
+/// mesh; the points must not be all coplanar. `threads` as Delaunay3Options::threads: the mesh is
+/// the same for every value. Returns the mesh, ghosts included (free slots have kFree as corner 3).
 Mesh tetrahedralize(const Points& points, unsigned threads,
                     const std::function<void(std::size_t, std::size_t)>& progress);
 

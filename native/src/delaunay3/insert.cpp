@@ -1,13 +1,28 @@
-// Bowyer-Watson insertion: the incremental construction of the lower 4D hull of the lifted points.
+// Bowyer-Watson insertion: the incremental construction of the lower 4D hull of the lifted points,
+// serial for small rounds and in deterministic partitions on threads for large ones.
 //
-// Each point p is located by a walk from the last new tetrahedron (a stochastic visibility walk:
-// cross a face that has p strictly on its far side, starting the scan at a varying face, never back
-// through the face just crossed). The tetrahedron reached holds p, or is a ghost whose hull face p
-// sees; either way it conflicts with p. The cavity, every tetrahedron whose (perturbed) circumsphere
-// holds p, is grown from it over faces; it is star-shaped from p, so each of its boundary faces
-// joined to p is a positively oriented new tetrahedron. The new tetrahedra take the cavity's slots
-// first; their faces through p are paired by the cavity boundary edge they contain (a small hash
-// table, cleared after each point).
+// One insertion. A point p is located by a walk from the last new tetrahedron (a stochastic
+// visibility walk: cross a face that has p strictly on its far side, starting the scan at a varying
+// face, never back through the face just crossed). The tetrahedron reached holds p, or is a ghost
+// whose hull face p sees; either way it conflicts with p. The cavity, every tetrahedron whose
+// (perturbed) circumsphere holds p, is grown from it over faces; it is star-shaped from p, so each
+// boundary face joined to p is a positively oriented new tetrahedron. The new tetrahedra take the
+// cavity's slots first; their faces through p are paired by the cavity boundary edge they contain
+// (a small hash table, cleared after each point).
+//
+// Partitions (after Marot, Pellerin & Remacle, "One machine, one minute, three billion tetrahedra",
+// IJNME 2019, made deterministic). A large round's points, in Hilbert order, are cut into P ranges
+// of the curve, P depending only on the round's size (never on the thread count). Partition i owns
+// the tetrahedra whose finite corners all lie in its range (local index = curve position); it
+// walks, grows cavities and writes only there, taking new slots from its own free list and a block
+// of slots reserved for it before the pass. A point whose walk or cavity reaches a tetrahedron it
+// does not own (or that would overrun the block) is deferred, untouched. Neighbours of an owned
+// tetrahedron are owned by the same partition or by none (they share three corners), and
+// tetrahedra owned by none are never changed during a pass except for the one face entry that a
+// single owner rewrites; so partitions never read what another writes, and each partition's work
+// depends only on the mesh at the start of the pass and on its own points. Deferred points are
+// retried in a pass whose ranges are shifted by half a range, the last few serially. The mesh is
+// therefore the same, slot for slot, for every thread count and platform.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -15,6 +30,7 @@
 
 #include "delaunay3_internal.hpp"
 #include "hull/large_array.hpp"
+#include "hull/parallel.hpp"
 
 namespace hullkit {
 namespace delaunay3_detail {
@@ -24,82 +40,76 @@ namespace {
 /// outside (its normal points away from corner k).
 constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-class Inserter {
+/// Points in a round below this many are inserted serially; a partition gets at least this many.
+constexpr std::size_t kPartitionPoints = 16384;
+constexpr std::size_t kMaxPartitions = 8;
+constexpr int kMaxPasses = 3;
+
+/// What the partitions share: the points, the mesh, and a mark per tetrahedron (each partition
+/// marks only tetrahedra it owns).
+struct Shared {
+    explicit Shared(const Points& p) : points(p), predicates(p) {}
+    const Points& points;
+    Predicates predicates;
+    Mesh mesh;
+    std::vector<std::uint8_t> mark;  ///< 0, 1 in the cavity being grown, 2 checked and not
+};
+
+/// One partition's (or the serial) insertion: its workspace and, in a pass, its range of owned
+/// corners, its free slots and its block of fresh slots.
+class Worker {
 public:
-    explicit Inserter(const Points& points) : points_(points), predicates_(points) {
-        const std::size_t expected = 7 * points.size() + 64;  // ~6.7 per point for uniform points
-        detail::reserve_large(mesh_.corner, 4 * expected);
-        detail::reserve_large(mesh_.adjacent, 4 * expected);
-        mark_.reserve(expected);
-        resize_table(64);
-    }
+    explicit Worker(Shared& shared) : shared_(shared) { resize_table(64); }
 
-    /// The first tetrahedron from the first four affinely independent points in insertion order,
-    /// its four ghosts, and the order in which the remaining points follow.
-    std::vector<std::uint32_t> start() {
-        const std::vector<std::uint32_t>& order = points_.order;
-        const std::size_t m = order.size();
-        std::size_t c = 2;
-        while (c < m && collinear3d(predicates_.p(order[0]), predicates_.p(order[1]), predicates_.p(order[c]))) ++c;
-        std::size_t d = c + 1;
-        while (d < m && predicates_.orient(order[0], order[1], order[c], order[d]) == 0) ++d;
-        if (d >= m) throw std::logic_error("delaunay3: the points are coplanar");
-        std::uint32_t v[4] = {order[0], order[1], order[c], order[d]};
-        if (predicates_.orient(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
-        std::uint32_t corners[5][4];
-        std::copy(v, v + 4, corners[0]);
-        for (int k = 0; k < 4; ++k) {
-            for (int i = 0; i < 3; ++i) corners[k + 1][i] = v[kFace[k][i]];
-            corners[k + 1][3] = kGhost;
-        }
-        // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
-        mesh_.corner.resize(20);
-        mesh_.adjacent.resize(20);
-        mark_.assign(5, 0);
-        for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh_.corner[4 * t]);
-        auto face_set = [&](int t, int k) {
-            std::array<std::uint32_t, 3> f{};
-            for (int i = 0, n = 0; i < 4; ++i)
-                if (i != k) f[n++] = corners[t][i];
-            std::sort(f.begin(), f.end());
-            return f;
-        };
-        for (int t = 0; t < 5; ++t)
-            for (int k = 0; k < 4; ++k)
-                for (int u = 0; u < 5; ++u)
-                    for (int j = 0; j < 4; ++j)
-                        if (u != t && face_set(t, k) == face_set(u, j)) mesh_.adjacent[4 * t + k] = 4 * u + j;
-        last_ = 0;
-        std::vector<std::uint32_t> rest;
-        rest.reserve(m - 4);
-        for (std::size_t i = 2; i < m; ++i)
-            if (i != c && i != d) rest.push_back(order[i]);
-        return rest;
+    /// Owns everything and appends fresh slots at the end of the mesh (the serial insertion).
+    void own_all(std::uint32_t start, std::vector<std::uint32_t>* free_slots) {
+        restricted_ = false;
+        last_ = start;
+        free_ = free_slots;
+        block_next_ = block_end_ = 0;
     }
+    /// Owns the corners [lo, hi) (and the vertex at infinity), with these free slots and the fresh
+    /// slots [block_begin, block_end).
+    void own_range(std::uint32_t lo, std::uint32_t hi, std::uint32_t start, std::vector<std::uint32_t>* free_slots,
+                   std::uint32_t block_begin, std::uint32_t block_end) {
+        restricted_ = true;
+        lo_ = lo;
+        hi_ = hi;
+        last_ = start;
+        free_ = free_slots;
+        block_next_ = block_begin;
+        block_end_ = block_end;
+    }
+    bool owns(std::uint32_t t) const {
+        const std::uint32_t* c = shared_.mesh.corner.data() + 4 * static_cast<std::size_t>(t);
+        for (int k = 0; k < 4; ++k)
+            if (c[k] != kGhost && (c[k] < lo_ || c[k] >= hi_)) return false;
+        return true;
+    }
+    /// Fresh slots of the block not used (returned to the shared free list after a pass).
+    std::uint32_t block_next() const { return block_next_; }
+    std::uint32_t block_end() const { return block_end_; }
+    std::uint32_t last() const { return last_; }
 
-    void insert(std::uint32_t p) {
+    /// Inserts p; false when p must be deferred (nothing was changed).
+    bool insert(std::uint32_t p) {
         const std::uint32_t t0 = walk(p);
-        grow_cavity(t0, p);
-        fill_cavity();
+        if (t0 == kDefer) return false;
+        if (!grow_cavity(t0, p)) return false;
+        return fill_cavity();
     }
 
-    Mesh take() { return std::move(mesh_); }
-
-private:
-    std::uint32_t next_random() {
-        random_ ^= random_ << 13;
-        random_ ^= random_ >> 17;
-        random_ ^= random_ << 5;
-        return random_;
-    }
-
-    /// A tetrahedron that conflicts with p: one holding it, or a ghost whose hull face p sees.
+    /// A tetrahedron that conflicts with p: one holding it, or a ghost whose hull face p sees;
+    /// kDefer when the walk would leave the owned tetrahedra.
     std::uint32_t walk(std::uint32_t p) {
-        const std::uint32_t* corner = mesh_.corner.data();
-        const std::uint32_t* adjacent = mesh_.adjacent.data();
+        const std::uint32_t* corner = shared_.mesh.corner.data();
+        const std::uint32_t* adjacent = shared_.mesh.links();
         std::uint32_t t = last_;
-        if (corner[4 * t + 3] == kGhost) t = adjacent[4 * t + 3] >> 2;  // the finite side of its hull face
-        std::uint32_t entered = 4;                                     // the face we came in by
+        if (corner[4 * t + 3] == kGhost) {
+            t = adjacent[4 * t + 3] >> 2;  // the finite side of its hull face
+            if (restricted_ && !owns(t)) return kDefer;
+        }
+        std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
             const std::uint32_t* c = corner + 4 * t;
             const std::uint32_t first = next_random() & 3u;
@@ -109,7 +119,7 @@ private:
                 if (k == entered) continue;
                 std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
                 w[k] = p;
-                if (predicates_.orient(w[0], w[1], w[2], w[3]) < 0) {
+                if (shared_.predicates.orient(w[0], w[1], w[2], w[3]) < 0) {
                     exit = k;
                     break;
                 }
@@ -118,33 +128,59 @@ private:
             const std::uint32_t next = adjacent[4 * t + exit];
             t = next >> 2;
             entered = next & 3u;
+            if (restricted_ && !owns(t)) return kDefer;
             if (corner[4 * t + 3] == kGhost) return t;
         }
     }
 
+private:
+    static constexpr std::uint32_t kDefer = 0xffffffffu;
+
+    std::uint32_t next_random() {
+        random_ ^= random_ << 13;
+        random_ ^= random_ >> 17;
+        random_ ^= random_ << 5;
+        return random_;
+    }
+
+    void unmark() {
+        for (const std::uint32_t t : cavity_) shared_.mark[t] = 0;
+        for (const std::uint32_t t : checked_) shared_.mark[t] = 0;
+    }
+
     /// Collects the cavity (marked 1) from t0 and its boundary faces, each with the new
     /// tetrahedron's corners (p in place of the corner opposite the face) and the neighbour outside.
-    void grow_cavity(std::uint32_t t0, std::uint32_t p) {
-        const std::uint32_t* corner = mesh_.corner.data();
-        const std::uint32_t* adjacent = mesh_.adjacent.data();
+    /// False (marks undone) when the cavity reaches a tetrahedron this worker does not own.
+    bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
+        const std::uint32_t* corner = shared_.mesh.corner.data();
+        const std::uint32_t* adjacent = shared_.mesh.links();
+        std::uint8_t* mark = shared_.mark.data();
         cavity_.clear();
         checked_.clear();
         boundary_.clear();
-        mark_[t0] = 1;
+        mark[t0] = 1;
         cavity_.push_back(t0);
         for (std::size_t i = 0; i < cavity_.size(); ++i) {
             const std::uint32_t t = cavity_[i];
             for (std::uint32_t k = 0; k < 4; ++k) {
                 const std::uint32_t across = adjacent[4 * t + k];
                 const std::uint32_t u = across >> 2;
-                if (mark_[u] == 1) continue;
-                if (mark_[u] == 0) {
-                    if (predicates_.conflict(corner + 4 * u, p)) {
-                        mark_[u] = 1;
+                if (restricted_ && !owns(u)) {
+                    // Owned by no partition: never marked here (another partition may look at it);
+                    // in conflict it would have to change, so p waits for a later pass.
+                    if (shared_.predicates.conflict(corner + 4 * u, p)) {
+                        unmark();
+                        return false;
+                    }
+                } else if (mark[u] == 1) {
+                    continue;
+                } else if (mark[u] == 0) {
+                    if (shared_.predicates.conflict(corner + 4 * u, p)) {
+                        mark[u] = 1;
                         cavity_.push_back(u);
                         continue;
                     }
-                    mark_[u] = 2;
+                    mark[u] = 2;
                     checked_.push_back(u);
                 }
                 Boundary b;
@@ -155,34 +191,42 @@ private:
                 boundary_.push_back(b);
             }
         }
+        return true;
     }
 
     /// Replaces the cavity by its boundary faces joined to the point (already in their corners).
-    void fill_cavity() {
+    /// False (marks undone, nothing changed) when the block of fresh slots would run out.
+    bool fill_cavity() {
         const std::size_t count = boundary_.size();
-        slots_.clear();
-        for (std::size_t i = 0; i < count; ++i) {
-            std::uint32_t slot;
-            if (i < cavity_.size()) {
-                slot = cavity_[i];
-            } else if (!free_.empty()) {
-                slot = free_.back();
-                free_.pop_back();
+        const std::size_t reused = std::min(count, cavity_.size());
+        const std::size_t from_free = std::min(count - reused, free_->size());
+        const std::size_t fresh = count - reused - from_free;
+        if (restricted_ && fresh > block_end_ - block_next_) {
+            unmark();
+            return false;
+        }
+        unmark();
+        slots_.assign(cavity_.begin(), cavity_.begin() + reused);
+        for (std::size_t i = 0; i < from_free; ++i) {
+            slots_.push_back(free_->back());
+            free_->pop_back();
+        }
+        for (std::size_t i = 0; i < fresh; ++i) {
+            if (restricted_) {
+                slots_.push_back(block_next_++);
             } else {
-                slot = static_cast<std::uint32_t>(mesh_.size());
+                const std::size_t slot = shared_.mesh.size();
                 grow(slot + 1);
+                slots_.push_back(static_cast<std::uint32_t>(slot));
             }
-            slots_.push_back(slot);
         }
         for (std::size_t i = count; i < cavity_.size(); ++i) {  // a cavity with more cells than faces
-            mesh_.corner[4 * cavity_[i] + 3] = kFree;
-            free_.push_back(cavity_[i]);
+            shared_.mesh.corner[4 * cavity_[i] + 3] = kFree;
+            free_->push_back(cavity_[i]);
         }
-        for (const std::uint32_t t : cavity_) mark_[t] = 0;
-        for (const std::uint32_t t : checked_) mark_[t] = 0;
 
-        std::uint32_t* corner = mesh_.corner.data();
-        std::uint32_t* adjacent = mesh_.adjacent.data();
+        std::uint32_t* corner = shared_.mesh.corner.data();
+        std::uint32_t* adjacent = shared_.mesh.links();
         if (4 * 3 * count > table_keys_.size()) resize_table(4 * 3 * count);
         const std::size_t mask = table_keys_.size() - 1;
         for (std::size_t i = 0; i < count; ++i) {
@@ -194,14 +238,11 @@ private:
             // Faces j != face contain p and the boundary edge of the other two corners.
             for (std::uint32_t j = 0; j < 4; ++j) {
                 if (j == b.face) continue;
-                std::uint32_t e0 = 0, e1 = 0;
-                bool first = true;
-                for (std::uint32_t i2 = 0; i2 < 4; ++i2) {
-                    if (i2 == j || i2 == b.face) continue;
-                    (first ? e0 : e1) = b.corner[i2];
-                    first = false;
-                }
-                const std::uint64_t key = e0 < e1 ? (std::uint64_t{e0} << 32 | e1) : (std::uint64_t{e1} << 32 | e0);
+                std::uint32_t e[2] = {0, 0}, found = 0;
+                for (std::uint32_t i2 = 0; i2 < 4; ++i2)
+                    if (i2 != j && i2 != b.face) e[found++] = b.corner[i2];
+                const std::uint64_t key =
+                    e[0] < e[1] ? (std::uint64_t{e[0]} << 32 | e[1]) : (std::uint64_t{e[1]} << 32 | e[0]);
                 std::size_t h = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> 40) & mask;
                 for (;; h = (h + 1) & mask) {
                     if (table_keys_[h] == kEmpty) {
@@ -227,18 +268,21 @@ private:
                 last_ = slots_[i];
                 break;
             }
+        return true;
     }
 
     void grow(std::size_t tetrahedra) {
-        if (4 * tetrahedra > mesh_.corner.capacity()) {
+        Mesh& mesh = shared_.mesh;
+        if (tetrahedra > kMaxTetrahedra) throw std::length_error("more than 2^29 tetrahedra");
+        if (4 * tetrahedra > mesh.corner.capacity()) {
             // Beyond the estimate (rare: non-uniform inputs): grow by half again.
             const std::size_t room = 4 * (tetrahedra + tetrahedra / 2);
-            mesh_.corner.reserve(room);
-            mesh_.adjacent.reserve(room);
+            mesh.corner.reserve(room);
+            mesh.adjacent.reserve(room);
         }
-        mesh_.corner.resize(4 * tetrahedra);
-        mesh_.adjacent.resize(4 * tetrahedra);
-        mark_.resize(tetrahedra, 0);
+        mesh.corner.resize(4 * tetrahedra);
+        mesh.adjacent.resize(4 * tetrahedra);
+        shared_.mark.resize(tetrahedra, 0);
     }
 
     void resize_table(std::size_t at_least) {
@@ -255,33 +299,216 @@ private:
     };
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
 
-    const Points& points_;
-    Predicates predicates_;
-    Mesh mesh_;
-    std::vector<std::uint8_t> mark_;  ///< per tetrahedron: 0, 1 in the cavity, 2 checked and not
-    std::vector<std::uint32_t> cavity_, checked_, slots_, free_;
+    Shared& shared_;
+    bool restricted_ = false;
+    std::uint32_t lo_ = 0, hi_ = 0;
+    std::uint32_t last_ = 0;
+    std::vector<std::uint32_t>* free_ = nullptr;
+    std::uint32_t block_next_ = 0, block_end_ = 0;
+    std::vector<std::uint32_t> cavity_, checked_, slots_;
     std::vector<Boundary> boundary_;
     std::vector<std::uint64_t> table_keys_;
     std::vector<std::uint32_t> table_values_;
     std::vector<std::size_t> used_;
-    std::uint32_t last_ = 0;
     std::uint32_t random_ = 0x9e3779b9u;
+};
+
+/// The first tetrahedron from the first four affinely independent points in insertion order and
+/// its four ghosts; returns the positions in points.order of the four points used.
+std::array<std::size_t, 4> start_mesh(Shared& shared) {
+    const std::vector<std::uint32_t>& order = shared.points.order;
+    const Predicates& predicates = shared.predicates;
+    const std::size_t m = order.size();
+    std::size_t c = 2;
+    while (c < m && collinear3d(predicates.p(order[0]), predicates.p(order[1]), predicates.p(order[c]))) ++c;
+    std::size_t d = c + 1;
+    while (d < m && predicates.orient(order[0], order[1], order[c], order[d]) == 0) ++d;
+    if (d >= m) throw std::logic_error("delaunay3: the points are coplanar");
+    std::uint32_t v[4] = {order[0], order[1], order[c], order[d]};
+    if (predicates.orient(v[0], v[1], v[2], v[3]) < 0) std::swap(v[0], v[1]);
+    std::uint32_t corners[5][4];
+    std::copy(v, v + 4, corners[0]);
+    for (int k = 0; k < 4; ++k) {
+        for (int i = 0; i < 3; ++i) corners[k + 1][i] = v[kFace[k][i]];
+        corners[k + 1][3] = kGhost;
+    }
+    Mesh& mesh = shared.mesh;
+    const std::size_t expected = 7 * m + 64;  // ~6.7 per point for uniform points
+    detail::reserve_large(mesh.corner, 4 * expected);
+    detail::reserve_large(mesh.adjacent, 4 * expected);
+    shared.mark.reserve(expected);
+    mesh.corner.resize(20);
+    mesh.adjacent.resize(20);
+    shared.mark.assign(5, 0);
+    for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
+    // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
+    auto face_set = [&](int t, int k) {
+        std::array<std::uint32_t, 3> f{};
+        for (int i = 0, n = 0; i < 4; ++i)
+            if (i != k) f[n++] = corners[t][i];
+        std::sort(f.begin(), f.end());
+        return f;
+    };
+    for (int t = 0; t < 5; ++t)
+        for (int k = 0; k < 4; ++k)
+            for (int u = 0; u < 5; ++u)
+                for (int j = 0; j < 4; ++j)
+                    if (u != t && face_set(t, k) == face_set(u, j)) mesh.links()[4 * t + k] = 4 * u + j;
+    return {0, 1, c, d};
+}
+
+/// Inserts one round's points (in curve order) in partitions, as described at the top.
+class Rounds {
+public:
+    Rounds(Shared& shared, unsigned threads) : shared_(shared), threads_(threads), serial_(shared) {
+        for (std::size_t i = 0; i <= kMaxPartitions; ++i) workers_.emplace_back(shared);
+    }
+
+    void insert_round(std::vector<std::uint32_t> pending) {
+        // The partitions' ranges of corners: cut at equal counts of the round's points, and the same
+        // shifted so that each cut falls in the middle of a range (the odd passes).
+        std::vector<std::uint32_t> cut, shifted;
+        for (int pass = 0; pass < kMaxPasses && pending.size() >= 2 * kPartitionPoints; ++pass) {
+            if (pass == 0) {
+                const std::size_t parts = std::min(kMaxPartitions, pending.size() / kPartitionPoints);
+                cut.assign(1, 0);
+                for (std::size_t i = 1; i < parts; ++i) cut.push_back(pending[i * pending.size() / parts]);
+                cut.push_back(kGhost);
+                shifted.assign(1, 0);
+                for (std::size_t i = 0; i + 1 < cut.size(); ++i) {
+                    const std::uint32_t hi =
+                        i + 2 == cut.size() ? static_cast<std::uint32_t>(shared_.points.size()) : cut[i + 1];
+                    shifted.push_back(cut[i] + (hi - cut[i]) / 2);
+                }
+                shifted.push_back(kGhost);
+            }
+            const std::vector<std::uint32_t>& bounds = pass % 2 == 0 ? cut : shifted;
+            pending = pass_over(pending, bounds);
+        }
+        serial_.own_all(last_, &free_);
+        for (const std::uint32_t p : pending) {
+            const bool inserted = serial_.insert(p);
+            (void)inserted;  // the serial worker owns everything: it never defers
+        }
+        last_ = serial_.last();
+    }
+
+private:
+    /// One parallel pass over `pending` with the ranges [bounds[i], bounds[i + 1]); returns the
+    /// deferred points, in curve order.
+    std::vector<std::uint32_t> pass_over(const std::vector<std::uint32_t>& pending,
+                                         const std::vector<std::uint32_t>& bounds) {
+        const std::size_t parts = bounds.size() - 1;
+        std::vector<std::vector<std::uint32_t>> lists(parts);
+        {
+            std::size_t i = 0;
+            for (const std::uint32_t p : pending) {
+                while (p >= bounds[i + 1]) ++i;
+                lists[i].push_back(p);
+            }
+        }
+        // Starting tetrahedra (serially): the one holding one of a partition's first points, if the
+        // partition owns it.
+        std::vector<std::uint32_t> start(parts, kNoStart);
+        serial_.own_all(last_, &free_);
+        for (std::size_t i = 0; i < parts; ++i) {
+            workers_[i].own_range(bounds[i], bounds[i + 1], 0, nullptr, 0, 0);
+            for (std::size_t k = 0; k < lists[i].size() && k < 8; ++k) {
+                const std::uint32_t t = serial_.walk(lists[i][k]);
+                if (shared_.mesh.corner[4 * t + 3] != kGhost && workers_[i].owns(t)) {
+                    start[i] = t;
+                    break;
+                }
+            }
+        }
+        // Free slots shared out in order, then a block of fresh slots each.
+        std::vector<std::vector<std::uint32_t>> free(parts);
+        std::vector<std::uint32_t> block_begin(parts), block_end(parts);
+        {
+            std::size_t taken = 0;
+            std::size_t size = shared_.mesh.size();
+            for (std::size_t i = 0; i < parts; ++i) {
+                const std::size_t want = 7 * lists[i].size() + 256;
+                const std::size_t share = std::min(want, free_.size() - taken);
+                free[i].assign(free_.begin() + taken, free_.begin() + taken + share);
+                taken += share;
+                block_begin[i] = static_cast<std::uint32_t>(size);
+                size += want - share;
+                block_end[i] = static_cast<std::uint32_t>(size);
+            }
+            free_.erase(free_.begin(), free_.begin() + taken);
+            grow_blocks(size);
+        }
+        std::vector<std::vector<std::uint32_t>> deferred(parts);
+        std::vector<std::uint32_t> lasts(parts, kNoStart);
+        detail::parallel_for(threads_, parts, [&](std::size_t i) {
+            if (start[i] == kNoStart) {
+                deferred[i] = lists[i];
+                return;
+            }
+            Worker& w = workers_[i];
+            w.own_range(bounds[i], bounds[i + 1], start[i], &free[i], block_begin[i], block_end[i]);
+            for (const std::uint32_t p : lists[i])
+                if (!w.insert(p)) deferred[i].push_back(p);
+            lasts[i] = w.last();
+        });
+        // Unused slots back to the shared free list, in partition order.
+        std::vector<std::uint32_t> next;
+        for (std::size_t i = 0; i < parts; ++i) {
+            free_.insert(free_.end(), free[i].begin(), free[i].end());
+            const std::uint32_t from = start[i] == kNoStart ? block_begin[i] : workers_[i].block_next();
+            for (std::uint32_t s = from; s < block_end[i]; ++s) free_.push_back(s);
+            next.insert(next.end(), deferred[i].begin(), deferred[i].end());
+            if (lasts[i] != kNoStart) last_ = lasts[i];
+        }
+        return next;
+    }
+
+    /// Room for `slots` tetrahedra, the new ones free.
+    void grow_blocks(std::size_t slots) {
+        Mesh& mesh = shared_.mesh;
+        if (slots > kMaxTetrahedra) throw std::length_error("more than 2^29 tetrahedra");
+        const std::size_t old = mesh.size();
+        if (4 * slots > mesh.corner.capacity()) {
+            mesh.corner.reserve(4 * (slots + slots / 2));
+            mesh.adjacent.reserve(4 * (slots + slots / 2));
+        }
+        mesh.corner.resize(4 * slots);
+        mesh.adjacent.resize(4 * slots);
+        for (std::size_t t = old; t < slots; ++t) mesh.corner[4 * t + 3] = kFree;
+        shared_.mark.resize(slots, 0);
+    }
+
+    static constexpr std::uint32_t kNoStart = 0xffffffffu;
+
+    Shared& shared_;
+    unsigned threads_;
+    Worker serial_;
+    std::vector<Worker> workers_;
+    std::vector<std::uint32_t> free_;  ///< free slots, shared between passes
+    std::uint32_t last_ = 0;
 };
 
 }  // namespace
 
 Mesh tetrahedralize(const Points& points, unsigned threads,
                     const std::function<void(std::size_t, std::size_t)>& progress) {
-    (void)threads;
-    Inserter inserter(points);
-    const std::vector<std::uint32_t> rest = inserter.start();
+    Shared shared(points);
+    const std::array<std::size_t, 4> used = start_mesh(shared);
+    Rounds rounds(shared, detail::resolve_threads(threads));
     const std::size_t total = points.size();
-    for (std::size_t i = 0; i < rest.size(); ++i) {
-        inserter.insert(rest[i]);
-        if (progress && (i + 5) % 65536 == 0) progress(i + 5, total);
+    std::size_t done = 4;
+    for (std::size_t r = 0; r + 1 < points.rounds.size(); ++r) {
+        std::vector<std::uint32_t> round;
+        for (std::size_t i = points.rounds[r]; i < points.rounds[r + 1]; ++i)
+            if (i != used[0] && i != used[1] && i != used[2] && i != used[3]) round.push_back(points.order[i]);
+        // The round in curve order (local index order): its points were listed so already, but the
+        // four starting points may come from anywhere.
+        rounds.insert_round(std::move(round));
+        done = points.rounds[r + 1];
+        if (progress) progress(done, total);
     }
-    if (progress) progress(total, total);
-    return inserter.take();
+    return std::move(shared.mesh);
 }
 
 }  // namespace delaunay3_detail
