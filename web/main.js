@@ -6,6 +6,7 @@
 // longer than 100 ms (Cancel asks the view, which restarts the worker: a wasm call cannot be
 // interrupted), and files in: "Open file…" or a file dropped anywhere on the page goes to the
 // view shown (view.openFile), which reads it with the C++ readers in the worker.
+// Each view's "What am I looking at?" opens its explanation in a dialog (app/explain.js).
 //
 // Test hooks: <body data-view="hull|delaunay|route"> names the view shown and
 // <body data-state> its state ('loading' | 'computing' | 'ready' | 'error' | 'cancelled');
@@ -14,6 +15,7 @@
 import { createStage } from './app/stage.js';
 import { WorkerClient } from './app/worker-client.js';
 import { viewFromUrl, queryFromUrl, writeUrl } from './app/url-state.js';
+import { setUpExplain } from './app/explain.js';
 import { createHullView } from './views/hull.js';
 import { createDelaunayView } from './views/delaunay.js';
 import { createRouteView } from './views/route.js';
@@ -24,6 +26,9 @@ const TITLES = {
   delaunay: 'hullkit · Delaunay by lifting',
   route: 'hullkit · route checking with swept hulls',
 };
+
+// "What am I looking at?" works even where WebGL does not.
+setUpExplain();
 
 const viewport = document.getElementById('viewport');
 let stage;

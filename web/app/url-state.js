@@ -28,3 +28,34 @@ export function writeUrl(view, params, { push = false } = {}) {
   if (push) history.pushState(null, '', search);
   else history.replaceState(null, '', search);
 }
+
+/**
+ * A number from the URL (or typed in a field) made valid: out of [min, max] it becomes the nearest
+ * bound (±Infinity included), `round` (Math.round, Math.floor; null keeps fractions) makes it a
+ * whole number, and text that is no number at all (or is missing) gives `fallback`. The views read
+ * every numeric option through this, and put the value they use back in the URL.
+ */
+export function validNumber(text, { min = -Infinity, max = Infinity, round = Math.round, fallback }) {
+  if (text === null || text === undefined || String(text).trim() === '') return fallback;
+  const v = Number(text);
+  if (Number.isNaN(v)) return fallback;
+  let valid = Math.max(min, Math.min(max, v));
+  if (round) valid = round(valid); // the bounds are whole numbers where `round` is given
+  return Number.isFinite(valid) ? valid + 0 : fallback; // + 0: no -0
+}
+
+/**
+ * Corrects the URL in place: each key of `values` that the URL has gets the value given (the one
+ * the view uses, see validNumber); the other parameters stay as they are. No history entry.
+ */
+export function correctUrl(values) {
+  const q = new URLSearchParams(location.search);
+  let changed = false;
+  for (const [key, value] of Object.entries(values)) {
+    if (q.has(key) && q.get(key) !== String(value)) {
+      q.set(key, String(value));
+      changed = true;
+    }
+  }
+  if (changed) history.replaceState(null, '', `?${q}`);
+}

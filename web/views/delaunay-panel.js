@@ -2,10 +2,12 @@
 // algorithm, layout, Voronoi cells and the points clicked in) read and written, the options in
 // the URL, and the listeners of the inputs.
 import { fmtInt } from '../app/format.js';
-import { writeUrl } from '../app/url-state.js';
+import { writeUrl, validNumber, correctUrl } from '../app/url-state.js';
 import { POINT_SETS, gridSide2 } from '../points2d.js';
 
+const N_MIN = 3; // the fewest points with a triangle
 const N_MAX = 50_000;
+const SEED_MAX = 0xffffffff;
 const DEFAULTS = { set: 'uniform', n: 300, seed: 1, layout: 'side', voronoi: false, algorithm: '' };
 const FIGURE1_N = 1024;
 
@@ -20,6 +22,10 @@ export function delaunayUi() {
     stat: { n: $('dl-stat-n'), triangles: $('dl-stat-triangles'), hull: $('dl-stat-hull'), ms: $('dl-stat-ms'), rtt: $('dl-stat-rtt'), dup: $('dl-stat-dup') },
   };
 }
+
+// Out-of-range values become the nearest valid one (n = -5 → 3, a seed of -3 → 0).
+const parseN = (text) => validNumber(text, { min: N_MIN, max: N_MAX, fallback: DEFAULTS.n });
+const parseSeed = (text) => validNumber(text, { min: 0, max: SEED_MAX, round: Math.floor, fallback: DEFAULTS.seed });
 
 function decodeAdded(text) {
   if (!text) return [];
@@ -37,12 +43,7 @@ export function createDelaunayPanel({ ui, state, scene, drawing, compute }) {
 
   function readParams() {
     const set = POINT_SETS.includes(ui.set.value) || (ui.set.value === 'file' && state.fileInput) ? ui.set.value : DEFAULTS.set;
-    let n = Math.round(Number(ui.n.value));
-    if (!Number.isFinite(n) || ui.n.value.trim() === '') n = DEFAULTS.n;
-    n = Math.max(0, Math.min(N_MAX, n));
-    let seed = Math.floor(Number(ui.seed.value));
-    seed = Number.isFinite(seed) ? seed >>> 0 : DEFAULTS.seed;
-    return { set, n, seed, layout: ui.layout.value, voronoi: ui.showVoronoi.checked, algorithm: ui.algorithm.value };
+    return { set, n: parseN(ui.n.value), seed: parseSeed(ui.seed.value), layout: ui.layout.value, voronoi: ui.showVoronoi.checked, algorithm: ui.algorithm.value };
   }
 
   function writeParams(p) {
@@ -81,14 +82,16 @@ export function createDelaunayPanel({ ui, state, scene, drawing, compute }) {
   }
 
   function applyUrl(q) {
+    const n = parseN(q.get('n'));
+    const seed = parseSeed(q.get('seed'));
     writeParams({
       set: POINT_SETS.includes(q.get('set')) ? q.get('set') : DEFAULTS.set,
-      n: q.has('n') ? Math.max(0, Math.min(N_MAX, Math.round(Number(q.get('n'))) || 0)) : DEFAULTS.n,
-      seed: q.has('seed') ? Number(q.get('seed')) >>> 0 : DEFAULTS.seed,
+      n, seed,
       layout: q.get('layout') === 'blend' ? 'blend' : 'side',
       voronoi: q.get('voronoi') === '1',
       algorithm: q.get('algo') ?? '',
     });
+    correctUrl({ n, seed }); // out-of-range values, made valid
     state.added = decodeAdded(q.get('add'));
     layoutPanes();
     if (state.active) compute({ push: false });

@@ -78,6 +78,12 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
       return;
     }
     const p = readParams();
+    if (p.set !== 'file') {
+      // What was typed, made valid (n = -5 → 3), as the URL will say.
+      ui.n.value = String(p.n);
+      ui.seed.value = String(p.seed);
+      updateHint();
+    }
     const key = keyOf(p);
     if (!force && (key === pendingKey || key === cancelledKey || (key === drawnKey && pendingKey === null))) return;
     cancelledKey = null;
@@ -150,8 +156,9 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
     state.lastExport = { xy: points, triangles: state.tri.triangles, hull: state.tri.hull, cells: msg.cells ?? null, name: p.set === 'file' ? `${state.fileInput.name.replace(/\.[^.]*$/, '')}-delaunay` : `delaunay-${p.set}-${p.n}-seed${p.seed}` };
     for (const b of files.exportButtons) b.disabled = state.tri.triangles.length === 0;
     let status = `${fmtInt(distinct)} points (${setLabel}${state.added.length ? `, ${state.added.length} clicked` : ''}): ` +
-      `${fmtInt(triangles)} triangles = 2n − h − 2 with h = ${fmtInt(state.tri.hull.length)} hull points.`;
-    if (state.tri.dimension < 2) status = `${fmtInt(distinct)} distinct points, all on one line: no triangles, the hull is the ordered line of points.`;
+      `${fmtInt(triangles)} ${triangles === 1 ? 'triangle' : 'triangles'} = 2n − h − 2 with h = ${fmtInt(state.tri.hull.length)} hull points.`;
+    if (state.tri.dimension === 1) status = `${fmtInt(distinct)} distinct points, all on one line: no triangles, the hull is the ordered line of points.`;
+    else if (state.tri.dimension < 1) status = `${distinct === 1 ? 'One point' : 'No points'}: no triangles.`;
     if (state.tri.duplicateCount) status += ` ${fmtInt(state.tri.duplicateCount)} exact duplicates merged into their first copy.`;
     if (state.cells) status += ` Voronoi cells in ${fmtMs(msg.voronoiMs)}.`;
     ui.status.textContent = status;

@@ -114,11 +114,12 @@ function addControls(section, prefix) {
         ${button('back', '◀ Back', 'Step back (←)')} ${button('play', 'Play', '', 'small')}
         ${button('next', 'Step ▶', 'Step (→)')} ${button('end', 'End')} ${button('exit', 'Close')}
       </div>
-      <div class="step-buttons">
-        <label for="${id('speed')}" class="hint">speed</label>
-        <input id="${id('speed')}" type="range" min="0" max="7" step="1" value="4" aria-label="Steps per second">
+      <div class="step-sliders">
+        <label for="${id('speed')}">speed</label>
+        <input id="${id('speed')}" type="range" min="0" max="7" step="1" value="4" aria-label="Speed in steps per second">
+        <label for="${id('pos')}">position</label>
+        <input id="${id('pos')}" type="range" min="0" max="0" step="1" value="0" aria-label="Position in the recorded gift wrap">
       </div>
-      <input id="${id('pos')}" type="range" min="0" max="0" step="1" value="0" aria-label="Position in the recorded gift wrap">
       <p id="${id('count')}" class="step-count"></p>
       <ul class="step-legend">
         <li><span class="swatch wrap-edge"></span>edge being wrapped</li>
@@ -368,6 +369,12 @@ export function createGiftwrapStepper({ worker, requestRender, targets, request,
   ui.speed.addEventListener('input', () => {
     if (timer) { pause(); play(); }
   });
+  // The candidate rule's short label, and its whole description as the select's tooltip.
+  if (ui.scan) {
+    const describeRule = () => { ui.scan.title = ui.scan.selectedOptions[0]?.title ?? ''; };
+    describeRule();
+    ui.scan.addEventListener('change', describeRule);
+  }
   // Arrow keys step while the stepper's controls have focus.
   ui.controls.addEventListener('keydown', (event) => {
     if (!trace || event.target === ui.pos) return;

@@ -3,11 +3,14 @@
 // confirmation asked before an expensive gift wrapping run, and the listeners of the inputs.
 import { gridSide } from '../distributions.js';
 import { fmtInt, fmtDuration } from '../app/format.js';
-import { writeUrl } from '../app/url-state.js';
+import { writeUrl, validNumber } from '../app/url-state.js';
 import { SPHERE_WARN_N } from './hull-cost.js';
 
-const N_MIN = 4;
+const N_MIN = 4; // the slider's left end
+const N_FEWEST = 1; // typed or in the URL: fewer than 4 points are passed on, and the library says
+// what their hull is (a point, a segment, a triangle); no points at all make no hull
 const N_MAX = 1_000_000;
+const SEED_MAX = 0xffffffff;
 const N_DEFAULT = 2000;
 const SEED_DEFAULT = 1;
 const DIST_DEFAULT = 'ball';
@@ -87,16 +90,9 @@ const LOG_RANGE = Math.log(N_MAX / N_MIN);
 const sliderToN = (s) => Math.round(N_MIN * Math.exp((s / 1000) * LOG_RANGE));
 export const nToSlider = (n) => Math.round((1000 * Math.log(Math.max(N_MIN, Math.min(N_MAX, n)) / N_MIN)) / LOG_RANGE);
 
-function parseN(text) {
-  const v = Math.round(Number(text));
-  if (!Number.isFinite(v) || String(text).trim() === '') return N_DEFAULT;
-  // Fewer than 4 points are passed on: the library decides what their hull is.
-  return Math.max(0, Math.min(N_MAX, v));
-}
-function parseSeed(text) {
-  const v = Math.floor(Number(text));
-  return Number.isFinite(v) ? v >>> 0 : SEED_DEFAULT;
-}
+// Out-of-range values become the nearest valid one (n = -5 → 1, a seed of -3 → 0).
+const parseN = (text) => validNumber(text, { min: N_FEWEST, max: N_MAX, fallback: N_DEFAULT });
+const parseSeed = (text) => validNumber(text, { min: 0, max: SEED_MAX, round: Math.floor, fallback: SEED_DEFAULT });
 
 // Cheap count of the coordinates in the pasted text (for the cost estimate only).
 function roughCustomCount(text) {
@@ -210,7 +206,7 @@ export function createHullPanel({ ui, state }) {
       const k = gridSide(n);
       return `${fmtInt(k ** 3)} points: ${labelOf(distribution)} ${k}×${k}×${k}`;
     }
-    return `${fmtInt(n)} points ${labelOf(distribution)}`;
+    return `${fmtInt(n)} ${n === 1 ? 'point' : 'points'} ${labelOf(distribution)}`;
   }
 
   function labelOf(distribution) {

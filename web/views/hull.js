@@ -13,6 +13,7 @@
 // window.hullkitEpsilon compares the last run with the seed's epsilon to exact predicates:
 // {outcome: 'same' | 'different' | 'failed', epsilon, seed, exact} (null after an exact run).
 import { fmtDuration } from '../app/format.js';
+import { correctUrl } from '../app/url-state.js';
 import { createGiftwrapStepper } from './giftwrap-stepper.js';
 import { hullUi, createHullPanel, nToSlider, urlParamsOf, paramsKey, CUSTOM_SAMPLE } from './hull-panel.js';
 import { SPHERE_WARN_N, needsConfirmation, createCostModel } from './hull-cost.js';
@@ -214,7 +215,9 @@ export function createHullView({ stage, worker, setState }) {
     /** The URL changed (back/forward): show its parameters and recompute when they differ. */
     applyUrl(q) {
       const before = paramsKey(readParams());
-      writeParams(paramsFromUrl(q));
+      const fromUrl = paramsFromUrl(q);
+      writeParams(fromUrl);
+      correctUrl({ n: fromUrl.n, seed: fromUrl.seed }); // out-of-range values, made valid
       updateEpsilonField();
       if (state.preferredAlgorithm && [...ui.algorithm.options].some((o) => o.value === state.preferredAlgorithm)) {
         ui.algorithm.value = state.preferredAlgorithm;

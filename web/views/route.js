@@ -17,7 +17,7 @@
 // window.hullkitRouteScene() is the scene checked ({...scene, route, margin});
 // window.hullkitRouteHandle(i) and window.hullkitRouteRing(i, degrees) are in route-handles.js.
 import { fmtMs } from '../app/format.js';
-import { writeUrl } from '../app/url-state.js';
+import { writeUrl, validNumber, correctUrl } from '../app/url-state.js';
 import { showError } from '../app/panel.js';
 import { PRESETS, presetScene } from '../route-scenes.js';
 import { copyRoute, legMotion, poseAt, positionOf, quaternionOf, waypointAt, withYaw, yawOf } from '../route-poses.js';
@@ -47,14 +47,11 @@ export function createRouteView({ stage, worker, setState, viewport }) {
   const view3d = createRouteScene({ stage, state, viewport });
   const { requestRender } = view3d;
 
-  const currentSamples = () => {
-    const v = Math.round(Number(ui.samples.value));
-    return Number.isFinite(v) ? Math.max(1, Math.min(SAMPLES_MAX, v)) : 20;
-  };
-  const currentMargin = () => {
-    const v = Number(ui.margin.value);
-    return Number.isFinite(v) && v >= 0 ? v : 0;
-  };
+  // Out-of-range values become the nearest valid one (samples = 0 → 1, a margin of -2 → 0).
+  const parseSamples = (text) => validNumber(text, { min: 1, max: SAMPLES_MAX, fallback: 20 });
+  const parseMargin = (text, fallback) => validNumber(text, { min: 0, round: null, fallback });
+  const currentSamples = () => parseSamples(ui.samples.value);
+  const currentMargin = () => parseMargin(ui.margin.value, 0);
   const drawReport = () => view3d.drawReport(ui.showSamples.checked ? currentSamples() : 0);
 
   // ------------------------------------------------------------ checking
@@ -256,8 +253,11 @@ export function createRouteView({ stage, worker, setState, viewport }) {
   function applyUrl(q) {
     const name = PRESETS[q.get('preset')] ? q.get('preset') : 'doorway';
     loadPreset(name, parseRoute(q.get('route')));
-    ui.margin.value = String(q.has('margin') && Number(q.get('margin')) >= 0 ? Number(q.get('margin')) : state.sceneJson.margin);
-    ui.samples.value = String(q.has('samples') ? Math.max(1, Math.min(SAMPLES_MAX, Math.round(Number(q.get('samples'))) || 20)) : 20);
+    const margin = parseMargin(q.get('margin'), state.sceneJson.margin);
+    const samples = parseSamples(q.get('samples'));
+    ui.margin.value = String(margin);
+    ui.samples.value = String(samples);
+    correctUrl({ margin, samples }); // out-of-range values, made valid
     ui.showSamples.checked = q.get('overlay') === '1';
     if (state.active) check();
   }
@@ -270,6 +270,9 @@ export function createRouteView({ stage, worker, setState, viewport }) {
   });
   for (const input of [ui.margin, ui.samples]) {
     input.addEventListener('change', () => {
+      // What was typed, made valid, as the URL will say.
+      ui.margin.value = String(currentMargin());
+      ui.samples.value = String(currentSamples());
       writeUrl('route', urlParams(), { push: true });
       check();
     });
