@@ -10,6 +10,7 @@ debian_packages=(
   pkg-config              # scripts/consumer_test.sh checks the installed hullkit.pc with it
   emscripten              # the wasm build (emcc, emcmake)
   catch2 libgmp-dev       # C++ tests (GMP: exact rational checks)
+  libcgal-dev libmpfr-dev # the C++ tests' cross-check of delaunay3 against CGAL (header-only)
   libglm-dev              # vector math
   nlohmann-json3-dev      # scene JSON (route checking)
   libcli11-dev            # command-line parsing
@@ -24,7 +25,7 @@ debian_packages=(
 )
 
 if [ "${1:-}" = bench ]; then
-  debian_packages+=(libqhull-dev libcgal-dev libmpfr-dev libfcl-dev)
+  debian_packages+=(libqhull-dev libfcl-dev tetgen)
 fi
 
 missing=()

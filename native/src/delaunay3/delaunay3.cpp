@@ -286,6 +286,76 @@ void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
     out.neighbors = std::move(mesh.adjacent);
 }
 
+/// Coplanar points: their Delaunay triangulation in the plane is the restriction of the 3D one of
+/// the points and one more point q off the plane (the hull face on the plane is a face of the
+/// Delaunay subdivision, and the spheres through a triangle and q meet the plane in its
+/// circumcircle; q's own perturbation term vanishes for points on the plane). q goes on the side
+/// the hull's polygon is counter-clockwise from (the side `normal` points to, as hull() decides
+/// it), so the tetrahedra's faces opposite q are the triangles, counter-clockwise from there.
+void planar_triangles(PointSpan input, Points& points, const Delaunay3Options& options, Delaunay3& out) {
+    const Hull polygon = hull(input, HullOptions{});
+    std::copy(polygon.normal, polygon.normal + 3, out.normal);
+    const std::size_t m = points.size();
+    std::uint32_t corner[3] = {0, 0, 0};  // three consecutive corners of the polygon, as local indices
+    for (int k = 0; k < 3; ++k)
+        corner[k] = static_cast<std::uint32_t>(std::find(points.original.begin(), points.original.end(),
+                                                         polygon.vertices[k]) - points.original.begin());
+    const double* a = points[corner[0]];
+    const double* b = points[corner[1]];
+    const double* c = points[corner[2]];
+    const double n[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                         (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                         (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+    int axes[3] = {0, 1, 2};
+    std::stable_sort(axes, axes + 3, [&](int i, int j) { return std::fabs(n[i]) > std::fabs(n[j]); });
+    double q[3] = {a[0], a[1], a[2]};
+    for (const int k : axes) {  // orient3d(a, b, c, q) = n_k (q_k - a_k) > 0, exactly
+        const int sign = orient2d(a[(k + 1) % 3], a[(k + 2) % 3], b[(k + 1) % 3], b[(k + 2) % 3], c[(k + 1) % 3],
+                                  c[(k + 2) % 3]);
+        if (sign == 0) continue;
+        const double move = std::max(points.span, std::fabs(a[k]));
+        q[k] = a[k] + (sign > 0 ? move : -move);
+        break;
+    }
+    const std::uint32_t extra = static_cast<std::uint32_t>(m);
+    points.xyz.insert(points.xyz.end(), q, q + 3);
+    points.original.push_back(kGhost);
+    points.order.insert(points.order.begin(), extra);  // q first: it is in the first tetrahedron
+    for (std::size_t r = 1; r < points.rounds.size(); ++r) ++points.rounds[r];
+    Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
+
+    const std::size_t slots = mesh.size();
+    const std::uint32_t* link = mesh.links();
+    constexpr std::uint32_t kNone = 0xffffffffu;
+    std::vector<std::uint32_t> position(slots, kNone);
+    std::uint32_t count = 0;
+    for (std::size_t t = 0; t < slots; ++t) {
+        const std::uint32_t* w = &mesh.corner[4 * t];
+        if (w[3] < delaunay3_detail::kFree && std::find(w, w + 4, extra) != w + 4) position[t] = count++;
+    }
+    out.triangles.resize(3 * std::size_t{count});
+    out.neighbors.resize(3 * std::size_t{count});
+    for (std::size_t t = 0; t < slots; ++t) {
+        if (position[t] == kNone) continue;
+        const std::uint32_t* w = &mesh.corner[4 * t];
+        const int k = static_cast<int>(std::find(w, w + 4, extra) - w);
+        // The face opposite q turned towards q; the triangle's corner j is tetrahedron corner at[j],
+        // and the edge opposite it lies in the face opposite that corner.
+        const int at[3] = {delaunay3_detail::kFaceCorners[k][0], delaunay3_detail::kFaceCorners[k][2],
+                           delaunay3_detail::kFaceCorners[k][1]};
+        int first = 0;
+        for (int j = 1; j < 3; ++j)
+            if (points.original[w[at[j]]] < points.original[w[at[first]]]) first = j;
+        const std::size_t q3 = 3 * std::size_t{position[t]};
+        for (int j = 0; j < 3; ++j) {
+            const int corner_at = at[(first + j) % 3];
+            out.triangles[q3 + j] = points.original[w[corner_at]];
+            const std::uint32_t across = position[link[4 * t + corner_at] >> 2];
+            out.neighbors[q3 + j] = across == kNone ? -1 : static_cast<std::int32_t>(across);
+        }
+    }
+}
+
 }  // namespace
 
 Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
@@ -318,12 +388,14 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
     }
     std::size_t d = 0;
     while (d < m && orient3d(points[0], points[1], points[c], points[d]) == 0) ++d;
-    if (d == m) {
-        return failure("delaunay3: coplanar input is not handled yet");
-    }
-    out.dimension = 3;
     insertion_order(points);
     try {
+        if (d == m) {
+            out.dimension = 2;
+            planar_triangles(input, points, options, out);
+            return out;
+        }
+        out.dimension = 3;
         Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
         write_tetrahedra(mesh, points, out);
     } catch (const std::bad_alloc&) {

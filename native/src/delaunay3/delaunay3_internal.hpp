@@ -33,6 +33,10 @@ struct Points {
     const double* operator[](std::size_t i) const { return xyz.data() + 3 * i; }
 };
 
+/// The face opposite corner k of a positively oriented tetrahedron, counter-clockwise seen from
+/// outside (its normal points away from corner k).
+constexpr int kFaceCorners[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 /// Lexicographic order of (x, y, z): the tie-breaking rank of the perturbation (later = raised more).
 inline bool lexicographically_less(const double* a, const double* b) {
     return a[0] < b[0] || (a[0] == b[0] && (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));

@@ -36,9 +36,6 @@ namespace hullkit {
 namespace delaunay3_detail {
 namespace {
 
-/// The face opposite corner k of a positively oriented tetrahedron, counter-clockwise seen from
-/// outside (its normal points away from corner k).
-constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 /// Points in a round below this many are inserted serially; a partition gets at least this many.
 constexpr std::size_t kPartitionPoints = 16384;
@@ -329,7 +326,7 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     std::uint32_t corners[5][4];
     std::copy(v, v + 4, corners[0]);
     for (int k = 0; k < 4; ++k) {
-        for (int i = 0; i < 3; ++i) corners[k + 1][i] = v[kFace[k][i]];
+        for (int i = 0; i < 3; ++i) corners[k + 1][i] = v[kFaceCorners[k][i]];
         corners[k + 1][3] = kGhost;
     }
     Mesh& mesh = shared.mesh;
