@@ -25,9 +25,12 @@
 // order and thread count; it is the one CGAL's Delaunay_triangulation_3 builds with its default
 // perturbation. Coplanar hull faces are triangulated by the same rule.
 //
+// Threads: large rounds of the insertion are cut into ranges of the Hilbert curve inserted on their
+// own threads; the cut depends only on the points, so every thread count builds the same mesh.
+//
 // Memory: the working mesh is two arrays of 16 bytes per tetrahedron (corners, neighbours), about
-// 6.7 tetrahedra per point for uniform points; the output reuses them. About 230 bytes per point
-// at the peak, the input not counted.
+// 6.7 tetrahedra per point for uniform points; the output reuses them (no second copy). About 250
+// bytes per point at the peak, the input not counted.
 #pragma once
 
 #include <cstddef>
@@ -45,8 +48,9 @@ struct Delaunay3Options {
     /// the same bits for every value (it depends only on the points). The WebAssembly build runs
     /// on the calling thread.
     unsigned threads = 0;
-    /// Called on the calling thread as points are inserted: points_done of total, every 65 536
-    /// points and once at the end (points_done == total). Leave empty for none.
+    /// Called on the calling thread as points are inserted: points_done of total after each round
+    /// of the insertion order (rounds double in size; the last holds half the points), the last call
+    /// with points_done == total. Leave empty for none.
     std::function<void(std::size_t points_done, std::size_t total)> progress;
 };
 
@@ -68,11 +72,12 @@ struct Delaunay3Options {
 ///      join consecutive ones).
 ///   0  one distinct point: `vertices` holds it.  -1  no points.
 ///
-/// Canonical order (depends only on the input): each tetrahedron (triangle) starts at its lowest
-/// index, then its second lowest (the other two follow in the order that keeps the orientation);
-/// tetrahedra are sorted by the position of their first, then second, then third corner along a
-/// Hilbert curve over the input's bounding box (points with one curve key by index); hull
-/// triangles start at their lowest index and are sorted by their corners' indices.
+/// Order (it depends only on the input: the same arrays for every thread count and platform):
+/// each tetrahedron (triangle) starts at its lowest index, then its second lowest, the others in
+/// the order that keeps the orientation; tetrahedra come in the order the insertion leaves them in
+/// memory (nearby tetrahedra mostly near each other); hull triangles start at their lowest index
+/// and are sorted by their corners' indices. The set of tetrahedra does not depend on the order of
+/// the input points either (only their indices follow them).
 struct Delaunay3 {
     int dimension = -1;
     std::vector<std::uint32_t> tetrahedra;  ///< dimension 3: 4 per tetrahedron
