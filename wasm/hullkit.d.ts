@@ -111,15 +111,19 @@ export interface Hullkit {
    * @param bytes the file's contents
    * @param name the file name: picks the format and starts every error message (default "<bytes>")
    * Records an OBJ file should not hold (FCL's "648 1292" count line, a misspelt keyword) are
-   * skipped, and said so in the result's `warnings`.
+   * skipped, and said so in the result's `warnings`; so is a CSV header row of column names
+   * (`x,y,z`: "skipped header line 1: x,y,z"). A UTF-8 byte-order mark is skipped. A file without
+   * points (empty, only comments) gives an empty array, not an error.
    *
    * @throws {HullkitError} with the reader's message, "name:LINE: what is wrong" (then `line` is
-   *   set) or "name: what is wrong" (empty file, truncated binary STL, ...).
+   *   set; a non-finite coordinate: 'p.xyz:5: coordinate "nan" of point 3 is not a finite number')
+   *   or "name: what is wrong" (truncated binary STL, ...).
    */
   readPoints(bytes: Uint8Array | ArrayBuffer | ArrayBufferView, name?: string): PointsRead;
   /**
    * 2D points from a file, x0 y0 x1 y1 ...: text as `hullkit delaunay` reads it ("x y" or
-   * "x y z" lines, z ignored; qhull/rbox text of dimension 2 or 3); a mesh file (OBJ, OFF, PLY,
+   * "x y z" lines, z ignored, whitespace or a comma between the numbers, a CSV header row skipped;
+   * qhull/rbox text of dimension 2 or 3); a mesh file (OBJ, OFF, PLY,
    * STL, by name or content) gives the x and y of the points {@link Hullkit.readPoints} reads.
    *
    * @throws {HullkitError} as {@link Hullkit.readPoints}.

@@ -285,25 +285,82 @@ TEST_CASE("cli: unreadable input and unwritable output exit 2") {
 
 TEST_CASE("cli: hull errors are prefixed with the input name") {
     TempDir dir("hullkit-cli");
-    SECTION("a non-finite coordinate names the point") {
+    SECTION("a non-finite coordinate names the line and the point") {
         const std::string path = dir.file("nan.txt");
-        write_text(path, "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 nan 1\n");
-        std::string line = single_error_line(run_cli(dir, {"hull", path}));
-        CHECK(line.rfind("hullkit: " + path + ": ", 0) == 0);
-        CHECK(line.find("point 4") != std::string::npos);
-        CHECK(line.find("nan") != std::string::npos);
+        write_text(path, "0 0 0\n1 0 0\n0 1 0\n# a comment\n0 0 1\n1 nan 1\n");
+        CHECK(single_error_line(run_cli(dir, {"hull", path})) ==
+              "hullkit: " + path + ":6: coordinate \"nan\" of point 4 is not a finite number");
     }
     SECTION("from stdin, the input is called <stdin>") {
         const std::string path = dir.file("inf.txt");
         write_text(path, "0 0 0\n1 0 0\n0 1 0\n-inf 0 1\n");
-        std::string line = single_error_line(run_cli(dir, {"hull"}, path));
-        CHECK(line.rfind("hullkit: <stdin>: ", 0) == 0);
-        CHECK(line.find("point 3") != std::string::npos);
+        CHECK(single_error_line(run_cli(dir, {"hull"}, path)) ==
+              "hullkit: <stdin>:4: coordinate \"-inf\" of point 3 is not a finite number");
     }
-    SECTION("empty stdin") {
-        CHECK(single_error_line(run_cli(dir, {"hull", "-"})) ==
-              "hullkit: <stdin>: no points found (the input is empty)");
+    SECTION("a number beyond the double range says so") {
+        const std::string path = dir.file("big.txt");
+        write_text(path, "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1e400 1\n");
+        CHECK(single_error_line(run_cli(dir, {"hull", path})) ==
+              "hullkit: " + path + ":5: coordinate \"1e400\" of point 4 is out of the double range");
+        // The point is counted within its file; the file names which.
+        CHECK(single_error_line(run_cli(dir, {"hull", data_path("tetra.off"), path})) ==
+              "hullkit: " + path + ":5: coordinate \"1e400\" of point 4 is out of the double range");
     }
+}
+
+TEST_CASE("cli: no points is an empty hull (dimension -1), exit 0, in every format") {
+    TempDir dir("hullkit-cli");
+    const std::string empty = dir.file("empty.txt");
+    for (const std::string text : {"", "# nothing here\n\n", "3 rbox 0 D3\n0\n", "OFF\n0 0 0\n", "x,y,z\n"}) {
+        INFO(text);
+        write_text(empty, text);
+        RunResult off = run_cli(dir, {"hull", empty, "--quiet"});
+        CHECK(off.exit_code == 0);
+        CHECK(off.err.empty());
+        CHECK(off.out == "OFF\n0 0 0\n");
+        CHECK(run_cli(dir, {"hull", "-"}, empty).out == off.out);  // standard input too
+    }
+    write_text(empty, "");
+    RunResult json = run_cli(dir, {"hull", empty, "--format", "json", "--stats"});
+    REQUIRE(json.exit_code == 0);
+    const Json hull = parse_json(json.out);
+    CHECK(hull.at("dimension").number == -1);
+    CHECK(hull.at("points").items.empty());
+    CHECK(hull.at("vertices").items.empty());
+    CHECK(hull.at("triangles").items.empty());
+    CHECK(hull.at("volume").number == 0);
+    CHECK(hull.at("area").number == 0);
+    const Json stats = parse_stats(json);
+    CHECK(stats.at("points").number == 0);
+    CHECK(stats.at("vertices").number == 0);
+    CHECK(stats.at("faces").number == 0);
+    RunResult obj = run_cli(dir, {"hull", empty, "--format", "obj"});
+    CHECK(obj.exit_code == 0);
+    CHECK(obj.out.empty());  // an OBJ without records
+    RunResult xyz = run_cli(dir, {"hull", empty, "--vertices-only"});
+    CHECK(xyz.exit_code == 0);
+    CHECK(hullkit::parse_points(xyz.out, "back.xyz").count() == 0);  // reads back as no points
+    RunResult glb = run_cli(dir, {"hull", empty, "-o", dir.file("empty.glb")});
+    CHECK(glb.exit_code == 0);
+    CHECK(read_text(dir.file("empty.glb")).rfind("glTF", 0) == 0);
+    // The empty hull of the empty input verifies, and is what a whole input plus an empty one gives.
+    write_text(dir.file("hull.off"), "OFF\n0 0 0\n");
+    CHECK(run_cli(dir, {"verify", empty, dir.file("hull.off")}).exit_code == 0);
+    CHECK(run_cli(dir, {"hull", data_path("tetra.off"), empty}).out == run_cli(dir, {"hull", data_path("tetra.off")}).out);
+}
+
+TEST_CASE("cli: CSV with a header row and a UTF-8 byte-order mark is read, the header reported as skipped") {
+    TempDir dir("hullkit-cli");
+    const std::string csv = dir.file("points.csv");
+    write_text(csv, "\xEF\xBB\xBFx,y,z\n0,0,0\n1,0,0\n0,1,0\n0,0,1\n0.1,0.1,0.1\n");
+    RunResult result = run_cli(dir, {"hull", csv});
+    REQUIRE(result.exit_code == 0);
+    CHECK(result.out == run_cli(dir, {"hull", data_path("tetra.off")}).out);
+    CHECK(result.err == "hullkit: warning: " + csv + ": skipped header line 1: x,y,z\n");
+    CHECK(run_cli(dir, {"hull", csv, "--quiet"}).err.empty());
+    // A BOM alone before plain points; line numbers in messages are unchanged by it.
+    write_text(csv, "\xEF\xBB\xBF" "0 0 0\n1 0\n");
+    CHECK(single_error_line(run_cli(dir, {"hull", csv})) == "hullkit: " + csv + ":2: expected 3 coordinates, got 2");
 }
 
 // ---- successful runs ----

@@ -204,7 +204,7 @@ TEST_CASE("cli stream: bad --threads and --memory, and a bad point deep in a str
     const RunResult streamed = hull(dir, {dir.file("inf.txt"), "--memory", "1"});
     CHECK(whole.exit_code == 2);
     CHECK(streamed.exit_code == 2);
-    CHECK(whole.err == "hullkit: " + dir.file("inf.txt") + ": point 40000 has a non-finite y coordinate (inf)\n");
+    CHECK(whole.err == "hullkit: " + dir.file("inf.txt") + ":40001: coordinate \"inf\" of point 40000 is not a finite number\n");
     CHECK(streamed.err == whole.err);
     // A malformed line deep in the second of two inputs names that file and line.
     const std::size_t cut = text.find('\n', text.size() / 2) + 1;  // at a line's start

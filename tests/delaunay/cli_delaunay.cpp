@@ -500,8 +500,8 @@ TEST_CASE("delaunay cli: usage and input errors are one line with exit status 2"
         {"2\n1\n0 0\n1 1\n", "points.txt:4: more points than the 1 declared on line 2"},
         {"4\n1\n0 0 0 0\n", "points.txt:1: dimension is 4, expected 2"},
         {"2\nmany\n", "points.txt:2: expected the point count"},
-        {"# nothing\n\n", "points.txt: no points found"},
-        {"", "points.txt: no points found"},
+        {"0 0\n1 1e400\n", "points.txt:2: coordinate \"1e400\" of point 1 is out of the double range"},
+        {"x,y\n0,0\n1,,2\n", "points.txt:3: empty field before a comma"},
     };
     for (const auto& [text, message] : inputs) {
         INFO(text);
@@ -509,13 +509,44 @@ TEST_CASE("delaunay cli: usage and input errors are one line with exit status 2"
         require_usage_error(run_cli(dir, {"delaunay", points}), message);
     }
     // The same problem on standard input is named "<stdin>".
-    require_usage_error(run_cli(dir, {"delaunay"}, points), "<stdin>: no points found");
+    write_text(points, "0 0\n1 nan\n");
+    require_usage_error(run_cli(dir, {"delaunay"}, points), "<stdin>:2: coordinate \"nan\" of point 1 is not a finite number");
     // Magnitudes the exact predicates cannot take even after rescaling: the core names the point,
     // the command adds its line.
     write_text(points, "0 0\n1e-300 1\n1e300 1\n");
     const RunResult range = run_cli(dir, {"delaunay", points});
     require_usage_error(range, "points.txt:");
     CHECK((range.err.find("points.txt:2:") != std::string::npos || range.err.find("points.txt:3:") != std::string::npos));
+}
+
+TEST_CASE("delaunay cli: no points is an empty triangulation (dimension -1), exit 0") {
+    TempDir dir("hullkit-delaunay-cli");
+    for (const std::string text : {"", "# nothing\n\n", "2 rbox 0 D2\n0\n", "x,y\n"}) {
+        INFO(text);
+        write_text(dir.file("points.txt"), text);
+        const RunResult off = run_cli(dir, {"delaunay", dir.file("points.txt")});
+        CHECK(off.exit_code == 0);
+        CHECK(off.out == "OFF\n0 0 0\n");
+        const RunResult json = run_cli(dir, {"delaunay", "--format", "json", "--quiet"}, dir.file("points.txt"));
+        CHECK(json.exit_code == 0);
+        CHECK(json.err.empty());
+        CHECK(json.out == "{\"dimension\":-1,\"triangles\":[],\"halfedges\":[],\"hull\":[],\"duplicates\":[]}\n");
+        const RunResult svg = run_cli(dir, {"delaunay", dir.file("points.txt"), "--format", "svg"});
+        CHECK(svg.exit_code == 0);
+        CHECK_THAT(svg.out, Catch::Contains("0 points, 0 triangles"));
+    }
+}
+
+TEST_CASE("delaunay cli: CSV with a header row and a byte-order mark is read") {
+    TempDir dir("hullkit-delaunay-cli");
+    write_text(dir.file("plain.txt"), "0 0\n1 0\n0 1\n1 1.5\n");
+    write_text(dir.file("points.csv"), "\xEF\xBB\xBFx,y\n0,0\n1, 0\n0 ,1\n1,1.5\n");
+    const RunResult plain = run_cli(dir, {"delaunay", dir.file("plain.txt")});
+    const RunResult csv = run_cli(dir, {"delaunay", dir.file("points.csv")});
+    REQUIRE(csv.exit_code == 0);
+    CHECK(csv.out == plain.out);
+    CHECK(csv.err == "hullkit: warning: " + dir.file("points.csv") + ": skipped header line 1: x,y\n");
+    CHECK(run_cli(dir, {"delaunay", dir.file("points.csv"), "--quiet"}).err.empty());
 }
 
 TEST_CASE("delaunay cli: --help describes the command and exits 0") {

@@ -8,6 +8,7 @@
 
 #include "cli/cli_support.hpp"
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 
 namespace {
 
@@ -24,6 +25,35 @@ std::string error_of(const std::string& text) {
 const std::string kNotSupported = " is not supported by the 2D point reader (read: x y, x y z, rbox)";
 
 }  // namespace
+
+TEST_CASE("points2d: commas, a byte-order mark, a header row; no points is no error", "[points2d]") {
+    std::vector<std::size_t> lines;
+    const hullkit::Points2Result csv =
+        hullkit::parse_points_2d("\xEF\xBB\xBF# exported\n\"x\",\"y\"\n1,2\n3 , 4\n\n5,6,7\n", "p.csv", &lines);
+    // (every line as wide as the first: here a 3-column line after 2-column ones is an error)
+    CHECK(csv.error == "p.csv:6: expected 2 coordinates, got 3");
+    const hullkit::Points2Result ok = hullkit::parse_points_2d("\xEF\xBB\xBFx,y,z\n1,2,0\n3 , 4 ,0\n", "p.csv", &lines);
+    REQUIRE(ok.ok());
+    CHECK(ok.xy == std::vector<double>{1, 2, 3, 4});
+    CHECK(lines == std::vector<std::size_t>{2, 3});
+    CHECK(ok.warnings == std::vector<std::string>{"skipped header line 1: x,y,z"});
+    for (const std::string text : {"", "# nothing\n", "\xEF\xBB\xBF", "2 rbox 0 D2\n0\n", "x,y\n"}) {
+        INFO(text);
+        const hullkit::Points2Result none = hullkit::parse_points_2d(text, "p.txt", &lines);
+        CHECK(none.ok());
+        CHECK(none.xy.empty());
+        CHECK(lines.empty());
+    }
+    CHECK(error_of("1,,2\n") == "p.txt:1: empty field before a comma");
+    CHECK(error_of("1,2,\n") == "p.txt:1: empty field after the last comma");
+    CHECK(error_of("1 2\n3 nan\n") == "p.txt:2: coordinate \"nan\" of point 1 is not a finite number");
+    CHECK(error_of("1 2\n3 -1e400\n") == "p.txt:2: coordinate \"-1e400\" of point 1 is out of the double range");
+    // A byte-order mark before an OBJ: still named as OBJ (read_points_2d reads it as a mesh).
+    CHECK(error_of("\xEF\xBB\xBFv 0 0 0\n") == "p.txt: not a point file: OBJ" + kNotSupported);
+    const hullkit::Points2Result obj = hullkit::read_points_2d("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "upload");
+    INFO(obj.error);
+    CHECK(obj.xy == std::vector<double>{0, 0, 1, 0, 0, 1});
+}
 
 TEST_CASE("points2d: binary input and other formats are named, not read as bad coordinates", "[points2d]") {
     // A PNG signature: 0x89 may start UTF-8 text, 0x1a may not.

@@ -4,6 +4,7 @@
 // batches joined must be parse_points' result (text only) or read_points' (every format: PLY is
 // streamed, STL read whole), with the same message.
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -87,14 +88,24 @@ void check_reader(const std::string& text, const std::string& source, bool text_
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     const hullkit::PointsResult parsed = hullkit::parse_points(text, "fuzz.txt");
-    // Every result is either points (a whole number of xyz triples) or one line of error.
-    if (parsed.ok() ? parsed.xyz.empty() || parsed.xyz.size() % 3 != 0
+    // Every result is either points (a whole number of xyz triples, all finite; none for an input
+    // without any) or one line of error.
+    if (parsed.ok() ? parsed.xyz.size() % 3 != 0
                     : !parsed.xyz.empty() || parsed.error.find('\n') != std::string::npos) {
         std::abort();
     }
-    // No byte of the input may reach the message unescaped (no raw control bytes on a terminal).
+    for (double v : parsed.xyz) {
+        if (!std::isfinite(v)) std::abort();
+    }
+    // No byte of the input may reach the message or a warning unescaped (no raw control bytes on
+    // a terminal).
     for (unsigned char c : parsed.error) {
         if (c < 0x20 || c >= 0x7f) std::abort();
+    }
+    for (const std::string& warning : parsed.warnings) {
+        for (unsigned char c : warning) {
+            if (c < 0x20 || c >= 0x7f) std::abort();
+        }
     }
     check_reader(text, "fuzz.txt", /*text_only=*/true, parsed, data, size);
     check_reader(text, "fuzz.txt", false, hullkit::read_points(text, "fuzz.txt"), data, size);

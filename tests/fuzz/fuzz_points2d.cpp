@@ -1,6 +1,7 @@
 // libFuzzer target: the 2D point reader (parse_points_2d, native/src/io/points2d.cpp) on arbitrary
 // bytes. Checked: points are whole finite x y pairs, each with the number of a line of the input
-// whose first two fields are exactly those coordinates (strtod); an error is one line of printable
+// whose first two fields (split at whitespace and commas, after a byte-order mark on line 1) are
+// exactly those coordinates (strtod); warnings are printable ASCII; an error is one line of printable
 // ASCII (no byte of the input reaches a terminal) starting with the file name, with no points;
 // input with a NUL byte in its first 4 KiB is refused as not a point file, not with a complaint
 // about coordinates.
@@ -28,14 +29,15 @@ std::string line_of(const std::string& text, std::size_t number) {
     return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }
 
-/// The first `count` whitespace-separated fields of `line`, as strtod reads them.
+/// The first `count` fields of `line` (separated by whitespace and commas), as strtod reads them.
 std::vector<double> leading_numbers(const std::string& line, std::size_t count) {
     std::vector<double> out;
     std::size_t i = 0;
+    auto separator = [](char c) { return c == ',' || std::isspace(static_cast<unsigned char>(c)); };
     while (out.size() < count) {
-        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        while (i < line.size() && separator(line[i])) ++i;
         std::size_t start = i;
-        while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        while (i < line.size() && !separator(line[i])) ++i;
         if (i == start) std::abort();
         out.push_back(std::strtod(line.substr(start, i - start).c_str(), nullptr));
     }
@@ -60,12 +62,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         return 0;
     }
-    if (result.xy.empty() || result.xy.size() % 2 != 0 || lines.size() != result.count()) std::abort();
+    if (result.xy.size() % 2 != 0 || lines.size() != result.count()) std::abort();
     if (text.substr(0, 4096).find('\0') != std::string::npos) std::abort();
+    for (const std::string& warning : result.warnings) {
+        for (unsigned char c : warning) {
+            if (c < 0x20 || c >= 0x7f) std::abort();
+        }
+    }
     for (std::size_t i = 0; i < result.count(); ++i) {
         if (!std::isfinite(result.xy[2 * i]) || !std::isfinite(result.xy[2 * i + 1])) std::abort();
         if (i > 0 && lines[i] <= lines[i - 1]) std::abort();
-        const std::string line = line_of(text, lines[i]);
+        std::string line = line_of(text, lines[i]);
+        if (lines[i] == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a byte-order mark
         const std::vector<double> numbers = leading_numbers(line, 2);
         if (numbers[0] != result.xy[2 * i] || numbers[1] != result.xy[2 * i + 1]) std::abort();
     }

@@ -135,14 +135,52 @@ TEST_CASE("mesh_io: malformed numbers are quoted with their line") {
           "t.txt:1: coordinate \"" + std::string(40, '7') + "...\" is not a number");
 }
 
-TEST_CASE("mesh_io: nan and inf parse as numbers (the hull reports them)") {
-    std::vector<double> xyz = points_of("nan 1 2\ninf -Infinity 1e999\n1e-400 3 4\n");
-    REQUIRE(xyz.size() == 9);
-    CHECK(std::isnan(xyz[0]));
-    CHECK(xyz[3] == INFINITY);
-    CHECK(xyz[4] == -INFINITY);
-    CHECK(xyz[5] == INFINITY);  // overflow: +inf as strtod gives
-    CHECK(xyz[6] == 0.0);       // underflow: 0
+TEST_CASE("mesh_io: nan, inf and numbers beyond the double range name their line and point") {
+    CHECK(error_of("0 0 0\n# a comment\nnan 1 2\n") == "t.txt:3: coordinate \"nan\" of point 1 is not a finite number");
+    CHECK(error_of("1 2 -Infinity\n") == "t.txt:1: coordinate \"-Infinity\" of point 0 is not a finite number");
+    CHECK(error_of("1,2,inf\n") == "t.txt:1: coordinate \"inf\" of point 0 is not a finite number");
+    CHECK(error_of("1 2 3\n4 5 6\n\n0 1e400 0\n") == "t.txt:4: coordinate \"1e400\" of point 2 is out of the double range");
+    CHECK(error_of("-.5e999 0 0\n") == "t.txt:1: coordinate \"-.5e999\" of point 0 is out of the double range");
+    // Every format: rbox, OFF (a mesh read as a point set too), OBJ.
+    CHECK(error_of("3 rbox 2 D3\n2\n1 2 3\n4 nan 6\n") == "t.txt:4: coordinate \"nan\" of point 1 is not a finite number");
+    CHECK(error_of("OFF\n2 0 0\n1 2 3\n4 5 1e309\n") == "t.txt:4: coordinate \"1e309\" of point 1 is out of the double range");
+    CHECK(mesh_error_of("OFF\n3 1 0\n0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n") ==
+          "m.off:4: coordinate \"inf\" of point 1 is not a finite number");
+    CHECK(error_of("v 1 2 3\nvt 0 0\nv 1e400 2 3\n", "m.obj") == "m.obj:3: coordinate \"1e400\" of point 1 is out of the double range");
+    // An underflow is a fine value: 0 (or a subnormal), as strtod gives.
+    std::vector<double> xyz = points_of("1e-400 3 4\n");
+    CHECK(xyz == std::vector<double>{0.0, 3, 4});
+}
+
+TEST_CASE("mesh_io: a byte-order mark and a header row of column names are skipped") {
+    const std::string bom = "\xEF\xBB\xBF";
+    CHECK(points_of(bom + "1 2 3\n") == std::vector<double>{1, 2, 3});
+    CHECK(points_of(bom + "3 rbox 1 D3\n1\n1 2 3\n") == std::vector<double>{1, 2, 3});
+    CHECK(points_of(bom + "v 1 2 3\n") == std::vector<double>{1, 2, 3});
+    CHECK(points_of(bom + "OFF\n1 0 0\n1 2 3\n") == std::vector<double>{1, 2, 3});
+    // A BOM only at the start: line 1 is still line 1 in messages.
+    CHECK(error_of(bom + "1 2\n") == "t.txt:1: expected 3 coordinates, got 2");
+    for (const std::string& header : {std::string("x,y,z"), std::string("X Y Z"), std::string("\"x\", \"y\", \"z\""),
+                                      bom + "x,y,z"}) {
+        INFO(header);
+        const PointsResult csv = parse_points(header + "\n1,2,3\n4,5,6\n", "p.csv");
+        REQUIRE(csv.ok());
+        CHECK(csv.xyz == std::vector<double>{1, 2, 3, 4, 5, 6});
+        const std::string shown = header.substr(header.rfind('\xBF') == std::string::npos ? 0 : 3);
+        CHECK(csv.warnings == std::vector<std::string>{"skipped header line 1: " + shown});
+    }
+    // After comments the header names its own line; the names are shown as printable ASCII only.
+    const PointsResult commented = parse_points("# scan\n\nh\xC3\xB6he,y,z\n1,2,3\n", "p.csv");
+    REQUIRE(commented.ok());
+    CHECK(commented.warnings == std::vector<std::string>{"skipped header line 3: h??he,y,z"});
+    // Only the first content line can be a header, and only of three names; a header alone is no points.
+    CHECK(error_of("x,y,z\n1,2,3\nx,y,z\n") == "t.txt:3: coordinate \"x\" is not a number");
+    CHECK(error_of("x,y\n1,2\n") == "t.txt:1: expected 3 coordinates, got 2");
+    CHECK(error_of("x,y,1\n1,2,3\n") == "t.txt:1: coordinate \"x\" is not a number");
+    const PointsResult only_header = parse_points("x,y,z\n", "p.csv");
+    CHECK(only_header.ok());
+    CHECK(only_header.count() == 0);
+    CHECK(only_header.warnings.size() == 1);
 }
 
 TEST_CASE("mesh_io: shortest round-trip numbers read back to the same doubles") {
@@ -163,9 +201,14 @@ TEST_CASE("mesh_io: shortest round-trip numbers read back to the same doubles") 
     CHECK(hullkit::format_json_number(2.5) == "2.5");
 }
 
-TEST_CASE("mesh_io: empty input is an error without a line number") {
-    CHECK(error_of("", "e.txt") == "e.txt: no points found (the input is empty)");
-    CHECK(error_of("# only a comment\n\n  \n", "e.txt") == "e.txt: no points found (the input is empty)");
+TEST_CASE("mesh_io: empty input is no points and no error (the hull of nothing has dimension -1)") {
+    for (const std::string text : {"", "# only a comment\n\n  \n", "\xEF\xBB\xBF", "3 rbox 0 D3\n0\n", "OFF\n0 0 0\n"}) {
+        INFO(text);
+        const PointsResult result = parse_points(text, "e.txt");
+        CHECK(result.ok());
+        CHECK(result.xyz.empty());
+        CHECK(result.warnings.empty());
+    }
 }
 
 // ---- qhull / rbox ----
@@ -205,8 +248,9 @@ TEST_CASE("mesh_io: rbox count mismatch") {
         CHECK(error_of("3\n-4\n", "r.txt") ==
               "r.txt:2: expected the point count (one non-negative integer), got \"-4\"");
     }
-    SECTION("a declared count of zero is no points") {
-        CHECK(error_of("3 rbox 0 D3\n0\n", "r.txt") == "r.txt: no points found");
+    SECTION("a declared count of zero is no points, and no error") {
+        CHECK(points_of("3 rbox 0 D3\n0\n", "r.txt").empty());
+        CHECK(error_of("3 rbox 0 D3\n0\n1 2 3\n", "r.txt") == "r.txt:3: more points than the 0 declared on line 2");
     }
 }
 
@@ -248,7 +292,7 @@ TEST_CASE("mesh_io: OBJ errors") {
     CHECK(error_of("v 1 2 3\nv 1 q 3\n", "m.obj") == "m.obj:2: coordinate \"q\" is not a number");
     CHECK(error_of("v 1 2 3\nv 1 2 3 w\n", "m.obj") ==
           "m.obj:2: vertex value \"w\" is not a number");
-    CHECK(error_of("o empty\nf 1 2 3\n", "m.obj") == "m.obj: no points found");
+    CHECK(points_of("o empty\nf 1 2 3\n", "m.obj").empty());  // no vertices: no points
     // Unknown records are skipped (with a warning), but not a broken vertex after them.
     CHECK(error_of("648 1292\nv 1 2 3\nv 1 2\n", "fcl.obj") == "fcl.obj:3: expected \"v x y z [w]\", got 2 numbers");
 }

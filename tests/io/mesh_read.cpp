@@ -404,7 +404,8 @@ TEST_CASE("mesh_read: unknown, empty and OFF input through read_mesh", "[mesh_re
     CHECK(error_of("hello world\n", "x.txt") == "x.txt: not a mesh file this reader knows (OBJ, OFF, PLY, STL or glTF)");
     // OFF goes to the existing reader, with its own messages; non-finite coordinates are refused here.
     CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "t.off").rfind("t.off:6:", 0) == 0);
-    CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n", "t.off") == "t.off: vertex 1 has a non-finite coordinate");
+    CHECK(error_of("OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n", "t.off") ==
+          "t.off:4: coordinate \"nan\" of point 1 is not a finite number");
 }
 
 TEST_CASE("mesh_read: the committed fixtures read", "[mesh_read]") {

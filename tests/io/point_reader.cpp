@@ -250,10 +250,30 @@ TEST_CASE("point_reader: a bad number in the 3rd of 5 batches names its line", "
         const std::string before = lines.text.substr(0, cut);
         const std::vector<double> before_points = hullkit::parse_points(before, "t.txt", 1).xyz;
         const std::size_t line = static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')) + 1;
-        const std::string text = before + "1 2e 3\n" + lines.text.substr(cut);
-        CHECK(hullkit::parse_points(text, "t.txt", 1).error ==
-              "t.txt:" + std::to_string(line) + ": coordinate \"2e\" is not a number");
-        check_agrees(text, "t.txt", true, &before_points, {Via::Memory, Via::File, Via::Stream}, {batch});
+        const std::string point = std::to_string(before_points.size() / 3);
+        // A bad number, and non-finite ones, which name their point too: counted across batches.
+        const std::pair<std::string, std::string> bad[] = {
+            {"1 2e 3", "coordinate \"2e\" is not a number"},
+            {"1 nan 3", "coordinate \"nan\" of point " + point + " is not a finite number"},
+            {"1, 2, 1e400", "coordinate \"1e400\" of point " + point + " is out of the double range"}};
+        for (const auto& [bad_line, message] : bad) {
+            const std::string text = before + bad_line + "\n" + lines.text.substr(cut);
+            CHECK(hullkit::parse_points(text, "t.txt", 1).error == "t.txt:" + std::to_string(line) + ": " + message);
+            check_agrees(text, "t.txt", true, &before_points, {Via::Memory, Via::File, Via::Stream}, {batch});
+        }
+    }
+}
+
+TEST_CASE("point_reader: a byte-order mark and a CSV header row, whatever the batches", "[threads]") {
+    const PointLines lines = random_lines(300, 31);
+    for (const std::string start : {"\xEF\xBB\xBF", "x,y,z\n", "\xEF\xBB\xBF# exported\nx, y, z\n"}) {
+        INFO(start);
+        const hullkit::PointsResult parsed = hullkit::parse_points(start + lines.text, "p.csv", 1);
+        REQUIRE(parsed.ok());
+        CHECK(parsed.xyz == lines.xyz);
+        CHECK(parsed.warnings.size() == (start.find('x') == std::string::npos ? 0u : 1u));
+        check_agrees(start + lines.text, "p.csv", true);
+        check_agrees(start + lines.text, "p.csv", false, nullptr, {Via::Stream, Via::File});
     }
 }
 

@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
-import { mkdtempSync, writeFileSync, rmSync, existsSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync, rmSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -10,7 +10,7 @@ import createHullkit, { HullkitError } from '../../wasm/hullkit.js';
 import { hullProblems, randomBall, seededRandom } from './exact.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
-const cli = join(root, 'build/native/hullkit');
+const cli = process.env.HULLKIT_CLI ?? join(root, 'build/native/hullkit');
 const hullkit = await createHullkit();
 
 function cubeCorners(half = 1) {
@@ -158,12 +158,14 @@ test('hull: wasm and the native CLI return the same triangles', (t) => {
       assert.equal(wasm.area, json.area, `${name} ${algorithm}`);
     }
   }
-  // The same error for the same bad input.
+  // The same error for the same bad file (its line and point), and for the same points in an array.
   const bad = join(dir, 'bad.txt');
   writeFileSync(bad, '0 0 0\n1 0 0\n0 1 0\n1 inf 0\n');
   const run = spawnSync(cli, ['hull', bad], { encoding: 'utf8' });
   assert.equal(run.status, 2);
-  assert.match(run.stderr, /point 3 has a non-finite y coordinate \(inf\)/);
+  const message = `${bad}:4: coordinate "inf" of point 3 is not a finite number`;
+  assert.equal(run.stderr, `hullkit: ${message}\n`);
+  assert.throws(() => hullkit.readPoints(readFileSync(bad), bad), { message });
   assert.throws(() => hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, Infinity, 0]), /point 3 has a non-finite y coordinate \(inf\)/);
 });
 

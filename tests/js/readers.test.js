@@ -173,7 +173,28 @@ test('readers: a truncated binary STL says so', () => {
       error instanceof HullkitError && /^cut\.stl: binary STL is truncated: .*184 bytes.*got 164/.test(error.message));
   }
   assert.throws(() => hullkit.readMesh(stl.subarray(0, 60), 'cut.stl'), /truncated: at least 84 bytes/);
-  assert.throws(() => hullkit.readPoints(new Uint8Array(0), 'empty.xyz'), /empty\.xyz: no points/);
+});
+
+test('readers: no points is no error (the hull of nothing has dimension -1), as the command line has it', () => {
+  for (const bytes of [new Uint8Array(0), text('# nothing\n'), text('x,y,z\n')]) {
+    const points = hullkit.readPoints(bytes, 'empty.xyz');
+    assert.equal(points.length, 0);
+    assert.equal(hullkit.hull(points).dimension, -1);
+    assert.equal(hullkit.readPoints2d(bytes, 'empty.xy').length, 0);
+  }
+});
+
+test('readers: a byte-order mark and a CSV header row are skipped (a warning says so); nan names its line and point', () => {
+  const points = hullkit.readPoints(text('\uFEFFx,y,z\n0,0,0\n1,0,0\n0,1,0\n'), 'p.csv');
+  assert.deepEqual([...points], [0, 0, 0, 1, 0, 0, 0, 1, 0]);
+  assert.deepEqual(points.warnings, ['skipped header line 1: x,y,z']);
+  const xy = hullkit.readPoints2d(text('\uFEFFx,y\n0,0\n1,0\n'), 'p.csv');
+  assert.deepEqual([...xy], [0, 0, 1, 0]);
+  assert.deepEqual(xy.warnings, ['skipped header line 1: x,y']);
+  assert.throws(() => hullkit.readPoints(text('0 0 0\n1 nan 0\n'), 'p.xyz'),
+    (error) => error.line === 2 && error.message === 'p.xyz:2: coordinate "nan" of point 1 is not a finite number');
+  assert.throws(() => hullkit.readPoints2d(text('0 0\n1e400 0\n'), 'p.xy'),
+    (error) => error.line === 2 && error.message === 'p.xy:2: coordinate "1e400" of point 1 is out of the double range');
 });
 
 test('readers: argument checks', () => {

@@ -35,11 +35,18 @@ struct PointsResult {
 ///                                    skipped with a warning (PointsResult::warnings).
 ///   - one integer, optionally followed by a non-numeric comment ("3 rbox 1000 s D3"):
 ///                                    qhull/rbox: dimension (must be 3), point count, points.
-///   - anything else .................. plain "x y z" lines, separated by whitespace or one comma.
+///   - anything else .................. plain "x y z" lines, separated by whitespace or one comma;
+///                                    a first line of three column names ("x,y,z", as CSV files
+///                                    start) is skipped, with the warning
+///                                    `skipped header line 1: x,y,z`.
 /// In every format blank lines are skipped and '#' starts a comment that runs to the end of
-/// the line. Coordinates are parsed like strtod but the whole token must be a number; "nan"
-/// and "inf" are accepted here (hullkit::hull reports them with the point's index).
-/// An input without a single point is an error.
+/// the line; a UTF-8 byte-order mark at the start is skipped. Coordinates are parsed like strtod
+/// but the whole token must be a number, and a finite one: "nan", "inf" or a number beyond the
+/// double range is an error naming the line and the point (counted from 0 in this input):
+/// `points.txt:5: coordinate "1e400" of point 3 is out of the double range`,
+/// `coordinate "nan" of point 3 is not a finite number`.
+/// An input without a single point (empty, only comments, a count of 0) gives no points and no
+/// error: the hull of nothing has dimension -1.
 /// Input that is not text (binary data, binary STL) or a format not read here (PLY, ASCII STL)
 /// is rejected as such ("source: not a point file: binary STL is not supported ..."), never
 /// with a complaint about coordinates, and no byte of it is echoed.
@@ -69,9 +76,12 @@ struct Points2Result {
 ///   - one integer, optionally followed by a non-numeric comment ("2 rbox 1000 D2"): qhull/rbox:
 ///     dimension (2, or 3 whose z is ignored), point count, points;
 ///   - anything else: "x y" lines, or "x y z" lines whose z is ignored (every line as the first),
-///     separated by whitespace.
-/// Blank lines and '#' comments as parse_points; a coordinate that is not a finite number is an
-/// error naming its line and point. With `point_lines`, also the 1-based line number of each
+///     separated by whitespace or one comma; a first line of two or three column names ("x,y") is
+///     skipped with a warning, as parse_points does.
+/// Blank lines, '#' comments, a byte-order mark and an input without points as parse_points; a
+/// coordinate that is not a finite number is an error naming its line and point (`coordinate
+/// "nan" of point 2 is not a finite number`, `coordinate "1e400" of point 2 is out of the double
+/// range`). With `point_lines`, also the 1-based line number of each
 /// point (for later messages about a point). Binary data, PLY, STL (ASCII or binary), OFF and OBJ
 /// are refused with "not a point file: ..." saying which (read meshes with read_mesh and take
 /// their vertices instead).

@@ -57,14 +57,25 @@ bool parse_integer(std::string_view field, std::int64_t* out) {
     return true;
 }
 
-std::string quote(std::string_view field) {
-    std::string text(field.substr(0, 40));
+std::string printable(std::string_view text) {
+    std::string out(text.substr(0, 40));
     // Printable ASCII only: no byte of a file (control codes, invalid UTF-8) reaches a terminal.
-    for (char& c : text) {
+    for (char& c : out) {
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
     }
-    return "\"" + text + (field.size() > 40 ? "...\"" : "\"");
+    return text.size() > 40 ? out + "..." : out;
 }
+
+std::string quote(std::string_view field) { return "\"" + printable(field) + "\""; }
+
+const char* non_finite_reason(std::string_view field) {
+    std::size_t i = !field.empty() && (field[0] == '+' || field[0] == '-') ? 1 : 0;
+    // "1e400", ".5e999": digits that strtod rounds to infinity; "nan", "inf", "infinity": words.
+    const bool numeral = i < field.size() && ((field[i] >= '0' && field[i] <= '9') || field[i] == '.');
+    return numeral ? "is out of the double range" : "is not a finite number";
+}
+
+std::size_t bom_length(std::string_view text) { return text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }
 
 std::string extension_of(const std::string& source) {
     std::size_t dot = source.find_last_of("./\\");
@@ -258,13 +269,7 @@ MeshResult read_mesh(const std::string& bytes, const std::string& source, const 
             return io::mesh_error(source + (bytes.empty() ? ": empty file, expected a mesh (OBJ, OFF, PLY, STL or glTF)"
                                                            : ": not a mesh file this reader knows (OBJ, OFF, PLY, STL or glTF)"));
     }
-    if (!result.ok()) return result;
-    // read_off_mesh accepts any numbers; the other readers already refuse non-finite ones.
-    for (std::size_t i = 0; i < result.xyz.size(); ++i) {
-        if (!std::isfinite(result.xyz[i])) {
-            return io::mesh_error(source + ": vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
-        }
-    }
+    if (!result.ok()) return result;  // (every reader refuses non-finite coordinates, naming where)
     if (result.triangles.empty()) return io::mesh_error(source + ": the mesh has no triangles");
     return result;
 }
@@ -304,9 +309,11 @@ PointsResult read_points(const std::string& bytes, const std::string& source) {
 
 Points2Result read_points_2d(const std::string& bytes, const std::string& source) {
     const std::string extension = io::extension_of(source);
+    // (The content is judged after a UTF-8 byte-order mark, which the text readers skip.)
+    const std::size_t bom = io::bom_length(bytes);
     const bool mesh_file = extension == "obj" || extension == "off" || extension == "ply" || extension == "stl" ||
                            extension == "gltf" || extension == "glb" ||
-                           detect_mesh_format(bytes, "") != MeshFormat::Unknown;
+                           detect_mesh_format(bom ? bytes.substr(bom) : bytes, "") != MeshFormat::Unknown;
     if (!mesh_file) return parse_points_2d(bytes, source);
     const PointsResult points = read_points(bytes, source);
     Points2Result out;

@@ -53,12 +53,30 @@ bool parse_finite(std::string_view field, double* out);
 /// The whole field as a decimal integer (optional sign); false if it does not fit int64.
 bool parse_integer(std::string_view field, std::int64_t* out);
 
-/// `field` in double quotes, shortened to 40 characters, every byte that is not printable ASCII
-/// shown as '?', for messages.
+/// `text` shortened to 40 characters (then "..."), every byte that is not printable ASCII shown as
+/// '?', for messages: no byte of a file (control codes, invalid UTF-8) reaches a terminal.
+std::string printable(std::string_view text);
+/// `field` as printable() gives it, in double quotes.
 std::string quote(std::string_view field);
+/// What is wrong with a coordinate `field` that parsed to a non-finite double: "is out of the
+/// double range" for digits too large for a double ("1e400"), else "is not a finite number"
+/// ("nan", "-inf").
+const char* non_finite_reason(std::string_view field);
+/// 3 if `text` starts with the UTF-8 byte-order mark (EF BB BF) that some editors write at the
+/// start of a text file, else 0. The point readers skip it.
+std::size_t bom_length(std::string_view text);
 
 /// Lower-cased extension of `source` without the dot ("" if none).
 std::string extension_of(const std::string& source);
+
+/// "Not about one point", for describe_problem.
+inline constexpr std::size_t kNoPoint = ~std::size_t{0};
+/// A reader's message: `what` alone, or for a coordinate of point `point` (not kNoPoint)
+/// `what` + " of point N " + `tail`: `coordinate "nan" of point 3 is not a finite number`.
+inline std::string describe_problem(const std::string& what, std::size_t point, const std::string& tail) {
+    if (point == kNoPoint) return what;
+    return what + " of point " + std::to_string(point) + " " + tail;
+}
 
 /// A MeshResult holding only `message`.
 MeshResult mesh_error(std::string message);
@@ -188,7 +206,15 @@ struct PointTextHeader {
     std::size_t count_line = 0;   ///< the line that declares it
     std::size_t body_offset = 0;  ///< where the point lines start (xyz, OBJ: the first content line)
     std::size_t body_line = 0;    ///< the number of lines before body_offset
+    std::size_t column_names_line = 0;  ///< xyz: the line of a header row of column names ("x,y,z"), 0 if none
+    std::string column_names;     ///< that line, printable
 };
+
+/// The warning for a header row of column names that a point reader skipped:
+/// `skipped header line 1: x,y,z`.
+inline std::string column_names_warning(std::size_t line, const std::string& names) {
+    return "skipped header line " + std::to_string(line) + ": " + names;
+}
 
 /// Reads the header of point text from `text`, the start of the input made of whole lines;
 /// `whole`: the input has nothing more. NeedMore when the header runs past `text`; Failed with
@@ -202,7 +228,9 @@ struct PointPiece {
     std::size_t lines = 0;    ///< lines read, the last one included; all of them unless it stopped early
     bool at_limit = false;    ///< OFF: stopped after `limit` points (the rest of the file is faces)
     std::size_t error_line = 0;  ///< 0: no error; else the failing line, counted from the piece's first
-    std::string error_what;      ///< what is wrong on that line
+    std::string error_what;      ///< what is wrong on that line (see describe_problem)
+    std::size_t error_point = kNoPoint;  ///< the point it is about, counted from the piece's first point
+    std::string error_tail;      ///< the rest of the message after the point's number
     SkippedRecords skipped;      ///< OBJ: unknown records skipped, lines counted from the piece's first
 };
 

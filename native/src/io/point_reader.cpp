@@ -179,6 +179,9 @@ struct PointReader::Impl {
             fail_read();
             return;
         }
+        // A UTF-8 byte-order mark (some editors start text files with one) is not content; it
+        // stays part of line 1.
+        input.consume(io::bom_length(input.available()));
         const std::string_view head = input.available().substr(0, kHeadBytes);
         switch (route(head)) {
             case Mode::Text: start_text(head); break;
@@ -474,7 +477,10 @@ struct PointReader::Impl {
             }
             if (c.piece.error_line) {
                 out->resize(out_start);
-                return fail(io::at_line(source, line + c.piece.error_line, c.piece.error_what));
+                return fail(io::at_line(source, line + c.piece.error_line,
+                                        io::describe_problem(c.piece.error_what,
+                                                             c.piece.error_point == io::kNoPoint ? io::kNoPoint : static_cast<std::size_t>(before) + c.piece.error_point,
+                                                             c.piece.error_tail)));
             }
             c.start = static_cast<std::size_t>(before - parsed);
             before += c.piece.points;
@@ -516,8 +522,7 @@ struct PointReader::Impl {
         if (header.counted && parsed < header.declared) {
             return fail(io::at_line(source, header.count_line, io::missing_points_message(header, parsed)));
         }
-        if (parsed == 0) return fail(source + ": no points found");
-        return false;
+        return false;  // the end (no points at all is no error: an empty cloud)
     }
 
     // ---- PLY ----
@@ -623,6 +628,9 @@ bool PointReader::append_next(std::vector<double>* xyz) { return impl_->next(xyz
 const std::string& PointReader::error() const { return impl_->error; }
 std::vector<std::string> PointReader::warnings() const {
     std::vector<std::string> out = impl_->whole_warnings;
+    if (impl_->header.column_names_line) {
+        out.push_back(io::column_names_warning(impl_->header.column_names_line, impl_->header.column_names));
+    }
     for (std::string& message : impl_->skipped.messages("unknown OBJ record")) out.push_back(std::move(message));
     return out;
 }

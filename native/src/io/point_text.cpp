@@ -119,7 +119,7 @@ bool read_obj_line(Reader& reader, std::vector<double>* xyz, io::SkippedRecords*
             return reader.fail("expected \"v x y z [w]\", got " + std::to_string(n) +
                                (n == 1 ? " number" : " numbers"));
         }
-        if (!reader.append_numbers(1, 3, "coordinate", xyz)) return false;
+        if (!reader.append_numbers(1, 3, "coordinate", xyz, /*coordinates=*/true)) return false;
         std::vector<double> extra;
         return reader.append_numbers(4, n - 3, "vertex value", &extra);
     }
@@ -314,15 +314,36 @@ ReadStatus read_point_text_header(std::string_view text, bool whole, const std::
     Reader reader(text, source, whole);
     bool ok = false;
     if (!reader.next_line()) {
-        ok = reader.fail_whole("no points found (the input is empty)");
-    } else if (reader.split(false)) {  // cannot fail without commas
+        // No content at all (an empty file, only comments): no points, which is no error.
+        if (reader.ran_out()) return ReadStatus::NeedMore;
+        header->format = PointTextFormat::Xyz;
+        header->body_offset = text.size();
+        header->body_line = reader.line_number();
+        return ReadStatus::Done;
+    }
+    if (reader.split(false)) {  // cannot fail without commas
         header->format = detect_format(reader.fields());
         // A file named .obj is OBJ whatever its first line (FCL's meshes start with "648 1292").
         if (header->format != PointTextFormat::Off && io::extension_of(source) == "obj") {
             header->format = PointTextFormat::Obj;
         }
         switch (header->format) {
-            case PointTextFormat::Xyz:
+            case PointTextFormat::Xyz: {
+                // A header row of column names, as CSV files start ("x,y,z"), is skipped (and
+                // said so in the warnings); the points start on the next line.
+                std::vector<std::string_view> fields;
+                std::string ignored;
+                if (io::text::split_fields(reader.line(), true, &fields, &ignored) &&
+                    io::text::is_column_names(fields, 3)) {
+                    header->column_names_line = reader.line_number();
+                    header->column_names = io::printable(reader.line());
+                    header->body_offset = reader.cursor().offset();
+                    header->body_line = reader.line_number();
+                    ok = true;
+                    break;
+                }
+            }
+                [[fallthrough]];
             case PointTextFormat::Obj:  // no header: the first content line is the first point line
                 header->body_offset = reader.cursor().line_start();
                 header->body_line = reader.line_number() - 1;
@@ -357,6 +378,7 @@ void parse_point_piece(std::string_view text, const PointTextHeader& header, std
     const std::string no_source;  // the caller numbers the lines and writes the message
     Reader reader(text, no_source);
     const std::size_t start = xyz->size();
+    reader.set_points_start(start);
     const PointTextFormat format = header.format;
     if (!header.counted) limit = ~std::uint64_t{0};
     std::uint64_t found = 0;
@@ -384,6 +406,8 @@ void parse_point_piece(std::string_view text, const PointTextHeader& header, std
     if (!ok) {
         piece->error_line = reader.error_line();
         piece->error_what = std::move(reader.error_what());
+        piece->error_point = reader.error_point();
+        piece->error_tail = std::move(reader.error_tail());
     }
 }
 

@@ -1,5 +1,6 @@
 // Reading 2D point sets (the input of Delaunay triangulation); see parse_points_2d in mesh_io.hpp.
-// Lines, fields and numbers come from the readers' shared helpers (mesh_read_internal.hpp).
+// Lines and numbers come from the readers' shared helpers (mesh_read_internal.hpp), fields (split at
+// whitespace or a comma) and header rows from the 3D point reader's (text_fields.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "hullkit/mesh_io.hpp"
 #include "mesh_read_internal.hpp"
+#include "text_fields.hpp"
 
 namespace hullkit {
 namespace {
@@ -16,33 +18,44 @@ namespace {
 /// Header counts index uint32 points.
 constexpr std::int64_t kMaxCount = 0xffffffffLL;
 
-/// Hands out the fields of each line that has any ('#' starts a comment) and keeps the first
-/// problem as "source:LINE: what".
+/// Hands out the fields of each line that has any ('#' starts a comment; fields are separated by
+/// whitespace or one comma, as in the 3D reader) and keeps the first problem as
+/// "source:LINE: what". A UTF-8 byte-order mark at the start is skipped.
 class Reader2 {
 public:
     Reader2(const std::string& text, const std::string& source, std::vector<std::size_t>* point_lines)
-        : lines_(text), source_(source), text_size_(text.size()), point_lines_(point_lines) {}
+        : lines_(text, io::bom_length(text)), source_(source), text_size_(text.size()), point_lines_(point_lines) {}
 
-    /// Advances to the next line with fields; false at the end of the text.
+    /// Advances to the next line with fields; false at the end of the text, or after an empty
+    /// field between commas (then the error is recorded: see failed()).
     bool next() {
         std::string_view line;
         while (lines_.next(&line)) {
-            fields_ = io::split_words(line, '#');
+            line = line.substr(0, line.find('#'));
+            while (!line.empty() && io::text::is_space(line.front())) line.remove_prefix(1);
+            while (!line.empty() && io::text::is_space(line.back())) line.remove_suffix(1);
+            line_ = line;
+            std::string what;
+            if (!io::text::split_fields(line, /*allow_commas=*/true, &fields_, &what)) return fail(what);
             if (!fields_.empty()) return true;
         }
         return false;
     }
+    bool failed() const { return !error_.empty(); }
+    /// The current line, without its comment.
+    std::string_view line() const { return line_; }
     const std::vector<std::string_view>& fields() const { return fields_; }
     std::size_t line_number() const { return lines_.line_number(); }
     std::size_t text_size() const { return text_size_; }
 
+    /// Records a problem; the first one recorded is the one reported.
     bool fail(const std::string& what) { return fail_at(line_number(), what); }
     bool fail_at(std::size_t line, const std::string& what) {
-        error_ = io::at_line(source_, line, what);
+        if (error_.empty()) error_ = io::at_line(source_, line, what);
         return false;
     }
     bool fail_whole(const std::string& what) {
-        error_ = source_ + ": " + what;
+        if (error_.empty()) error_ = source_ + ": " + what;
         return false;
     }
     const std::string& error() const { return error_; }
@@ -55,9 +68,12 @@ public:
         double value[3];
         for (std::size_t i = 0; i < width; ++i) {
             if (!io::parse_finite(fields_[i], &value[i])) {
-                // Name the point too: the triangulation and its messages count points from 0.
-                return fail("coordinate " + io::quote(fields_[i]) + " of point " + std::to_string(xy->size() / 2) +
-                            " is not a finite number");
+                // Name the point too: the triangulation and its messages count points from 0. A
+                // number too large for a double ("1e400") is said to be one.
+                double number = 0.0;
+                const bool numeric = io::text::parse_double(fields_[i], &number);
+                return fail("coordinate " + io::quote(fields_[i]) + " of point " + std::to_string(xy->size() / 2) + " " +
+                            (numeric ? io::non_finite_reason(fields_[i]) : "is not a finite number"));
             }
         }
         // A third coordinate is checked but not kept: the points are projected onto the x-y plane.
@@ -73,6 +89,7 @@ private:
     std::size_t text_size_;
     std::vector<std::size_t>* point_lines_;
     std::vector<std::string_view> fields_;
+    std::string_view line_;
     std::string error_;
 };
 
@@ -114,6 +131,7 @@ bool read_rbox(Reader2& reader, std::vector<double>* xy) {
         if (!reader.append_point(static_cast<std::size_t>(dimension), xy)) return false;
         ++found;
     }
+    if (reader.failed()) return false;
     if (found != count) {
         return reader.fail_at(count_line, "header declares " + std::to_string(count) + " points but the file has " +
                                               std::to_string(found));
@@ -161,7 +179,7 @@ bool read_lines(Reader2& reader, std::vector<double>* xy) {
     do {
         if (!reader.append_point(width, xy)) return false;
     } while (reader.next());
-    return true;
+    return !reader.failed();
 }
 
 }  // namespace
@@ -177,17 +195,22 @@ Points2Result parse_points_2d(const std::string& text, const std::string& source
     if (!binary.empty()) {
         ok = reader.fail_whole("not a point file: " + binary);
     } else if (!reader.next()) {
-        ok = reader.fail_whole("no points found (the input is empty)");
+        ok = !reader.failed();  // no content (an empty file, only comments): no points, no error
     } else if ((format = other_format(reader.fields()[0])) != nullptr) {
         ok = reader.fail_whole(std::string("not a point file: ") + format +
                                " is not supported by the 2D point reader (read: x y, x y z, rbox)");
     } else if (is_rbox_header(reader.fields())) {
-        ok = read_rbox(reader, &result.xy) && (!result.xy.empty() || reader.fail_whole("no points found"));
+        ok = read_rbox(reader, &result.xy);
+    } else if (io::text::is_column_names(reader.fields(), 0)) {
+        // A header row of column names, as CSV files start ("x,y"): skipped, and said so.
+        result.warnings.push_back(io::column_names_warning(reader.line_number(), io::printable(reader.line())));
+        ok = reader.next() ? read_lines(reader, &result.xy) : !reader.failed();
     } else {
         ok = read_lines(reader, &result.xy);
     }
     if (!ok) {
         result.xy = {};
+        result.warnings.clear();
         result.error = reader.error();
         if (point_lines) point_lines->clear();
     } else {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -176,6 +177,17 @@ inline bool parse_double(std::string_view field, double* out) {
     return parse_double_prefix(field.data(), end, out) == end;
 }
 
+/// Whether `fields`, the first content line of a point file, are a header row of column names
+/// ("x,y,z" as CSV files start): `width` fields (2 or 3 with `width` 0), none of them a number.
+inline bool is_column_names(const std::vector<std::string_view>& fields, std::size_t width) {
+    if (width ? fields.size() != width : fields.size() != 2 && fields.size() != 3) return false;
+    double ignored;
+    for (std::string_view field : fields) {
+        if (parse_double(field, &ignored)) return false;
+    }
+    return true;
+}
+
 /// A non-negative decimal integer (digits only) that fits in `limit`.
 inline bool parse_count(std::string_view field, std::uint64_t limit, std::uint64_t* out) {
     if (field.empty()) return false;
@@ -240,27 +252,46 @@ public:
     bool fail_at(std::size_t line, const std::string& what) {
         error_line_ = line;
         error_what_ = what;
+        error_point_ = kNoPoint;
+        error_tail_.clear();
         return false;
     }
+    /// Records that coordinate `field` of the point being appended to `out` is not finite; the
+    /// message names the point (see set_points_start) and says whether the number overflowed.
+    bool fail_coordinate(std::string_view field, const std::vector<double>& out) {
+        fail("coordinate " + quoted(field));
+        error_point_ = (out.size() - points_start_) / 3;
+        error_tail_ = io::non_finite_reason(field);
+        return false;
+    }
+    /// Where the points read from this text start in the array they are appended to: messages
+    /// about a coordinate count the points from there (a piece of a longer text: from the
+    /// piece's first point, which the caller numbers).
+    void set_points_start(std::size_t size) { points_start_ = size; }
     /// For problems no single line is to blame for (an empty input).
     bool fail_whole(const std::string& what) { return fail_at(0, what); }
     /// "source:LINE: what", or "source: what" for the whole input.
     std::string error() const {
-        return error_line_ ? io::at_line(source_, error_line_, error_what_) : source_ + ": " + error_what_;
+        const std::string what = io::describe_problem(error_what_, error_point_, error_tail_);
+        return error_line_ ? io::at_line(source_, error_line_, what) : source_ + ": " + what;
     }
-    /// The failing line (0: the whole input) and what is wrong, for a caller that numbers the
-    /// lines itself (a piece of a longer text).
+    /// The failing line (0: the whole input) and what is wrong (see io::describe_problem), for a
+    /// caller that numbers the lines and points itself (a piece of a longer text).
     std::size_t error_line() const { return error_line_; }
     std::string& error_what() { return error_what_; }
+    std::size_t error_point() const { return error_point_; }
+    std::string& error_tail() { return error_tail_; }
 
-    /// Parses fields[first..first+count) as numbers into *out (appended).
+    /// Parses fields[first..first+count) as numbers into *out (appended); with `coordinates`, each
+    /// must be finite (fail_coordinate).
     bool append_numbers(std::size_t first, std::size_t count, const char* what,
-                        std::vector<double>* out) {
+                        std::vector<double>* out, bool coordinates = false) {
         for (std::size_t i = first; i < first + count; ++i) {
             double value;
             if (!parse_double(fields_[i], &value)) {
                 return fail(std::string(what) + " " + quoted(fields_[i]) + " is not a number");
             }
+            if (coordinates && !std::isfinite(value)) return fail_coordinate(fields_[i], *out);
             out->push_back(value);
         }
         return true;
@@ -280,7 +311,9 @@ public:
             p = parse_double_prefix(p, end, &point[k]);
             if (!p || (p < end && !is_space(*p))) break;  // a bad number, or "1,2": the general path
         }
-        if (k == 3 && p == end) {  // the line is trimmed: nothing may follow the third number
+        // The line is trimmed: nothing may follow the third number. (A non-finite coordinate takes
+        // the general path too, for its message.)
+        if (k == 3 && p == end && std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2])) {
             // push_back inlines; a range insert of 3 doubles is a call and a memmove per point.
             xyz->push_back(point[0]);
             xyz->push_back(point[1]);
@@ -291,7 +324,7 @@ public:
         if (fields_.size() != 3) {
             return fail("expected 3 coordinates, got " + std::to_string(fields_.size()));
         }
-        return append_numbers(0, 3, "coordinate", xyz);
+        return append_numbers(0, 3, "coordinate", xyz, /*coordinates=*/true);
     }
 
 private:
@@ -304,6 +337,9 @@ private:
     std::vector<std::string_view> fields_;
     std::size_t error_line_ = 0;
     std::string error_what_;
+    std::size_t error_point_ = kNoPoint;
+    std::string error_tail_;
+    std::size_t points_start_ = 0;
 };
 
 }  // namespace hullkit::io::text
