@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <CLI/CLI.hpp>
+
 #include "hullkit/mesh_io.hpp"
 
 namespace hullkit_cli {
@@ -40,6 +42,28 @@ void write_output(const std::string& path, const std::string& text) {
         saved_errno = errno;
     }
     if (!written) throw UsageError(path + ": cannot write: " + std::strerror(saved_errno));
+}
+
+void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const std::string& command) {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 consumes from the back
+    const std::string hint = " (try 'hullkit " + command + " --help')";
+    try {
+        app.parse(reversed);
+    } catch (const CLI::ExtrasError&) {
+        const std::vector<std::string> extra = app.remaining();
+        const std::string first = extra.empty() ? "?" : extra.front();
+        if (first.size() > 1 && first[0] == '-') throw UsageError("unknown option \"" + first + "\"" + hint);
+        throw UsageError("unexpected argument \"" + first + "\"" + hint);
+    } catch (const CLI::ParseError& error) {
+        // CLI11 says e.g. "--format: 1 required TEXT missing" for an option without its value.
+        std::string what = error.what();
+        const std::size_t colon = what.find(':');
+        if (what.find("required") != std::string::npos && what.find("missing") != std::string::npos &&
+            colon != std::string::npos) {
+            throw UsageError("option " + what.substr(0, colon) + " needs a value" + hint);
+        }
+        throw UsageError(what + hint);
+    }
 }
 
 int print_usage_error(const std::string& message) {

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace hullkit_cli {
 
 constexpr int kExitOk = 0;
@@ -33,6 +37,11 @@ void write_output(const std::string& path, const std::string& text);
 /// Prints "hullkit: <message>" as one line on standard error (line breaks in `message` become
 /// spaces) and returns 2, the exit status of a usage or input problem.
 int print_usage_error(const std::string& message);
+
+/// Parses `args` with `app` (CLI11); on a CLI11 error throws UsageError with a one-line message in
+/// the words of the other commands (unknown option, unexpected argument, missing value), ending
+/// with a hint at 'hullkit COMMAND --help'.
+void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const std::string& command);
 
 /// Prints each of a reader's warnings as one line "hullkit: warning: <source>: <warning>" on
 /// standard error (`source` empty: "hullkit: warning: <warning>").

@@ -136,30 +136,6 @@ std::string known_algorithms(bool mark_default) {
     return names;
 }
 
-/// Parses `args` with `app`; on a CLI11 error throws UsageError with a one-line message in the
-/// words of the other commands (unknown option, unexpected argument, missing value).
-void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const std::string& command) {
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 consumes from the back
-    const std::string hint = " (try 'hullkit " + command + " --help')";
-    try {
-        app.parse(reversed);
-    } catch (const CLI::ExtrasError&) {
-        const std::vector<std::string> extra = app.remaining();
-        const std::string first = extra.empty() ? "?" : extra.front();
-        if (first.size() > 1 && first[0] == '-') throw UsageError("unknown option \"" + first + "\"" + hint);
-        throw UsageError("unexpected argument \"" + first + "\"" + hint);
-    } catch (const CLI::ParseError& error) {
-        // CLI11 says e.g. "--format: 1 required TEXT missing" for an option without its value.
-        std::string what = error.what();
-        const std::size_t colon = what.find(':');
-        if (what.find("required") != std::string::npos && what.find("missing") != std::string::npos &&
-            colon != std::string::npos) {
-            throw UsageError("option " + what.substr(0, colon) + " needs a value" + hint);
-        }
-        throw UsageError(what + hint);
-    }
-}
-
 /// Returns false after printing the help for -h/--help.
 bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* args) {
     CLI::App app{"hullkit delaunay", "hullkit delaunay"};

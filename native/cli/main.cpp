@@ -4,6 +4,7 @@
 // Exit codes: 0 success; 2 any usage or input problem; 1 an internal failure (a bug or out of
 // memory). Every failure prints exactly one line "hullkit: ..." on stderr.
 #include "cli_io.hpp"
+#include "delaunay3_command.hpp"
 #include "delaunay_command.hpp"
 #include "hull_command.hpp"
 #include "route_command.hpp"
@@ -32,6 +33,8 @@ Commands:
   verify           check exactly that an OFF file is the convex hull of a point set
   delaunay         Delaunay triangulation of 2D points (by lifting to a paraboloid)
   verify-delaunay  check exactly that an OFF file is a Delaunay triangulation
+  delaunay3        Delaunay tetrahedralization of 3D points (by lifting to 4D)
+  verify-delaunay3 check exactly that tetrahedra are a Delaunay tetrahedralization
   route            check a traverse's route (straight or turning legs) against obstacles
 
 Options:
@@ -66,6 +69,8 @@ int run(int argc, char** argv) {
     if (command == "verify") return hullkit_cli::run_verify(rest);
     if (command == "delaunay") return hullkit_cli::run_delaunay(rest);
     if (command == "verify-delaunay") return hullkit_cli::run_verify_delaunay(rest);
+    if (command == "delaunay3") return hullkit_cli::run_delaunay3(rest);
+    if (command == "verify-delaunay3") return hullkit_cli::run_verify_delaunay3(rest);
     if (command == "route") return hullkit_cli::run_route(rest);
     if (!command.empty() && command[0] == '-') {
         throw CliError("unknown option \"" + command + "\" (try 'hullkit --help')");

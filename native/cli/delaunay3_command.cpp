@@ -1,0 +1,523 @@
+// `hullkit delaunay3` and `hullkit verify-delaunay3`: argument parsing (CLI11) and I/O around
+// hullkit::delaunay3 and hullkit::verify_delaunay3. No geometry here.
+#include "delaunay3_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_io.hpp"
+#include "hullkit/delaunay3.hpp"
+#include "hullkit/mesh_io.hpp"
+#include "hullkit/point_reader.hpp"
+#include "progress.hpp"
+
+namespace hullkit_cli {
+namespace {
+
+const char* const kDelaunay3Usage =
+    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format json|ele|vtk] [--threads N]
+                         [--stats] [--quiet]
+
+Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
+input if INPUT is missing or '-'): the lower convex hull of the points lifted to
+(x, y, z, x^2 + y^2 + z^2), projected back. Every decision is exact; cospherical
+points (grids, lattices, spheres) are tetrahedralized by one rule that depends
+only on the points, and no tetrahedron is flat.
+
+Input: every point format of 'hullkit hull' (x y z lines, qhull/rbox, OBJ, OFF,
+PLY, STL, glTF vertices).
+
+Options:
+  -o, --output FILE   write to FILE instead of standard output
+  --format FORMAT     json (default): {"dimension", "tetrahedra": [[a,b,c,d],...],
+                        "neighbors": [[...],...] (the tetrahedron across the face
+                        opposite each corner, -1 on the hull), "hull": [[a,b,c],
+                        ...] (outward), "duplicates": [[i, first],...]}; coplanar
+                        input: "triangles", "neighbors", "normal"; collinear or
+                        one point: "vertices";
+                      ele: TetGen's .ele (and FILE's .node beside it: every
+                        input point, numbered from 1 in input order);
+                      vtk: a legacy VTK unstructured grid of tetrahedra (opens
+                        in ParaView);
+                      without --format, an output FILE ending in .json, .ele or
+                        .vtk selects that format
+  --threads N         0 (default) every hardware thread, 1 this thread only;
+                      the output is the same for every N
+  --stats             print one JSON line to standard error: points,
+                      tetrahedra, hull, dimension, threads, seconds (the
+                      tetrahedralization alone)
+  --quiet             no progress line (otherwise drawn on standard error when
+                      it is a terminal and the run lasts over a second)
+  -h, --help          show this help
+
+Tetrahedra are positively oriented: a, b, c counter-clockwise seen from d. Exact
+duplicates are merged into their lowest index. Exit status: 0 on success, 2 on a
+usage or input problem (one line on stderr).
+)";
+
+const char* const kVerifyDelaunay3Usage =
+    R"(Usage: hullkit verify-delaunay3 POINTS TETRAHEDRA
+
+Checks, with exact arithmetic, that TETRAHEDRA is the Delaunay tetrahedralization
+of the 3D points in POINTS ('-' reads them from standard input; the input formats
+of 'hullkit delaunay3'): every tetrahedron positively oriented and not flat, each
+face shared by at most two tetrahedra on opposite sides, the boundary a closed
+convex surface (the convex hull), every distinct point used, and no point inside
+the circumsphere across any interior face (cospherical ties broken by the rule of
+'hullkit delaunay3').
+
+TETRAHEDRA: the JSON of 'hullkit delaunay3' (0-based indices into POINTS), or a
+TetGen .ele file (indices numbered as its .node file beside it says, from 1 if
+there is none).
+
+Prints 'ok: ...' or each problem on its own line.
+Exit status: 0 the tetrahedralization is Delaunay, 1 it is not, 2 a usage or
+input problem.
+)";
+
+enum class Format { Json, Ele, Vtk };
+
+bool parse_format(std::string name, Format* out) {
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "json") *out = Format::Json;
+    else if (name == "ele") *out = Format::Ele;
+    else if (name == "vtk") *out = Format::Vtk;
+    else return false;
+    return true;
+}
+
+bool format_from_path(const std::string& path, Format* out) {
+    const std::size_t dot = path.find_last_of("./");
+    return dot != std::string::npos && path[dot] == '.' && parse_format(path.substr(dot + 1), out);
+}
+
+struct Delaunay3Args {
+    std::string input = "-";
+    std::string output;
+    Format format = Format::Json;
+    unsigned threads = 0;
+    bool stats = false;
+    bool quiet = false;
+};
+
+bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
+    CLI::App app{"hullkit delaunay3", "hullkit delaunay3"};
+    app.set_help_flag();
+    bool help = false;
+    std::string format_name;
+    const auto last = CLI::MultiOptionPolicy::TakeLast;
+    app.add_flag("-h,--help", help);
+    app.add_option("input", args->input);
+    app.add_option("-o,--output", args->output)->multi_option_policy(last);
+    app.add_option("--format", format_name)->multi_option_policy(last);
+    app.add_option("--threads", args->threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    app.add_flag("--stats", args->stats);
+    app.add_flag("--quiet", args->quiet);
+    parse_or_throw(app, argv, "delaunay3");
+    if (help) {
+        std::fputs(kDelaunay3Usage, stdout);
+        return false;
+    }
+    if (app.count("--output") && args->output.empty()) throw UsageError("option --output needs a file name");
+    if (app.count("--format")) {
+        if (!parse_format(format_name, &args->format)) {
+            throw UsageError("unknown format \"" + format_name + "\" (known: json, ele, vtk)");
+        }
+    } else if (!args->output.empty() && args->output != "-") {
+        format_from_path(args->output, &args->format);  // the default stays JSON
+    }
+    if (args->format == Format::Ele && (args->output.empty() || args->output == "-")) {
+        throw UsageError("--format ele writes FILE.ele and FILE.node: give -o FILE.ele");
+    }
+    if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    return true;
+}
+
+std::string source_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+/// Every point of `path` (any format hullkit reads), or a UsageError naming the file.
+std::vector<double> read_cloud(const std::string& path, unsigned threads, bool quiet) {
+    std::FILE* file = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+    if (!file) throw UsageError(path + ": cannot open: " + std::strerror(errno));
+    struct Closer {
+        std::FILE* file;
+        ~Closer() {
+            if (file != stdin) std::fclose(file);
+        }
+    } closer{file};
+    hullkit::PointReaderOptions options;
+    options.threads = threads;
+    hullkit::PointReader reader(file, source_name(path), options);
+    std::vector<double> xyz;
+    if (reader.declared_points()) xyz.reserve(3 * static_cast<std::size_t>(reader.declared_points()));
+    while (reader.append_next(&xyz)) {
+    }
+    if (!reader.error().empty()) throw UsageError(reader.error());
+    if (!quiet) print_warnings(source_name(path), reader.warnings());
+    return xyz;
+}
+
+/// Appends unsigned integers and separators to a growing buffer quickly (std::to_chars).
+struct TextOut {
+    std::string text;
+    void number(std::uint64_t value) {
+        char buffer[24];
+        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+        text.append(buffer, end);
+    }
+    void signed_number(std::int64_t value) {
+        char buffer[24];
+        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+        text.append(buffer, end);
+    }
+    void operator+=(const char* s) { text += s; }
+    void operator+=(char c) { text += c; }
+};
+
+/// JSON lists of index tuples: [[a,b,c],[...]].
+template <class Int>
+void json_tuples(TextOut& out, const std::vector<Int>& values, std::size_t arity) {
+    out += '[';
+    for (std::size_t i = 0; i < values.size(); i += arity) {
+        if (i) out += ',';
+        out += '[';
+        for (std::size_t k = 0; k < arity; ++k) {
+            if (k) out += ',';
+            out.signed_number(static_cast<std::int64_t>(values[i + k]));
+        }
+        out += ']';
+    }
+    out += ']';
+}
+
+std::string write_json(const hullkit::Delaunay3& d) {
+    TextOut out;
+    out.text.reserve(80 * d.tetrahedron_count() + 64);
+    out += "{\"dimension\":";
+    out.signed_number(d.dimension);
+    if (d.dimension == 3) {
+        out += ",\"tetrahedra\":";
+        json_tuples(out, d.tetrahedra, 4);
+        out += ",\"neighbors\":";
+        json_tuples(out, d.neighbors, 4);
+        out += ",\"hull\":";
+        json_tuples(out, d.hull, 3);
+    } else if (d.dimension == 2) {
+        out += ",\"triangles\":";
+        json_tuples(out, d.triangles, 3);
+        out += ",\"neighbors\":";
+        json_tuples(out, d.neighbors, 3);
+        out += ",\"normal\":[";
+        for (int k = 0; k < 3; ++k) {
+            if (k) out += ',';
+            out.text += hullkit::format_double(d.normal[k]);
+        }
+        out += ']';
+    } else {
+        out += ",\"vertices\":";
+        json_tuples(out, d.vertices, 1);
+    }
+    out += ",\"duplicates\":[";
+    bool first = true;
+    for (std::size_t i = 0; i < d.representative.size(); ++i) {
+        if (d.representative[i] == i) continue;
+        if (!first) out += ',';
+        first = false;
+        out += '[';
+        out.number(i);
+        out += ',';
+        out.number(d.representative[i]);
+        out += ']';
+    }
+    out += "]}\n";
+    return std::move(out.text);
+}
+
+/// TetGen's .node: "N 3 0 0" then "i x y z", numbered from 1.
+std::string write_node(const std::vector<double>& xyz) {
+    TextOut out;
+    const std::size_t n = xyz.size() / 3;
+    out.number(n);
+    out += " 3 0 0\n";
+    for (std::size_t i = 0; i < n; ++i) {
+        out.number(i + 1);
+        for (int k = 0; k < 3; ++k) {
+            out += ' ';
+            out.text += hullkit::format_double(xyz[3 * i + k]);
+        }
+        out += '\n';
+    }
+    return std::move(out.text);
+}
+
+/// TetGen's .ele: "T 4 0" then "t a b c d", numbered from 1 (tetrahedra and nodes alike).
+std::string write_ele(const hullkit::Delaunay3& d) {
+    TextOut out;
+    out.text.reserve(48 * d.tetrahedron_count() + 32);
+    out.number(d.tetrahedron_count());
+    out += " 4 0\n";
+    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
+        out.number(t + 1);
+        for (int k = 0; k < 4; ++k) {
+            out += ' ';
+            out.number(std::uint64_t{d.tetrahedra[4 * t + k]} + 1);
+        }
+        out += '\n';
+    }
+    return std::move(out.text);
+}
+
+/// Legacy VTK, an unstructured grid: every input point, then the tetrahedra (cell type 10), or the
+/// triangles of coplanar input (type 5).
+std::string write_vtk(const std::vector<double>& xyz, const hullkit::Delaunay3& d) {
+    TextOut out;
+    const std::size_t n = xyz.size() / 3;
+    out += "# vtk DataFile Version 3.0\nhullkit delaunay3\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS ";
+    out.number(n);
+    out += " double\n";
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            if (k) out += ' ';
+            out.text += hullkit::format_double(xyz[3 * i + k]);
+        }
+        out += '\n';
+    }
+    const bool solid = d.dimension == 3;
+    const std::vector<std::uint32_t>& cells = solid ? d.tetrahedra : d.triangles;
+    const std::size_t arity = solid ? 4 : 3;
+    const std::size_t count = cells.size() / arity;
+    out += "CELLS ";
+    out.number(count);
+    out += ' ';
+    out.number(count * (arity + 1));
+    out += '\n';
+    for (std::size_t c = 0; c < count; ++c) {
+        out.number(arity);
+        for (std::size_t k = 0; k < arity; ++k) {
+            out += ' ';
+            out.number(cells[arity * c + k]);
+        }
+        out += '\n';
+    }
+    out += "CELL_TYPES ";
+    out.number(count);
+    out += '\n';
+    for (std::size_t c = 0; c < count; ++c) out += solid ? "10\n" : "5\n";
+    return std::move(out.text);
+}
+
+/// "FILE.ele" -> "FILE.node" (any other name gets ".node" appended).
+std::string node_path_of(const std::string& ele) {
+    const std::size_t dot = ele.find_last_of("./");
+    if (dot != std::string::npos && ele[dot] == '.') return ele.substr(0, dot) + ".node";
+    return ele + ".node";
+}
+
+int delaunay3_main(const std::vector<std::string>& argv) {
+    Delaunay3Args args;
+    if (!parse_args(argv, &args)) return kExitOk;
+    const std::vector<double> xyz = read_cloud(args.input, args.threads, args.quiet);
+    hullkit::Delaunay3Options options;
+    options.threads = args.threads;
+    hullkit::Delaunay3 result;
+    const auto start = std::chrono::steady_clock::now();
+    {
+        Progress progress("points", 0, args.quiet);
+        options.progress = [&progress](std::size_t done, std::size_t total) {
+            progress.set_total(total);
+            progress.update(done);
+        };
+        result = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), xyz.size() / 3), options);
+    }
+    const auto stop = std::chrono::steady_clock::now();
+    if (!result.ok()) throw UsageError(source_name(args.input) + ": " + result.error);
+    switch (args.format) {
+        case Format::Json: write_output(args.output, write_json(result)); break;
+        case Format::Vtk: write_output(args.output, write_vtk(xyz, result)); break;
+        case Format::Ele:
+            if (result.dimension != 3) {
+                throw UsageError(source_name(args.input) + ": the points are " +
+                                 (result.dimension == 2 ? "coplanar" : "not spread in 3D") +
+                                 ": there are no tetrahedra for a .ele file (use --format json or vtk)");
+            }
+            write_output(node_path_of(args.output), write_node(xyz));
+            write_output(args.output, write_ele(result));
+            break;
+    }
+    if (args.stats) {
+        const unsigned threads = args.threads ? args.threads : std::max(1u, std::thread::hardware_concurrency());
+        std::fprintf(stderr,
+                     "{\"points\":%zu,\"tetrahedra\":%zu,\"hull\":%zu,\"dimension\":%d,\"threads\":%u,\"seconds\":%.9g}\n",
+                     xyz.size() / 3, result.tetrahedron_count(), result.hull.size() / 3, result.dimension, threads,
+                     std::chrono::duration<double>(stop - start).count());
+    }
+    return kExitOk;
+}
+
+// ---- verify-delaunay3 ----
+
+/// The tetrahedra of a `hullkit delaunay3` JSON file (0-based).
+std::vector<std::uint32_t> read_json_tetrahedra(const std::string& text, const std::string& source) {
+    const std::size_t key = text.find("\"tetrahedra\"");
+    if (key == std::string::npos) throw UsageError(source + ": no \"tetrahedra\" list (the JSON of 'hullkit delaunay3')");
+    std::size_t at = text.find('[', key);
+    if (at == std::string::npos) throw UsageError(source + ": \"tetrahedra\" is not a list");
+    std::vector<std::uint32_t> out;
+    int depth = 0;
+    for (; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c == '[') {
+            ++depth;
+        } else if (c == ']') {
+            if (--depth == 0) break;
+        } else if (c >= '0' && c <= '9') {
+            std::uint64_t value = 0;
+            const auto [end, ec] = std::from_chars(text.data() + at, text.data() + text.size(), value);
+            if (ec != std::errc() || value > 0xffffffffu) throw UsageError(source + ": an index in \"tetrahedra\" is too large");
+            out.push_back(static_cast<std::uint32_t>(value));
+            at = static_cast<std::size_t>(end - text.data()) - 1;
+        } else if (c != ',' && c != ' ' && c != '\n' && c != '\r' && c != '\t') {
+            throw UsageError(source + ": unexpected \"" + std::string(1, c) + "\" in \"tetrahedra\"");
+        }
+    }
+    if (depth != 0) throw UsageError(source + ": the \"tetrahedra\" list is not closed");
+    if (out.size() % 4) throw UsageError(source + ": \"tetrahedra\" holds " + std::to_string(out.size()) + " indices, not quadruples");
+    return out;
+}
+
+/// The first node number of a TetGen .node file (0 or 1), or 1 when there is none.
+std::uint64_t node_base(const std::string& node_path) {
+    std::string text, error;
+    if (!hullkit::read_file(node_path, &text, &error)) return 1;
+    std::size_t line_start = 0;
+    int content_lines = 0;
+    while (line_start < text.size()) {
+        std::size_t end = text.find('\n', line_start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(line_start, end - line_start);
+        line_start = end + 1;
+        const std::size_t hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        if (++content_lines == 2) return std::stoull(line.substr(line.find_first_not_of(" \t")));
+    }
+    return 1;
+}
+
+/// The tetrahedra of a TetGen .ele file, made 0-based.
+std::vector<std::uint32_t> read_ele(const std::string& text, const std::string& source, std::uint64_t base) {
+    std::vector<std::uint32_t> out;
+    std::size_t line_start = 0, line_number = 0;
+    bool header = true;
+    std::uint64_t declared = 0, per = 4;
+    while (line_start < text.size()) {
+        std::size_t end = text.find('\n', line_start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(line_start, end - line_start);
+        line_start = end + 1;
+        ++line_number;
+        const std::size_t hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        std::vector<std::uint64_t> fields;
+        const char* p = line.data();
+        const char* stop = p + line.size();
+        while (p < stop) {
+            while (p < stop && (*p == ' ' || *p == '\t' || *p == '\r')) ++p;
+            if (p == stop) break;
+            std::uint64_t value = 0;
+            const auto [next, ec] = std::from_chars(p, stop, value);
+            if (ec != std::errc()) throw UsageError(source + ":" + std::to_string(line_number) + ": not a whole number");
+            fields.push_back(value);
+            p = next;
+        }
+        if (fields.empty()) continue;
+        if (header) {
+            declared = fields[0];
+            per = fields.size() > 1 ? fields[1] : 4;
+            if (per != 4) throw UsageError(source + ": " + std::to_string(per) + " nodes per tetrahedron (only 4 are read)");
+            header = false;
+            continue;
+        }
+        if (fields.size() < 5) throw UsageError(source + ":" + std::to_string(line_number) + ": fewer than 4 nodes");
+        for (int k = 1; k <= 4; ++k) {
+            if (fields[k] < base || fields[k] - base > 0xffffffffu) {
+                throw UsageError(source + ":" + std::to_string(line_number) + ": node " + std::to_string(fields[k]) +
+                                 " is below the first node number " + std::to_string(base));
+            }
+            out.push_back(static_cast<std::uint32_t>(fields[k] - base));
+        }
+    }
+    if (out.size() / 4 != declared) {
+        throw UsageError(source + ": the header declares " + std::to_string(declared) + " tetrahedra, the file holds " +
+                         std::to_string(out.size() / 4));
+    }
+    return out;
+}
+
+int verify_main(const std::vector<std::string>& argv) {
+    CLI::App app{"hullkit verify-delaunay3", "hullkit verify-delaunay3"};
+    app.set_help_flag();
+    bool help = false;
+    std::vector<std::string> files;
+    app.add_flag("-h,--help", help);
+    app.add_option("files", files);
+    parse_or_throw(app, argv, "verify-delaunay3");
+    if (help) {
+        std::fputs(kVerifyDelaunay3Usage, stdout);
+        return kExitOk;
+    }
+    if (files.size() != 2) {
+        throw UsageError("verify-delaunay3 needs two files, POINTS and TETRAHEDRA, got " + std::to_string(files.size()) +
+                         " (try 'hullkit verify-delaunay3 --help')");
+    }
+    if (files[1] == "-") throw UsageError("TETRAHEDRA must be a file ('-' is allowed for POINTS only)");
+    const std::vector<double> xyz = read_cloud(files[0], 0, false);
+    const std::string text = read_input(files[1]);
+    Format format = Format::Json;
+    format_from_path(files[1], &format);
+    const std::vector<std::uint32_t> tets =
+        format == Format::Ele ? read_ele(text, files[1], node_base(node_path_of(files[1]))) : read_json_tetrahedra(text, files[1]);
+    const hullkit::Delaunay3VerifyReport report =
+        hullkit::verify_delaunay3(hullkit::PointSpan(xyz.data(), xyz.size() / 3), tets.data(), tets.size() / 4);
+    if (report.ok) {
+        std::printf("ok: %zu points (%zu distinct), %zu tetrahedra, %zu hull triangles\n", xyz.size() / 3,
+                    report.distinct_points, tets.size() / 4, report.hull_triangles);
+        return kExitOk;
+    }
+    for (const std::string& line : report.problems) std::printf("%s\n", line.c_str());
+    std::printf("not a Delaunay tetrahedralization: %zu problem%s\n", report.problem_count,
+                report.problem_count == 1 ? "" : "s");
+    return 1;
+}
+
+}  // namespace
+
+int run_delaunay3(const std::vector<std::string>& args) {
+    try {
+        return delaunay3_main(args);
+    } catch (const UsageError& error) {
+        return print_usage_error(error.what());
+    }
+}
+
+int run_verify_delaunay3(const std::vector<std::string>& args) {
+    try {
+        const int status = verify_main(args);
+        if (std::fflush(stdout) != 0) throw UsageError(std::string("<stdout>: cannot write: ") + std::strerror(errno));
+        return status;
+    } catch (const UsageError& error) {
+        return print_usage_error(error.what());
+    }
+}
+
+}  // namespace hullkit_cli

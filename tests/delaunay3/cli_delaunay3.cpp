@@ -1,0 +1,176 @@
+// Tests of the `hullkit delaunay3` and `hullkit verify-delaunay3` commands (the built binary,
+// HULLKIT_CLI_PATH): each output format read back (JSON parsed, .ele/.node re-read, VTK counted) and
+// the tetrahedra checked by the library's verifier and against the library call; errors name the
+// file and line; verify-delaunay3 accepts good tetrahedra and rejects broken ones.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/cli_support.hpp"
+#include "hullkit/delaunay3.hpp"
+
+namespace {
+
+using hullkit_test::RunResult;
+using hullkit_test::TempDir;
+using hullkit_test::read_text;
+using hullkit_test::run_cli;
+using hullkit_test::write_text;
+
+/// Random points as "x y z" lines (printed with 17 digits, so they read back exactly).
+std::vector<double> write_cloud(const std::string& path, std::size_t n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<double> xyz(3 * n);
+    std::ostringstream text;
+    text.precision(17);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            xyz[3 * i + k] = u(rng);
+            text << xyz[3 * i + k] << (k == 2 ? "\n" : " ");
+        }
+    }
+    write_text(path, text.str());
+    return xyz;
+}
+
+std::vector<std::uint32_t> flatten(const nlohmann::json& list) {
+    std::vector<std::uint32_t> out;
+    for (const auto& tuple : list)
+        for (const auto& v : tuple) out.push_back(v.get<std::uint32_t>());
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("hullkit delaunay3: JSON output is the library's tetrahedralization", "[delaunay3][cli]") {
+    TempDir dir("hk-d3");
+    const std::vector<double> xyz = write_cloud(dir.file("points.txt"), 400, 1);
+    const RunResult r = run_cli(dir, {"delaunay3", dir.file("points.txt"), "--stats"});
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    REQUIRE(j["dimension"] == 3);
+    const hullkit::Delaunay3 d = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 400));
+    REQUIRE(flatten(j["tetrahedra"]) == d.tetrahedra);
+    REQUIRE(flatten(j["hull"]) == d.hull);
+    std::vector<std::int32_t> neighbors;
+    for (const auto& tuple : j["neighbors"])
+        for (const auto& v : tuple) neighbors.push_back(v.get<std::int32_t>());
+    REQUIRE(neighbors == d.neighbors);
+    REQUIRE(j["duplicates"].empty());
+    const nlohmann::json stats = nlohmann::json::parse(r.err);
+    REQUIRE(stats["points"] == 400);
+    REQUIRE(stats["tetrahedra"] == d.tetrahedron_count());
+    REQUIRE(stats["hull"] == d.hull.size() / 3);
+    REQUIRE(stats["seconds"].get<double>() >= 0);
+    // And it verifies.
+    write_text(dir.file("tets.json"), r.out);
+    const RunResult v = run_cli(dir, {"verify-delaunay3", dir.file("points.txt"), dir.file("tets.json")});
+    REQUIRE(v.exit_code == 0);
+    REQUIRE(v.out.rfind("ok: 400 points", 0) == 0);
+}
+
+TEST_CASE("hullkit delaunay3: TetGen .ele and .node, VTK, and verification of the .ele", "[delaunay3][cli]") {
+    TempDir dir("hk-d3");
+    const std::vector<double> xyz = write_cloud(dir.file("points.txt"), 300, 2);
+    REQUIRE(run_cli(dir, {"delaunay3", dir.file("points.txt"), "-o", dir.file("mesh.ele")}).exit_code == 0);
+    const hullkit::Delaunay3 d = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 300));
+    std::istringstream ele(read_text(dir.file("mesh.ele")));
+    std::size_t count = 0, per = 0, attributes = 1;
+    ele >> count >> per >> attributes;
+    REQUIRE(count == d.tetrahedron_count());
+    REQUIRE(per == 4);
+    REQUIRE(attributes == 0);
+    for (std::size_t t = 0; t < count; ++t) {
+        std::size_t number = 0;
+        ele >> number;
+        REQUIRE(number == t + 1);
+        for (int k = 0; k < 4; ++k) {
+            std::uint64_t node = 0;
+            ele >> node;
+            REQUIRE(node == d.tetrahedra[4 * t + k] + 1);
+        }
+    }
+    std::istringstream node(read_text(dir.file("mesh.node")));
+    std::size_t nodes = 0, dim = 0, a = 1, b = 1;
+    node >> nodes >> dim >> a >> b;
+    REQUIRE(nodes == 300);
+    REQUIRE(dim == 3);
+    for (std::size_t i = 0; i < nodes; ++i) {
+        std::size_t number = 0;
+        double x, y, z;
+        node >> number >> x >> y >> z;
+        REQUIRE(number == i + 1);
+        REQUIRE(x == xyz[3 * i]);
+        REQUIRE(z == xyz[3 * i + 2]);
+    }
+    REQUIRE(run_cli(dir, {"verify-delaunay3", dir.file("points.txt"), dir.file("mesh.ele")}).exit_code == 0);
+    // A broken .ele: one tetrahedron's corners swapped (negative orientation).
+    std::string text = read_text(dir.file("mesh.ele"));
+    std::istringstream lines(text);
+    std::string header, first;
+    std::getline(lines, header);
+    std::getline(lines, first);
+    std::istringstream fields(first);
+    std::string n0, c0, c1, c2, c3;
+    fields >> n0 >> c0 >> c1 >> c2 >> c3;
+    const std::string swapped = n0 + " " + c1 + " " + c0 + " " + c2 + " " + c3;
+    text.replace(text.find(first), first.size(), swapped);
+    write_text(dir.file("broken.ele"), text);
+    write_text(dir.file("broken.node"), read_text(dir.file("mesh.node")));
+    const RunResult bad = run_cli(dir, {"verify-delaunay3", dir.file("points.txt"), dir.file("broken.ele")});
+    REQUIRE(bad.exit_code == 1);
+    REQUIRE(bad.out.find("negatively oriented") != std::string::npos);
+
+    REQUIRE(run_cli(dir, {"delaunay3", dir.file("points.txt"), "-o", dir.file("mesh.vtk")}).exit_code == 0);
+    const std::string vtk = read_text(dir.file("mesh.vtk"));
+    REQUIRE(vtk.rfind("# vtk DataFile Version 3.0\n", 0) == 0);
+    REQUIRE(vtk.find("POINTS 300 double\n") != std::string::npos);
+    REQUIRE(vtk.find("CELLS " + std::to_string(count) + " " + std::to_string(5 * count) + "\n") != std::string::npos);
+    REQUIRE(vtk.find("CELL_TYPES " + std::to_string(count) + "\n") != std::string::npos);
+}
+
+TEST_CASE("hullkit delaunay3: lower dimensions and duplicates in JSON", "[delaunay3][cli]") {
+    TempDir dir("hk-d3");
+    write_text(dir.file("plane.txt"), "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n1 0 0\n");
+    const RunResult r = run_cli(dir, {"delaunay3", dir.file("plane.txt")});
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    REQUIRE(j["dimension"] == 2);
+    REQUIRE(j["triangles"].size() == 4);
+    REQUIRE(j["normal"] == nlohmann::json::array({0, 0, 1}));
+    REQUIRE(j["duplicates"] == nlohmann::json::parse("[[5,1]]"));
+    write_text(dir.file("line.txt"), "2 2 2\n0 0 0\n1 1 1\n");
+    const nlohmann::json l = nlohmann::json::parse(run_cli(dir, {"delaunay3", dir.file("line.txt")}).out);
+    REQUIRE(l["dimension"] == 1);
+    REQUIRE(l["vertices"] == nlohmann::json::parse("[[1],[2],[0]]"));
+    // No tetrahedra for a .ele file.
+    const RunResult ele = run_cli(dir, {"delaunay3", dir.file("plane.txt"), "-o", dir.file("x.ele")});
+    REQUIRE(ele.exit_code == 2);
+    REQUIRE(ele.err.find("coplanar") != std::string::npos);
+}
+
+TEST_CASE("hullkit delaunay3: usage and input errors", "[delaunay3][cli]") {
+    TempDir dir("hk-d3");
+    write_text(dir.file("bad.txt"), "0 0 0\n1 0 0\n0 nan 0\n");
+    const RunResult nan = run_cli(dir, {"delaunay3", dir.file("bad.txt")});
+    REQUIRE(nan.exit_code == 2);
+    REQUIRE(nan.err.find(dir.file("bad.txt") + ":3") != std::string::npos);
+    REQUIRE(run_cli(dir, {"delaunay3", "--format", "xml"}).err == "hullkit: unknown format \"xml\" (known: json, ele, vtk)\n");
+    REQUIRE(run_cli(dir, {"delaunay3", "--format", "ele"}).exit_code == 2);
+    REQUIRE(run_cli(dir, {"delaunay3", "--bogus"}).exit_code == 2);
+    REQUIRE(run_cli(dir, {"delaunay3", dir.file("missing.txt")}).err.find("missing.txt: cannot open") != std::string::npos);
+    const RunResult help = run_cli(dir, {"delaunay3", "--help"});
+    REQUIRE(help.exit_code == 0);
+    REQUIRE(help.out.rfind("Usage: hullkit delaunay3", 0) == 0);
+    REQUIRE(run_cli(dir, {"verify-delaunay3", dir.file("bad.txt")}).exit_code == 2);
+    write_text(dir.file("t.json"), "{\"tetrahedra\":[[0,1,2]]}");
+    write_text(dir.file("ok.txt"), "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+    REQUIRE(run_cli(dir, {"verify-delaunay3", dir.file("ok.txt"), dir.file("t.json")}).err.find("not quadruples") !=
+            std::string::npos);
+}
