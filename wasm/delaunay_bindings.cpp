@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "embind_views.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/giftwrap.hpp"
 
@@ -65,10 +66,7 @@ hullkit::VoronoiCells voronoi_from_heap(std::uintptr_t xy, std::uint32_t count, 
 }
 
 // Views into the results' own vectors; the JS layer copies them out before deleting the result.
-template <typename T>
-val view_of(const std::vector<T>& values) {
-    return val(emscripten::typed_memory_view(values.size(), values.data()));
-}
+using hullkit_wasm::view_of;
 val triangles_view(const hullkit::Delaunay& d) { return view_of(d.triangles); }
 val halfedges_view(const hullkit::Delaunay& d) { return view_of(d.halfedges); }
 val hull_view(const hullkit::Delaunay& d) { return view_of(d.hull); }

@@ -201,6 +201,56 @@ export interface Hullkit {
    */
   delaunayGiftwrapTrace(xy: Float64Array | ArrayLike<number>): GiftwrapTrace;
   /**
+   * The Delaunay tetrahedralization of the 3D points `xyz`, a flat array x0 y0 z0 x1 y1 z1 ... (a
+   * Float64Array is used as it is; an array of numbers is converted; an array of [x, y, z] or
+   * {x, y, z} points is refused with a TypeError saying to flatten it): tetrahedra whose
+   * circumspheres hold no input point, filling the convex hull. Every decision is made by exact
+   * orient3d and insphere tests on the input coordinates. Cospherical points (grids, lattices,
+   * points on a sphere) are tetrahedralized by one rule that depends only on the points (Devillers
+   * and Teillaud's symbolic perturbation, each point's lift raised by an infinitesimal that grows
+   * with its place in (x, y, z) order; CGAL's default), so no tetrahedron is flat and the same
+   * points give the same tetrahedra in any order, natively and in WebAssembly. Degenerate input is a value, not an error: duplicates
+   * are merged (`representative`); coplanar points give `triangles`, collinear points or a single
+   * distinct point give `vertices` (see {@link Delaunay3Result.dimension}).
+   * The WebAssembly build runs on the calling thread (the native library's `threads` gives the same
+   * arrays); about 250 bytes of WebAssembly memory per point at the peak.
+   *
+   * @example
+   * const { tetrahedra, neighbors, hull } = hullkit.delaunay3(xyz);
+   * for (let t = 0; t < tetrahedra.length / 4; t++) {
+   *   const [a, b, c, d] = tetrahedra.subarray(4 * t, 4 * t + 4); // orient3d(a, b, c, d) > 0
+   *   const across = neighbors[4 * t + 3]; // the tetrahedron sharing face (a, b, c), or -1
+   * }
+   *
+   * @throws {HullkitError} for a coordinate count that is not a multiple of 3, a non-finite
+   *   coordinate ("delaunay3: point 3 has a non-finite y coordinate (nan)", `pointIndex` 3),
+   *   magnitudes the exact predicates cannot take after rescaling (the message names the smallest
+   *   and largest point), an unknown option or a `progress` that is not a function. An exception
+   *   thrown by `progress` is rethrown once the tetrahedralization has finished.
+   * @throws {TypeError} for points that are not a Float64Array or an array of numbers.
+   */
+  delaunay3(xyz: Float64Array | ArrayLike<number>, options?: Delaunay3Options): Delaunay3Result;
+  /**
+   * Checks exactly that `tetrahedra` (4 indices each, as {@link Delaunay3Result.tetrahedra}, from
+   * hullkit or elsewhere, e.g. a TetGen .ele's rows with 1 subtracted) is the Delaunay tetrahedralization of the
+   * distinct points of `xyz`: indices in range, every tetrahedron positively oriented (none flat),
+   * each face shared by at most two tetrahedra lying on opposite sides, the boundary faces a closed
+   * convex surface (the convex hull's), every distinct point a vertex, Euler's V - E + F - T = 1,
+   * and every interior face locally Delaunay by the exact in-sphere test; with `perturbed` (the
+   * default) ties must also go as {@link Hullkit.delaunay3}'s rule decides, which makes the answer
+   * unique. Only for points that span 3D: coplanar points have no tetrahedra to check.
+   * Problems are reported in the returned value, not thrown.
+   *
+   * @throws {HullkitError} only for malformed arguments (a coordinate count that is not a multiple
+   *   of 3, an index count that is not a multiple of 4, an entry that is not a non-negative
+   *   integer, an unknown option); TypeError for arguments that are not arrays.
+   */
+  verifyDelaunay3(
+    xyz: Float64Array | ArrayLike<number>,
+    tetrahedra: Uint32Array | ArrayLike<number>,
+    options?: VerifyDelaunay3Options,
+  ): Delaunay3VerifyReport;
+  /**
    * Checks a traverse moved along the scene's route against its obstacles, one check per leg. A
    * straight translation: the convex hull of each part at both ends of a leg contains all it
    * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
@@ -368,6 +418,92 @@ export interface VoronoiCells {
   cellOffsets: Uint32Array;
   /** The cells' corners, x y pairs. */
   cellXY: Float64Array;
+}
+
+export interface Delaunay3Options {
+  /**
+   * Called on the calling thread as points are inserted: `pointsDone` of `total` after each round
+   * of the insertion (rounds double in size; the last holds half the points), the last call with
+   * `pointsDone === total`. Not called when the points do not span 3D or the plane.
+   */
+  progress?: (pointsDone: number, total: number) => void;
+}
+
+/**
+ * A Delaunay tetrahedralization. Every field is always present; the arrays a `dimension` does not
+ * use are empty. Indices are input indices; a duplicate point never appears, its
+ * `representative` does.
+ */
+export interface Delaunay3Result {
+  /**
+   * The dimension of the points' affine hull: 3 tetrahedra; 2 all points on one plane
+   * (`triangles`); 1 all on one line (`vertices`); 0 one distinct point (`vertices` holds it);
+   * -1 no points.
+   */
+  dimension: 3 | 2 | 1 | 0 | -1;
+  /**
+   * Dimension 3: four indices per tetrahedron, positively oriented: orient3d(a, b, c, d) > 0, that
+   * is d lies on the side the normal (b - a) × (c - a) points to (a, b, c counter-clockwise seen
+   * from d). Each starts at its lowest index; no tetrahedron is flat.
+   */
+  tetrahedra: Uint32Array;
+  /**
+   * Dimension 3: four per tetrahedron, `neighbors[4 * t + k]` the tetrahedron sharing the face
+   * opposite corner k of tetrahedron t, or -1 where that face is on the hull (scipy's convention).
+   * Dimension 2: three per triangle, the triangle across the edge opposite corner k, -1 on the
+   * boundary.
+   */
+  neighbors: Int32Array;
+  /**
+   * Dimension 3: the convex hull's triangles, three indices each, counter-clockwise seen from
+   * outside: exactly the faces whose `neighbors` entry is -1 (coplanar hull faces triangulated by
+   * the same tie rule), each starting at its lowest index, sorted.
+   */
+  hull: Uint32Array;
+  /**
+   * Dimension 2: the points' 2D Delaunay triangulation in their plane, three indices per triangle,
+   * counter-clockwise seen from the side `normal` points to.
+   */
+  triangles: Uint32Array;
+  /** Dimension 1: the distinct points in order along their line; dimension 0: the one point. */
+  vertices: Uint32Array;
+  /**
+   * Dimension 2: the plane's unit normal (rounded), pointing to the side where its largest
+   * component (x before y before z on ties) is positive; [0, 0, 0] otherwise.
+   */
+  normal: Float64Array;
+  /**
+   * For each input point, the index that stands for it: itself, or the lowest index with exactly
+   * the same coordinates (duplicates are merged, never dropped silently).
+   */
+  representative: Uint32Array;
+  /** How many points are duplicates (`representative[i] !== i`). */
+  duplicateCount: number;
+}
+
+export interface VerifyDelaunay3Options {
+  /**
+   * true (default): cospherical ties must be decided as {@link Hullkit.delaunay3} decides them, so
+   * only hullkit's tetrahedralization passes. false: any Delaunay tetrahedralization passes (for
+   * checking another library's output).
+   */
+  perturbed?: boolean;
+}
+
+export interface Delaunay3VerifyReport {
+  /** True when nothing is wrong. */
+  ok: boolean;
+  /**
+   * Up to 40 problems, one line each naming what and where, e.g. "point 7 is inside the
+   * circumsphere of tetrahedron 12 (0 3 5 9)".
+   */
+  problems: string[];
+  /** How many problems were found in all. */
+  problemCount: number;
+  /** The distinct points (duplicates counted once). */
+  distinctPoints: number;
+  /** The boundary faces: the convex hull's triangles. */
+  hullTriangles: number;
 }
 
 export interface VerifyReport {

@@ -3,6 +3,7 @@
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
 import { delaunay, delaunayFind, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
+import { delaunay3, verifyDelaunay3 } from './delaunay3.js';
 import { checkRoute, RouteChecker } from './route.js';
 
 export { HullkitError };
@@ -42,6 +43,8 @@ export default async function createHullkit() {
     find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
+    delaunay3: (xyz, options) => delaunay3(core, xyz, options),
+    verifyDelaunay3: (xyz, tetrahedra, options) => verifyDelaunay3(core, xyz, tetrahedra, options),
     checkRoute: (scene, options) => checkRoute(core, scene, options),
     RouteChecker: class extends RouteChecker {
       constructor(scene, options) {

@@ -29,13 +29,39 @@ export function exactPoints(xyz) {
   return points;
 }
 
-/** Sign of ((b-a) x (c-a)) . (d-a) for BigInt points. */
-export function orient3d(a, b, c, d) {
+const sign = (value) => (value > 0n ? 1 : value < 0n ? -1 : 0);
+
+/** ((b-a) x (c-a)) . (d-a) for BigInt points: six times the signed volume of a, b, c, d. */
+export function orient3dDeterminant(a, b, c, d) {
   const [bx, by, bz] = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
   const [cx, cy, cz] = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
   const [dx, dy, dz] = [d[0] - a[0], d[1] - a[1], d[2] - a[2]];
-  const det = dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
-  return det > 0n ? 1 : det < 0n ? -1 : 0;
+  return dx * (by * cz - bz * cy) + dy * (bz * cx - bx * cz) + dz * (bx * cy - by * cx);
+}
+
+/** Sign of ((b-a) x (c-a)) . (d-a) for BigInt points: > 0 when d is on the side the normal points to. */
+export function orient3d(a, b, c, d) {
+  return sign(orient3dDeterminant(a, b, c, d));
+}
+
+/**
+ * For BigInt points with orient3d(a, b, c, d) > 0: 1 when e is strictly inside the sphere through
+ * a, b, c and d, 0 on it, -1 outside (the 4x4 determinant of the points lifted to the paraboloid,
+ * relative to e).
+ */
+export function insphere(a, b, c, d, e) {
+  const rows = [a, b, c, d].map((p) => {
+    const [x, y, z] = [p[0] - e[0], p[1] - e[1], p[2] - e[2]];
+    return [x, y, z, x * x + y * y + z * z];
+  });
+  const det3 = ([p, q, r]) => p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) + p[2] * (q[0] * r[1] - q[1] * r[0]);
+  let det = 0n;
+  for (let i = 0; i < 4; i++) {
+    const minor = rows.filter((_, j) => j !== i);
+    det += (i % 2 === 0 ? -1n : 1n) * rows[i][3] * det3(minor);
+  }
+  // With this expansion a point inside a positively oriented tetrahedron's sphere gives det < 0.
+  return sign(-det);
 }
 
 /** Problems with `hull` as the convex hull of `xyz` (closed, oriented, contains every point). */

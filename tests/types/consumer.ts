@@ -4,8 +4,8 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData, RouteChecker, RouteLeg, RouteReport, RouteWaypoint,
-  RouteScene, Vec3, VerifyReport, VoronoiCells,
+  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData,
+  RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, VoronoiCells,
 } from 'hullkit';
 
 function check(condition: boolean, what: string): void {
@@ -77,6 +77,26 @@ check(nearest === 3, 'find');
 const cells: VoronoiCells = hullkit.voronoi(xy, delaunay, [-1, -1, 2, 2]);
 check(cells.cellOffsets.length === xy.length / 2 + 1, 'voronoi');
 check(hullkit.delaunay(xy, { algorithm: 'giftwrap', mergeCocircular: true }).polygonOffsets !== undefined, 'polygons');
+
+// 3D Delaunay: the tetrahedra around the cube's corners and centre, the neighbour across a face, verify
+const cubeAndCentre = new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5]);
+let rounds = 0;
+const d3options: Delaunay3Options = { progress: (done: number, total: number) => { rounds += done <= total ? 1 : 0; } };
+const tetrahedralization: Delaunay3Result = hullkit.delaunay3(cubeAndCentre, d3options);
+const { tetrahedra, neighbors: across, hull: outside }: { tetrahedra: Uint32Array; neighbors: Int32Array; hull: Uint32Array } =
+  tetrahedralization;
+check(tetrahedralization.dimension === 3 && tetrahedra.length === 4 * 12 && outside.length === 3 * 12, 'delaunay3 of a cube and its centre');
+for (let t = 0; t < tetrahedra.length / 4; t++) {
+  const face = across[4 * t + 3] ?? -1; // the tetrahedron across the face opposite corner 3, or -1
+  check(face === -1 || (face >= 0 && face < tetrahedra.length / 4), 'delaunay3 neighbours');
+}
+check(rounds >= 1, 'delaunay3 progress');
+const planar: Delaunay3Result = hullkit.delaunay3([0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1]);
+const up: Float64Array = planar.normal;
+check(planar.dimension === 2 && planar.triangles.length === 6 && up[2] === 1 && planar.tetrahedra.length === 0, 'coplanar delaunay3');
+const checked: Delaunay3VerifyReport = hullkit.verifyDelaunay3(cubeAndCentre, tetrahedra, { perturbed: true });
+check(checked.ok && checked.problemCount === 0 && checked.distinctPoints === 9 && checked.hullTriangles === 12, 'verifyDelaunay3');
+check(tetrahedralization.duplicateCount === 0 && tetrahedralization.representative.length === 9, 'delaunay3 duplicates');
 
 // route checking: legs narrowed by their status
 const scene: RouteScene = {

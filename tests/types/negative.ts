@@ -16,6 +16,10 @@ const wrongType: Float64Array = hullkit.hull(xyz).triangles; // error
 hullkit.readMesh('cube.obj'); // error
 hullkit.delaunay(xyz, { algorithm: 'quickhull' }); // error
 hullkit.voronoi(xyz, { triangles: new Uint32Array(3) }, [0, 0, 1, 1]); // error
+hullkit.delaunay3([[0, 0, 0]]); // error
+hullkit.delaunay3(xyz, { threads: 2 }); // error
+const flat: Uint32Array = hullkit.delaunay3(xyz).neighbors; // error
+hullkit.verifyDelaunay3(xyz, hullkit.delaunay3(xyz)); // error
 const position = leg.position; // error
 if (leg.status === 'clear') {
   const fromClear = leg.position; // error
