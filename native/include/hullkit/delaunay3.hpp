@@ -104,6 +104,41 @@ struct Delaunay3 {
 /// names the smallest and largest point).
 Delaunay3 delaunay3(PointSpan points, const Delaunay3Options& options = {});
 
+/// Point location in a tetrahedralization (dimension 3), exact: which tetrahedron holds a point,
+/// its barycentric coordinates there, and the nearest input point.
+///
+/// A point on a face, edge or vertex is held by every tetrahedron around it: the one with the
+/// lowest index is reported, so the answer depends only on the point (not on where a walk began,
+/// nor on threads). Every decision is made by orient3d and compare_distance3d on the coordinates
+/// scaled as delaunay3() scales them; a query coordinate that is not finite, or outside the range
+/// in which they are exact after that scaling (kPredicateMinMagnitude .. kPredicateMaxMagnitude,
+/// about 1e-75 .. 1e100 at unit scale), is an error naming the query.
+struct Delaunay3QueryOptions {
+    bool barycentric = false;  ///< also the barycentric coordinates (4 per query)
+    bool nearest = false;      ///< also the nearest input point
+    /// Threads: 0 every hardware thread, 1 the calling thread; the answers are the same.
+    unsigned threads = 0;
+};
+struct Delaunay3Queries {
+    /// Per query: the tetrahedron holding it, -1 outside the convex hull.
+    std::vector<std::int32_t> tetrahedron;
+    /// With `barycentric`: 4 per query, the weights of the tetrahedron's corners (in its corner
+    /// order) that give the query point; they sum to 1 up to rounding, are exactly 0 for a corner
+    /// whose opposite face holds the point and exactly 1 at a corner; NaN outside the hull.
+    std::vector<double> barycentric;
+    /// With `nearest`: per query, the nearest input point (exact distances; ties: the lowest index).
+    std::vector<std::int32_t> nearest;
+    std::string error;            ///< empty on success; on failure the arrays are empty
+    std::int64_t error_query = -1;
+
+    bool ok() const { return error.empty(); }
+};
+/// Locates every query (a flat x y z array) in `triangulation`, the delaunay3() result for `points`.
+/// Queries are sorted along a Hilbert curve and each walk starts where the previous one ended, so
+/// many queries cost little more than one walk each; they are spread over the threads.
+Delaunay3Queries delaunay3_locate(PointSpan points, const Delaunay3& triangulation, PointSpan queries,
+                                  const Delaunay3QueryOptions& options = {});
+
 /// An exact check that `tetrahedra` (count index quadruples) is the Delaunay tetrahedralization
 /// of the distinct points of `points`: indices in range, every tetrahedron positively oriented
 /// (none flat), each face shared by at most two tetrahedra with opposite orientations, the boundary

@@ -68,6 +68,26 @@ Delaunay3 check_input(PointSpan points, Extent* extent) {
     return Delaunay3{};
 }
 
+}  // namespace
+
+namespace delaunay3_detail {
+
+bool scale_exponent_of(PointSpan points, int* exponent) {
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 3 * points.count; ++i) {
+        const double magnitude = std::fabs(points.xyz[i]);
+        if (!(magnitude <= std::numeric_limits<double>::max())) return false;
+        largest = std::max(largest, magnitude);
+        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+    }
+    *exponent = 0;
+    return insphere_scale_exponent(4.0 * largest, smallest, exponent);
+}
+
+}  // namespace delaunay3_detail
+
+namespace {
+
 /// Spreads the low 10 bits of v to every third bit.
 std::uint32_t spread3(std::uint32_t v) {
     v &= 0x3ffu;

@@ -86,6 +86,13 @@ private:
     double insphere_bound_;
 };
 
+/// Index along a 3D Hilbert curve on a 1024^3 grid (each coordinate below 1024).
+std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+
+/// The power of two delaunay3() scales `points` by (insphere's exact range, with room for the
+/// perturbation's helper point); false when there is none or a coordinate is not finite.
+bool scale_exponent_of(PointSpan points, int* exponent);
+
 /// Bowyer-Watson insertion of every point of `points` (round by round of points.order) into one
 /// mesh; the points must not be all coplanar. `threads` as Delaunay3Options::threads: the mesh is
 /// the same for every value. Returns the mesh, ghosts included (free slots have kFree as corner 3).
