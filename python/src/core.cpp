@@ -159,7 +159,8 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// scipy's ConvexHull extras for triangles (m, 3) of a closed (or open: -1 across the rim)
 /// oriented surface: neighbors[t][j], the triangle across the edge opposite corner j, found by
 /// matching each directed edge with its reverse through per-vertex lists (linear time); and
-/// equations[t], the outward unit normal and offset of t's plane (rounded).
+/// equations[t], the outward unit normal and offset of t's plane (hullkit::plane_equations, as
+/// `hullkit hull --normals` and the JS result's `equations` give them).
 py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
     const std::size_t n = rows(points, 3, "points");
     if (triangles.ndim() != 2 || triangles.shape(1) != 3) throw std::invalid_argument("triangles must have shape (m, 3)");
@@ -169,28 +170,15 @@ py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, 
         if (v[k] >= n) throw std::invalid_argument("triangle corner out of range");
     }
     std::vector<std::int32_t> neighbors(3 * m, -1);
-    std::vector<double> equations(4 * m);
+    std::vector<double> equations;
     const double* xyz = points.data();
     {
         py::gil_scoped_release unlocked;
         // The planes on a second thread, the neighbours on this one (the two write apart; each
         // value is computed the same way whichever thread computes it).
         JoinedThreads planes;
-        planes.threads.emplace_back([&] {
-            for (std::size_t t = 0; t < m; ++t) {
-                const double* a = xyz + 3 * v[3 * t];
-                const double* b = xyz + 3 * v[3 * t + 1];
-                const double* c = xyz + 3 * v[3 * t + 2];
-                const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-                const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-                double normal[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
-                const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-                for (double& x : normal) x /= length;
-                double* out = &equations[4 * t];
-                std::copy(normal, normal + 3, out);
-                out[3] = -(normal[0] * a[0] + normal[1] * a[1] + normal[2] * a[2]);
-            }
-        });
+        // (The corners were checked above: plane_equations cannot throw here.)
+        planes.threads.emplace_back([&] { equations = hullkit::plane_equations(hullkit::PointSpan(xyz, n), v, m); });
         // The half-edges grouped by their lower corner (a counting sort: one pass to count, one
         // to place, in ascending half-edge order), then within each corner's few by the higher
         // corner (stable): a half-edge and its reverse are then neighbours in the order, as in a
