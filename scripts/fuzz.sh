@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the readers, the hull and the Delaunay triangulation with clang's libFuzzer (Debian
+# Fuzzes the readers, the hull, the Delaunay triangulation and tetrahedralization with clang's libFuzzer (Debian
 # clang), each target for SECONDS (default 60), as many at once as there are cores
 # (HULLKIT_FUZZ_JOBS):
 #   bash scripts/fuzz.sh [SECONDS]
@@ -18,8 +18,11 @@
 #   fuzz_delaunay  delaunay() on bytes read as doubles or small integers, checked by
 #                  verify_delaunay(), against gift wrapping and merge_cocircular, and by
 #                  nearest-point queries
+#   fuzz_delaunay3 delaunay3() on bytes read as doubles or small integers, checked by
+#                  verify_delaunay3() (ties included), neighbours and hull faces, the reversed input,
+#                  and point location and nearest points at the input points
 # A failed check aborts. Each target is built in build/fuzz with -fsanitize=fuzzer,address,undefined
-# and linked with every library source (native/src/{exact,hull,io,delaunay,route}/; objects in
+# and linked with every library source (native/src/{exact,hull,io,delaunay,delaunay3,route}/; objects in
 # build/fuzz/obj named FOLDER_FILE.o, rebuilt when the source or any
 # header is newer; a target is relinked when its source, an object or a public header is newer). The
 # seed corpus is tests/data/ and all its subfolders (libFuzzer reads directories recursively; every

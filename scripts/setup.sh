@@ -11,6 +11,7 @@ debian_packages=(
   emscripten              # the wasm build (emcc, emcmake)
   catch2 libgmp-dev       # C++ tests (GMP: exact rational checks)
   libcgal-dev libmpfr-dev # the C++ tests' cross-check of delaunay3 against CGAL (header-only)
+  voro++                  # the C++ tests' cross-check of delaunay3's Voronoi cell volumes
   libglm-dev              # vector math
   nlohmann-json3-dev      # scene JSON (route checking)
   libcli11-dev            # command-line parsing

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "hullkit/giftwrap.hpp"
 #include "hullkit/hull.hpp"
@@ -42,6 +43,13 @@ val face_vertices_view(const hullkit::Hull& hull) {
     return val(emscripten::typed_memory_view(hull.face_vertices.size(), hull.face_vertices.data()));
 }
 val normal_view(const hullkit::Hull& hull) { return val(emscripten::typed_memory_view(3, hull.normal)); }
+// The plane of each of the hull's triangles (hullkit::plane_equations) of the points at `xyz` (still
+// in the heap), copied into a new Float64Array: nx ny nz offset per triangle.
+val hull_equations(std::uintptr_t xyz, std::uint32_t count, const hullkit::Hull& hull) {
+    const std::vector<double> planes =
+        hullkit::plane_equations(hullkit::PointSpan(reinterpret_cast<const double*>(xyz), count), hull);
+    return val::global("Float64Array").new_(val(emscripten::typed_memory_view(planes.size(), planes.data())));
+}
 bool hull_ok(const hullkit::Hull& hull) { return hull.ok(); }
 double error_point(const hullkit::Hull& hull) { return static_cast<double>(hull.error_point); }
 
@@ -128,6 +136,7 @@ EMSCRIPTEN_BINDINGS(hullkit) {
         .function("argsView", &trace_args_view)
         .function("trianglesView", &trace_triangles_view);
     emscripten::function("hullFromHeap", &hull_from_heap);
+    emscripten::function("hullEquations", &hull_equations);
     emscripten::function("giftwrapTraceFromHeap", &giftwrap_trace_from_heap);
     emscripten::function("giftwrapEventNames", &giftwrap_event_names);
     emscripten::function("verifyFromHeap", &verify_from_heap);

@@ -10,7 +10,7 @@ export { HullkitError };
 
 const ALGORITHMS = ['quickhull', 'giftwrap'];
 const EPSILONS = ['exact', 'seed'];
-const HULL_OPTIONS = ['algorithm', 'epsilon', 'mergeCoplanar'];
+const HULL_OPTIONS = ['algorithm', 'epsilon', 'mergeCoplanar', 'equations'];
 const SCANS = ['single-pass', 'restart'];
 /** giftwrapTrace refuses more points than this (single pass) / TRACE_MAX_RESTART (restart scan). */
 const TRACE_MAX_POINTS = 5000;
@@ -104,22 +104,28 @@ async function warmUp(core) {
 
 function hull(core, xyz, options = {}) {
   const points = toFloat64(xyz, 'hull');
-  const { algorithm = 'quickhull', epsilon = 'exact', mergeCoplanar = false } = checkOptions(options, HULL_OPTIONS, 'hull');
+  const { algorithm = 'quickhull', epsilon = 'exact', mergeCoplanar = false, equations = true } = checkOptions(options, HULL_OPTIONS, 'hull');
   if (!ALGORITHMS.includes(algorithm)) {
     throw new HullkitError(`hull: unknown algorithm "${algorithm}" (known: ${ALGORITHMS.join(', ')})`);
   }
   if (!EPSILONS.includes(epsilon)) {
     throw new HullkitError(`hull: unknown epsilon "${epsilon}" (known: ${EPSILONS.join(', ')})`);
   }
-  if (typeof mergeCoplanar !== 'boolean') {
-    throw new HullkitError(`hull: mergeCoplanar must be true or false, got ${String(mergeCoplanar)}`);
+  for (const [name, value] of [['mergeCoplanar', mergeCoplanar], ['equations', equations]]) {
+    if (typeof value !== 'boolean') throw new HullkitError(`hull: ${name} must be true or false, got ${String(value)}`);
   }
 
   const count = points.length / 3;
   const address = copyIn(core, points, 'hull');
   let result;
+  let planes = new Float64Array(0);
   try {
     result = core.hullFromHeap(address, count, algorithm, epsilon === 'seed', mergeCoplanar);
+    // The planes while the points are still in the heap.
+    if (equations && result.ok()) planes = core.hullEquations(address, count, result);
+  } catch (error) {
+    result?.delete();
+    throw error;
   } finally {
     core._free(address);
   }
@@ -131,6 +137,7 @@ function hull(core, xyz, options = {}) {
       dimension: result.dimension,
       triangles: result.trianglesView().slice(),
       vertices: result.verticesView().slice(),
+      equations: planes,
       volume: result.volume,
       area: result.area,
     };

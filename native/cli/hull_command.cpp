@@ -39,7 +39,7 @@ constexpr hullkit::Algorithm kAlgorithms[] = {hullkit::Algorithm::Quickhull,
                                               hullkit::Algorithm::Giftwrap};
 
 const char* const kHullUsage =
-    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format off|obj|json|xyz|glb] [--algorithm NAME]
+    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format off|obj|json|xyz|glb|normals] [--algorithm NAME]
                     [--merge-coplanar] [--epsilon exact|seed] [--threads N]
                     [--memory MB] [--vertices-only] [--stats] [--quiet]
 
@@ -62,9 +62,17 @@ Input formats, detected automatically ('#' starts a comment in all of them):
 
 Options:
   -o, --output FILE   write the hull to FILE instead of standard output
-  --format FORMAT     off (default), obj, json, xyz or glb (binary glTF: the
-                      coordinates rounded to float32); without --format, an
-                      output FILE ending in .obj, .json, .xyz or .glb selects it
+  --format FORMAT     off (default), obj, json, xyz, glb (binary glTF: the
+                      coordinates rounded to float32) or normals; without
+                      --format, an output FILE ending in .obj, .json, .xyz or
+                      .glb selects it. json: "points" (the hull's vertices),
+                      "triangles" and "faces" indexing "points", "vertices"
+                      (the input index of each point), "equations" (each
+                      triangle's nx ny nz offset), volume, area, dimension
+  --normals           the same as --format normals: each face's plane as
+                      qconvex's 'n' prints them: "4", the face count, then
+                      "nx ny nz offset" lines (outward unit normal; inside,
+                      n.x + offset <= 0)
   --vertices-only     the same as --format xyz: the hull's vertices alone, one
                       'x y z # INDEX' line each (INDEX: the point's input index),
                       which hullkit hull reads back as points: hull each part
@@ -190,11 +198,14 @@ HullArgs parse_hull_args(std::vector<std::string> argv) {
         } else if (is_option(arg, "--format")) {
             std::string name = cursor.value_of(arg, "--format");
             if (!hullkit::parse_output_format(name, &args.format)) {
-                throw CliError("unknown format \"" + name + "\" (known: off, obj, json, xyz, glb)");
+                throw CliError("unknown format \"" + name + "\" (known: off, obj, json, xyz, glb, normals)");
             }
             args.format_given = true;
         } else if (arg == "--vertices-only") {
             args.format = hullkit::OutputFormat::Xyz;
+            args.format_given = true;
+        } else if (arg == "--normals") {
+            args.format = hullkit::OutputFormat::Normals;
             args.format_given = true;
         } else if (is_option(arg, "--threads")) {
             args.threads = static_cast<unsigned>(parse_whole(cursor.value_of(arg, "--threads"), "--threads", 1024));

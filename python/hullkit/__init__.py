@@ -1,5 +1,5 @@
-"""hullkit: exact convex hulls in 3D, Delaunay triangulations in 2D and route checks with swept
-traverses, from hullkit's C++ core.
+"""hullkit: exact convex hulls in 3D, Delaunay triangulations in 2D and 3D and route checks with
+swept traverses, from hullkit's C++ core.
 
 Every decision is made by exact predicates, so flat, collinear, repeated and nearly degenerate
 inputs get an answer rather than an error. ``hullkit.spatial`` offers scipy.spatial's
@@ -17,7 +17,7 @@ from . import _core
 
 __all__ = [
     "HullkitError", "Hull", "hull", "verify", "HullBuilder", "Delaunay", "delaunay", "verify_delaunay",
-    "check_route", "RouteChecker", "read_points", "read_mesh",
+    "Delaunay3", "delaunay3", "verify_delaunay3", "check_route", "RouteChecker", "read_points", "read_mesh",
 ]
 __version__ = "0.1.0"
 
@@ -163,21 +163,32 @@ class HullBuilder:
 
 # ---- Delaunay ------------------------------------------------------------------------------------
 
-class Delaunay:
-    """A Delaunay triangulation in delaunator's layout (as hullkit's JS ``delaunay``): flat
-    ``triangles`` (uint32, 3 per triangle, clockwise with y up), ``halfedges`` (int32, -1 on the
-    hull), ``hull`` (uint32 cycle), ``representative`` (uint32: each point's lowest identical
-    point), ``dimension`` (2, 1 collinear, 0 one point, -1 none). Arrays are read-only views."""
+class _CoreViews:
+    """A result that views a core object's arrays (kept alive by them): ``points``,
+    ``dimension``, ``duplicate_count``, and each name in ``_arrays`` as a read-only view of the
+    core's array of that name."""
+
+    _arrays = ()
 
     def __init__(self, core, points):
         self._core = core
         self.points = points
         self.dimension = core.dimension
-        self.triangles = _read_only(core.triangles)
-        self.halfedges = _read_only(core.halfedges)
-        self.hull = _read_only(core.hull)
-        self.representative = _read_only(core.representative)
         self.duplicate_count = core.duplicate_count
+        for name in self._arrays:
+            setattr(self, name, _read_only(getattr(core, name)))
+
+
+class Delaunay(_CoreViews):
+    """A Delaunay triangulation in delaunator's layout (as hullkit's JS ``delaunay``): flat
+    ``triangles`` (uint32, 3 per triangle, clockwise with y up), ``halfedges`` (int32, -1 on the
+    hull), ``hull`` (uint32 cycle), ``representative`` (uint32: each point's lowest identical
+    point), ``dimension`` (2, 1 collinear, 0 one point, -1 none). Arrays are read-only views."""
+
+    _arrays = ("triangles", "halfedges", "hull", "representative")
+
+    def __init__(self, core, points):
+        super().__init__(core, points)
         offsets, corners = core.polygon_offsets, core.polygon_vertices
         self.polygons = [corners[offsets[k]: offsets[k + 1]] for k in range(len(offsets) - 1)] if len(offsets) else None
 
@@ -226,6 +237,103 @@ def verify_delaunay(points, triangles):
     flat = _np.ascontiguousarray(triangles, dtype=_np.uint32).ravel()
     with _translated():
         return _core.verify_delaunay(array, flat)
+
+
+class Delaunay3(_CoreViews):
+    """A Delaunay tetrahedralization of points in 3D, as the C++ core gives it (see delaunay3).
+
+    What is filled depends on ``dimension``, the dimension the points span:
+
+    * 3: ``tetrahedra`` (m, 4) uint32, positively oriented (the fourth corner on the side the
+      normal (t1 - t0) x (t2 - t0) points to); ``neighbors`` (m, 4) int32, ``neighbors[t, k]`` the
+      tetrahedron across the face opposite corner k, -1 on the hull (scipy's convention);
+      ``hull`` (k, 3) uint32, the convex hull's triangles, counter-clockwise seen from outside.
+    * 2 (coplanar points): ``triangles`` (t, 3) uint32, their Delaunay triangulation in the plane,
+      counter-clockwise seen from the side ``normal`` points to; ``neighbors`` (t, 3) int32, across
+      the edge opposite corner k, -1 on the boundary.
+    * 1 (collinear points): ``vertices`` the distinct points in order along the line; 0 (one
+      distinct point): ``vertices`` holds it; -1: no points.
+
+    Always: ``representative`` (n,) uint32, each point's lowest-indexed identical point (itself if
+    it has none; duplicates are merged, never dropped silently), ``duplicate_count`` and
+    ``points``. Unused arrays are empty with the shapes above. The arrays are read-only views of
+    the core's result (no copy), which they keep alive. Ties (five or more cospherical points, as
+    on a grid) are broken by a symbolic perturbation: one answer that depends only on the points,
+    never a flat tetrahedron, the same for any ``threads``."""
+
+    _arrays = ("tetrahedra", "neighbors", "hull", "triangles", "vertices", "representative")
+
+    def __init__(self, core, points):
+        super().__init__(core, points)
+        self.normal = _read_only(_np.array(core.normal, dtype=_np.float64))
+
+    def __repr__(self):
+        return (f"hullkit.Delaunay3(points={len(self.points)}, tetrahedra={len(self.tetrahedra)}, "
+                f"dimension={self.dimension})")
+
+
+def delaunay3(points, threads=0):
+    """The exact Delaunay tetrahedralization of ``points`` (array-like, shape (n, 3)); see Delaunay3.
+
+    Anything numpy converts to float64 is accepted (float32, Fortran order, lists: converted once;
+    a C-ordered float64 array is used as it is). ``threads``: 0 every core, 1 the calling thread
+    only; the arrays are the same bits for any value. The GIL is released while the core works.
+    Raises HullkitError on a wrong shape or a NaN or infinite coordinate (naming the point, also
+    as ``error.point``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import hullkit
+    >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    >>> d = hullkit.delaunay3(cube)
+    >>> d.dimension, d.tetrahedra.shape, d.neighbors.shape, d.hull.shape
+    (3, (6, 4), (6, 4), (12, 3))
+    >>> a, b, c, e = (cube[d.tetrahedra[:, k]] for k in range(4))
+    >>> float(np.linalg.det(np.stack([b - a, c - a, e - a], axis=1)).sum() / 6)  # the cube's volume
+    1.0
+    >>> hullkit.verify_delaunay3(cube, d.tetrahedra)["ok"]
+    True
+    >>> square = hullkit.delaunay3([[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]])
+    >>> square.dimension, square.triangles.shape, square.normal.tolist()
+    (2, (2, 3), [0.0, 0.0, 1.0])
+    """
+    array = as_points(points, 3)
+    with _translated():
+        core = _core.Tetrahedralization(array, _threads(threads))
+    return Delaunay3(core, array)
+
+
+def verify_delaunay3(points, tetrahedra, perturbed=True):
+    """An exact check that ``tetrahedra`` (shape (m, 4), or a Delaunay3) is the Delaunay
+    tetrahedralization of the distinct points of ``points``: indices in range, every tetrahedron
+    positively oriented (none flat), faces shared by at most two tetrahedra with opposite
+    orientations, the boundary a triangulation of the convex hull, every distinct point a vertex,
+    the volume the hull's, every interior face locally Delaunay by the exact in-sphere test. With
+    ``perturbed`` (the default) cospherical ties must also go delaunay3's way (which makes the
+    answer unique); without, either way passes. A dict: ok, problems (one line each),
+    problem_count, distinct_points, hull_triangles.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import hullkit
+    >>> points = np.random.default_rng(1).random((100, 3))
+    >>> tetrahedra = hullkit.delaunay3(points).tetrahedra
+    >>> hullkit.verify_delaunay3(points, tetrahedra)["ok"]
+    True
+    >>> report = hullkit.verify_delaunay3(points, tetrahedra[1:])  # one tetrahedron missing
+    >>> report["ok"], report["problem_count"] > 0
+    (False, True)
+    """
+    array = as_points(points, 3)
+    if isinstance(tetrahedra, Delaunay3):
+        tetrahedra = tetrahedra.tetrahedra
+    corners = _np.ascontiguousarray(tetrahedra, dtype=_np.uint32)
+    if corners.ndim != 2 or corners.shape[1] != 4:
+        raise HullkitError(f"tetrahedra must have shape (m, 4), got {corners.shape}")
+    with _translated():
+        return _core.verify_delaunay3(array, corners, bool(perturbed))
 
 
 # ---- route checking ------------------------------------------------------------------------------

@@ -23,7 +23,17 @@ point), ``points``, ``npoints``, ``ndim``, ``nsimplex``, ``min_bound``, ``max_bo
 and ``dimension``. Collinear points (``dimension`` 1) or one distinct point (0) give no
 simplices; ``convex_hull`` is then the chain of edges along the line (or empty),
 ``vertex_neighbor_vertices`` links each point to its neighbours along it, and ``find_simplex``
-answers -1. Delaunay in 3D is not supported.
+answers -1.
+
+Delaunay (3D, on ``hullkit.delaunay3``): ``simplices`` (m, 4) positively oriented, ``neighbors``,
+``convex_hull`` (k, 3), ``vertex_neighbor_vertices``, ``vertex_to_simplex``, ``transform``,
+``coplanar`` (the exact duplicates, as in 2D; empty otherwise: every distinct point is a vertex),
+``points``, ``npoints``, ``ndim``, ``nsimplex``, ``min_bound``, ``max_bound``; and ``dimension``.
+Cospherical points (grids) get tetrahedra that are never flat. Coplanar points (``dimension`` 2)
+give no simplices and ``convex_hull`` their planar Delaunay triangles; collinear points or one
+point no simplices and an empty ``convex_hull`` (``vertex_neighbor_vertices`` links the points
+along the line). ``find_simplex`` in 3D raises NotImplementedError: it comes with 3D point
+location.
 
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
 point). Options scipy has and hullkit does not (qhull_options, incremental, furthest_site,
@@ -31,7 +41,7 @@ dimensions beyond 3) raise a clear "not supported".
 """
 import numpy as _np
 
-from . import HullkitError, _core, _translated, as_points, delaunay, hull
+from . import HullkitError, _core, _translated, as_points, delaunay, delaunay3, hull
 
 __all__ = ["ConvexHull", "Delaunay"]
 
@@ -129,11 +139,24 @@ class ConvexHull:
 
 
 class Delaunay:
-    """The Delaunay triangulation of points in the plane, exact (see the module's documentation).
+    """The Delaunay triangulation of points in 2D or tetrahedralization in 3D, exact (see the
+    module's documentation).
 
     Attributes (scipy's): points, simplices, neighbors, convex_hull, vertex_neighbor_vertices,
-    transform, coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and dimension. Method:
-    find_simplex."""
+    vertex_to_simplex, transform, coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and
+    dimension. Method: find_simplex (2D).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hullkit.spatial import Delaunay
+    >>> cube = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    >>> d = Delaunay(cube)
+    >>> d.ndim, d.nsimplex, d.simplices.dtype, d.convex_hull.shape, d.coplanar.shape
+    (3, 6, dtype('int32'), (12, 3), (0, 3))
+    >>> Delaunay([[0, 0], [1, 0], [0, 1]]).simplices.tolist()
+    [[0, 1, 2]]
+    """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
         for flag, what in ((furthest_site, "furthest_site=True"), (incremental, "incremental=True")):
@@ -145,20 +168,35 @@ class Delaunay:
             array = _np.ascontiguousarray(points, dtype=_np.float64)
         except (TypeError, ValueError) as error:
             raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
-        if array.ndim != 2 or array.shape[1] != 2:
-            if array.ndim == 2 and array.shape[1] >= 3:
+        if array.ndim != 2 or array.shape[1] not in (2, 3):
+            if array.ndim == 2 and array.shape[1] > 3:
                 _not_supported(f"Delaunay in {array.shape[1]} dimensions", "Delaunay")
-            raise HullkitError(f"points must have shape (n, 2), got {array.shape}")
+            raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
         self.points = array
         self.npoints, self.ndim = array.shape
-        self.min_bound, self.max_bound = _bounds(array, 2)
-        self._triangulation = d = delaunay(array)
+        self.min_bound, self.max_bound = _bounds(array, self.ndim)
+        if self.ndim == 3:
+            self._from_3d(array)
+        else:
+            self._from_2d(array)
+        self.nsimplex = len(self.simplices)
+        self.coplanar = _np.zeros((0, 3), dtype=_np.int32)
+        if self._duplicate_count:
+            representative = _np.asarray(self._representative, dtype=_np.int64)
+            repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
+            simplex_of = self._corner_simplex()
+            self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
+                                      axis=1).astype(_np.int32)
+
+    # -- 2D ------------------------------------------------------------------------------------
+    def _from_2d(self, xy):
+        self._triangulation = d = delaunay(xy)
         self.dimension = d.dimension
+        self._representative, self._duplicate_count = d.representative, d.duplicate_count
         # hullkit's triangles are clockwise with y up (delaunator's); scipy's counter-clockwise.
         # The corners reordered and the neighbours from the half-edges, in one pass in the core.
         with _translated():
             self.simplices, self.neighbors = d._core.scipy_arrays()
-        self.nsimplex = len(self.simplices)
         hull_cycle = _np.asarray(d.hull, dtype=_np.int32)
         if d.dimension == 2:
             self.convex_hull = _np.stack([hull_cycle, _np.roll(hull_cycle, -1)], axis=1)
@@ -166,20 +204,34 @@ class Delaunay:
             self.convex_hull = _np.stack([hull_cycle[:-1], hull_cycle[1:]], axis=1)
         else:
             self.convex_hull = _np.zeros((0, 2), dtype=_np.int32)
-        self.coplanar = _np.zeros((0, 3), dtype=_np.int32)
-        if d.duplicate_count:
-            representative = _np.asarray(d.representative, dtype=_np.int64)
-            repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
-            simplex_of = _np.full(self.npoints, -1, dtype=_np.int64)
-            if self.nsimplex:
-                simplex_of[self.simplices.ravel()] = _np.repeat(_np.arange(self.nsimplex), 3)
-            self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
-                                      axis=1).astype(_np.int32)
+        self._chain = self.convex_hull
+
+    # -- 3D ------------------------------------------------------------------------------------
+    def _from_3d(self, xyz):
+        self._tetrahedralization = d = delaunay3(xyz)
+        self.dimension = d.dimension
+        self._representative, self._duplicate_count = d.representative, d.duplicate_count
+        # The core's uint32 indices are below 2**31 (it refuses more points): as int32 they are the
+        # same bits, so scipy's dtype without a copy (read-only views of the core's arrays).
+        self.simplices = d.tetrahedra.view(_np.int32)
+        self.neighbors = d.neighbors if d.dimension == 3 else _np.zeros((0, 4), dtype=_np.int32)
+        if d.dimension == 3:
+            self.convex_hull = d.hull.view(_np.int32)
+        elif d.dimension == 2:  # flat: the planar triangles are the (two-sided) hull's faces
+            self.convex_hull = d.triangles.view(_np.int32)
+        else:
+            self.convex_hull = _np.zeros((0, 3), dtype=_np.int32)
+        vertices = _np.asarray(d.vertices, dtype=_np.int32)  # collinear: in order along the line
+        self._chain = _np.stack([vertices[:-1], vertices[1:]], axis=1) if d.dimension == 1 else self.convex_hull
 
     def find_simplex(self, xi, bruteforce=False, tol=None):
         """The simplex containing each point of ``xi`` (shape (..., 2)), -1 outside the hull;
         exact (a point on an edge gets one of the two simplices). ``bruteforce`` and ``tol`` are
-        accepted for scipy's signature and change nothing: the location is exact."""
+        accepted for scipy's signature and change nothing: the location is exact. In 3D:
+        NotImplementedError (it comes with 3D point location)."""
+        if self.ndim == 3:
+            raise NotImplementedError("hullkit.spatial.Delaunay.find_simplex is not implemented in 3D yet: "
+                                      "it comes with 3D point location")
         array = _np.asarray(xi, dtype=_np.float64)
         if array.shape[-1:] != (2,):
             raise HullkitError(f"xi must have shape (..., 2), got {array.shape}")
@@ -190,29 +242,57 @@ class Delaunay:
 
     @property
     def vertex_neighbor_vertices(self):
-        """(indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]]."""
+        """(indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]],
+        ascending. Without simplices, the neighbours along the line (or on the plane's triangles)."""
+        cells = self.simplices if self.nsimplex else self._chain
+        corners = cells.shape[1]
+        if len(cells) == 0 or corners < 2:
+            return _np.zeros(self.npoints + 1, dtype=_np.int32), _np.zeros(0, dtype=_np.int32)
+        n = _np.int64(max(self.npoints, 1))
+        cells = cells.astype(_np.int64)
+        # Each edge once as the key lower * n + higher (one 1-D unique: sorting rows is far
+        # slower), then both directions sorted by their first point.
+        pairs = [(i, j) for i in range(corners) for j in range(i + 1, corners)]
+        lower = _np.concatenate([_np.minimum(cells[:, i], cells[:, j]) for i, j in pairs])
+        higher = _np.concatenate([_np.maximum(cells[:, i], cells[:, j]) for i, j in pairs])
+        edges = _np.unique(lower * n + higher)
+        lower, higher = edges // n, edges % n
+        keys = _np.sort(_np.concatenate([edges, higher * n + lower]))
+        indptr = _np.searchsorted(keys, _np.arange(self.npoints + 1, dtype=_np.int64) * n).astype(_np.int32)
+        return indptr, (keys % n).astype(_np.int32)
+
+    def _corner_simplex(self):
+        """(npoints,) int32: the first simplex each point is a corner of, -1 for none."""
+        simplex_of = _np.full(self.npoints, -1, dtype=_np.int32)
         if self.nsimplex:
-            s = self.simplices.astype(_np.int64)
-            edges = _np.concatenate([s[:, [0, 1]], s[:, [1, 2]], s[:, [2, 0]]])
-        else:
-            edges = self.convex_hull.astype(_np.int64)
-        both = _np.concatenate([edges, edges[:, ::-1]])
-        both = _np.unique(both, axis=0)
-        indptr = _np.searchsorted(both[:, 0], _np.arange(self.npoints + 1)).astype(_np.int32)
-        return indptr, both[:, 1].astype(_np.int32)
+            corners = self.simplices.shape[1]
+            # Written from the last simplex to the first, so that the first one's write stays.
+            order = _np.arange(self.nsimplex - 1, -1, -1, dtype=_np.int32)
+            simplex_of[self.simplices[::-1].ravel()] = _np.repeat(order, corners)
+        return simplex_of
+
+    @property
+    def vertex_to_simplex(self):
+        """(npoints,) int32: a simplex each point is a corner of (as scipy's: the first), a
+        duplicate its representative's (its ``coplanar`` row's), -1 when there are no simplices."""
+        simplex_of = self._corner_simplex()
+        simplex_of[self.coplanar[:, 0]] = self.coplanar[:, 1]
+        return simplex_of
 
     @property
     def transform(self):
-        """Barycentric transforms (nsimplex, 3, 2): c = T^-1 (x - r) with T^-1 = transform[i, :2]
-        and r = transform[i, 2] (the simplex's last corner), as scipy's."""
+        """Barycentric transforms (nsimplex, ndim + 1, ndim): c = T^-1 (x - r) with
+        T^-1 = transform[i, :ndim] and r = transform[i, ndim] (the simplex's last corner), as
+        scipy's."""
+        k = self.ndim
         if self.nsimplex == 0:
-            return _np.zeros((0, 3, 2))
+            return _np.zeros((0, k + 1, k))
         corners = self.points[self.simplices]
-        r = corners[:, 2]
-        t = _np.stack([corners[:, 0] - r, corners[:, 1] - r], axis=2)  # columns: v0 - r, v1 - r
-        out = _np.empty((self.nsimplex, 3, 2))
-        out[:, :2] = _np.linalg.inv(t)
-        out[:, 2] = r
+        r = corners[:, k]
+        t = (corners[:, :k] - r[:, None]).transpose(0, 2, 1)  # columns: v_j - r
+        out = _np.empty((self.nsimplex, k + 1, k))
+        out[:, :k] = _np.linalg.inv(t)
+        out[:, k] = r
         return out
 
     def __repr__(self):

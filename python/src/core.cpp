@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hullkit/delaunay.hpp"
+#include "hullkit/delaunay3.hpp"
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_read.hpp"
 #include "hullkit/point_reader.hpp"
@@ -158,7 +159,8 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// scipy's ConvexHull extras for triangles (m, 3) of a closed (or open: -1 across the rim)
 /// oriented surface: neighbors[t][j], the triangle across the edge opposite corner j, found by
 /// matching each directed edge with its reverse through per-vertex lists (linear time); and
-/// equations[t], the outward unit normal and offset of t's plane (rounded).
+/// equations[t], the outward unit normal and offset of t's plane (hullkit::plane_equations, as
+/// `hullkit hull --normals` and the JS result's `equations` give them).
 py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
     const std::size_t n = rows(points, 3, "points");
     if (triangles.ndim() != 2 || triangles.shape(1) != 3) throw std::invalid_argument("triangles must have shape (m, 3)");
@@ -168,28 +170,15 @@ py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, 
         if (v[k] >= n) throw std::invalid_argument("triangle corner out of range");
     }
     std::vector<std::int32_t> neighbors(3 * m, -1);
-    std::vector<double> equations(4 * m);
+    std::vector<double> equations;
     const double* xyz = points.data();
     {
         py::gil_scoped_release unlocked;
         // The planes on a second thread, the neighbours on this one (the two write apart; each
         // value is computed the same way whichever thread computes it).
         JoinedThreads planes;
-        planes.threads.emplace_back([&] {
-            for (std::size_t t = 0; t < m; ++t) {
-                const double* a = xyz + 3 * v[3 * t];
-                const double* b = xyz + 3 * v[3 * t + 1];
-                const double* c = xyz + 3 * v[3 * t + 2];
-                const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-                const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-                double normal[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
-                const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-                for (double& x : normal) x /= length;
-                double* out = &equations[4 * t];
-                std::copy(normal, normal + 3, out);
-                out[3] = -(normal[0] * a[0] + normal[1] * a[1] + normal[2] * a[2]);
-            }
-        });
+        // (The corners were checked above: plane_equations cannot throw here.)
+        planes.threads.emplace_back([&] { equations = hullkit::plane_equations(hullkit::PointSpan(xyz, n), v, m); });
         // The half-edges grouped by their lower corner (a counting sort: one pass to count, one
         // to place, in ascending half-edge order), then within each corner's few by the higher
         // corner (stable): a half-edge and its reverse are then neighbours in the order, as in a
@@ -433,11 +422,32 @@ private:
     std::unique_ptr<hullkit::DelaunayLocator> locator_;
 };
 
-/// An array viewing a vector inside a Triangulation, which it keeps alive.
+/// An array viewing a vector inside a Triangulation or Tetrahedralization, which it keeps alive:
+/// flat, or with `columns` (size / columns, columns).
 template <class T>
-py::array_t<T> view(const std::vector<T>& values, py::handle owner) {
-    return py::array_t<T>({static_cast<py::ssize_t>(values.size())}, {static_cast<py::ssize_t>(sizeof(T))}, values.data(),
-                          owner);
+py::array_t<T> view(const std::vector<T>& values, py::handle owner, py::ssize_t columns = 0) {
+    const auto size = static_cast<py::ssize_t>(values.size());
+    const auto item = static_cast<py::ssize_t>(sizeof(T));
+    if (columns == 0) return py::array_t<T>({size}, {item}, values.data(), owner);
+    return py::array_t<T>({size / columns, columns}, {columns * item, item}, values.data(), owner);
+}
+
+/// A read-only property of `Owner` (a Triangulation or Tetrahedralization): a view of the vector
+/// `field` of its core result.
+template <class Owner, class Result, class T>
+auto result_view(std::vector<T> Result::*field, py::ssize_t columns = 0) {
+    return [field, columns](py::object self) { return view(self.cast<const Owner&>().result().*field, self, columns); };
+}
+
+/// The fields the 2D and 3D Delaunay verifiers' reports share.
+template <class Report>
+py::dict delaunay_report_dict(const Report& report) {
+    py::dict out;
+    out["ok"] = report.ok;
+    out["problems"] = report.problems;
+    out["problem_count"] = report.problem_count;
+    out["distinct_points"] = report.distinct_points;
+    return out;
 }
 
 py::dict verify_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
@@ -449,12 +459,44 @@ py::dict verify_delaunay(const Points& points, const py::array_t<std::uint32_t, 
         py::gil_scoped_release unlocked;
         report = hullkit::verify_delaunay(span, triangles.data(), static_cast<std::size_t>(triangles.shape(0) / 3));
     }
-    py::dict out;
-    out["ok"] = report.ok;
-    out["problems"] = report.problems;
-    out["problem_count"] = report.problem_count;
-    out["distinct_points"] = report.distinct_points;
+    py::dict out = delaunay_report_dict(report);
     out["hull_points"] = report.hull_points;
+    return out;
+}
+
+/// A Delaunay tetrahedralization with the points it was made from (kept alive, not copied); its
+/// arrays are views into the core's result, which they keep alive.
+class Tetrahedralization {
+public:
+    Tetrahedralization(Points points, unsigned threads) : points_(std::move(points)) {
+        const hullkit::PointSpan span(points_.data(), rows(points_, 3, "points"));
+        hullkit::Delaunay3Options options;
+        options.threads = threads;
+        {
+            py::gil_scoped_release unlocked;
+            result_ = hullkit::delaunay3(span, options);
+        }
+        if (!result_.ok()) throw CoreError(result_.error, result_.error_point);
+    }
+
+    const hullkit::Delaunay3& result() const { return result_; }
+
+private:
+    Points points_;
+    hullkit::Delaunay3 result_;
+};
+
+py::dict verify_delaunay3(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& tetrahedra,
+                          bool perturbed) {
+    const hullkit::PointSpan span(points.data(), rows(points, 3, "points"));
+    if (tetrahedra.ndim() != 2 || tetrahedra.shape(1) != 4) throw std::invalid_argument("tetrahedra must have shape (m, 4)");
+    hullkit::Delaunay3VerifyReport report;
+    {
+        py::gil_scoped_release unlocked;
+        report = hullkit::verify_delaunay3(span, tetrahedra.data(), static_cast<std::size_t>(tetrahedra.shape(0)), perturbed);
+    }
+    py::dict out = delaunay_report_dict(report);
+    out["hull_triangles"] = report.hull_triangles;
     return out;
 }
 
@@ -667,6 +709,7 @@ PYBIND11_MODULE(_core, m) {
     m.def("surface_extras", &surface_extras);
     m.def("verify_hull", &verify_hull);
     m.def("verify_delaunay", &verify_delaunay);
+    m.def("verify_delaunay3", &verify_delaunay3, py::arg("points"), py::arg("tetrahedra"), py::arg("perturbed") = true);
     m.def("read_points", &read_points, py::arg("path"), py::arg("threads") = 0u);
     m.def("read_mesh", &read_mesh);
     m.def("json_rows_float64", &json_rows<double>);
@@ -680,23 +723,42 @@ PYBIND11_MODULE(_core, m) {
         .def("finish", &Builder::finish)
         .def_property_readonly("points_added", &Builder::points_added);
 
+    using hullkit::Delaunay;
     py::class_<Triangulation>(m, "Triangulation")
         .def(py::init<Points, const std::string&, bool, unsigned>())
         .def_property_readonly("dimension", [](const Triangulation& t) { return t.result().dimension; })
-        .def_property_readonly("triangles", [](py::object self) { return view(self.cast<const Triangulation&>().result().triangles, self); })
-        .def_property_readonly("halfedges", [](py::object self) { return view(self.cast<const Triangulation&>().result().halfedges, self); })
-        .def_property_readonly("hull", [](py::object self) { return view(self.cast<const Triangulation&>().result().hull, self); })
-        .def_property_readonly("representative",
-                               [](py::object self) { return view(self.cast<const Triangulation&>().result().representative, self); })
-        .def_property_readonly("polygon_offsets",
-                               [](py::object self) { return view(self.cast<const Triangulation&>().result().polygon_offsets, self); })
-        .def_property_readonly("polygon_vertices",
-                               [](py::object self) { return view(self.cast<const Triangulation&>().result().polygon_vertices, self); })
+        .def_property_readonly("triangles", result_view<Triangulation>(&Delaunay::triangles))
+        .def_property_readonly("halfedges", result_view<Triangulation>(&Delaunay::halfedges))
+        .def_property_readonly("hull", result_view<Triangulation>(&Delaunay::hull))
+        .def_property_readonly("representative", result_view<Triangulation>(&Delaunay::representative))
+        .def_property_readonly("polygon_offsets", result_view<Triangulation>(&Delaunay::polygon_offsets))
+        .def_property_readonly("polygon_vertices", result_view<Triangulation>(&Delaunay::polygon_vertices))
         .def_property_readonly("duplicate_count", [](const Triangulation& t) { return t.result().duplicate_count; })
         .def("find", &Triangulation::find)
         .def("locate", &Triangulation::locate)
         .def("scipy_arrays", &Triangulation::scipy_arrays)
         .def("voronoi", &Triangulation::voronoi);
+
+    using hullkit::Delaunay3;
+    py::class_<Tetrahedralization>(m, "Tetrahedralization")
+        .def(py::init<Points, unsigned>(), py::arg("points"), py::arg("threads") = 0u)
+        .def_property_readonly("dimension", [](const Tetrahedralization& t) { return t.result().dimension; })
+        .def_property_readonly("tetrahedra", result_view<Tetrahedralization>(&Delaunay3::tetrahedra, 4))
+        .def_property_readonly("neighbors",  // per tetrahedron, or per triangle for coplanar points
+                               [](py::object self) {
+                                   const Delaunay3& d = self.cast<const Tetrahedralization&>().result();
+                                   return view(d.neighbors, self, d.dimension == 2 ? 3 : 4);
+                               })
+        .def_property_readonly("hull", result_view<Tetrahedralization>(&Delaunay3::hull, 3))
+        .def_property_readonly("triangles", result_view<Tetrahedralization>(&Delaunay3::triangles, 3))
+        .def_property_readonly("vertices", result_view<Tetrahedralization>(&Delaunay3::vertices))
+        .def_property_readonly("representative", result_view<Tetrahedralization>(&Delaunay3::representative))
+        .def_property_readonly("normal",
+                               [](const Tetrahedralization& t) {
+                                   const double* n = t.result().normal;
+                                   return py::make_tuple(n[0], n[1], n[2]);
+                               })
+        .def_property_readonly("duplicate_count", [](const Tetrahedralization& t) { return t.result().duplicate_count; });
 
     py::class_<Checker>(m, "RouteChecker")
         .def(py::init<const std::string&, const std::string&, const std::string&, const std::map<std::string, std::string>&>(),

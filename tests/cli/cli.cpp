@@ -260,7 +260,7 @@ TEST_CASE("cli: usage problems exit 2 with one line") {
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--algorithm=nope"})) ==
           "hullkit: unknown algorithm \"nope\" (known: quickhull, giftwrap)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "--format", "ply"})) ==
-          "hullkit: unknown format \"ply\" (known: off, obj, json, xyz, glb)");
+          "hullkit: unknown format \"ply\" (known: off, obj, json, xyz, glb, normals)");
     CHECK(single_error_line(run_cli(dir, {"hull", tetra, "-o"})) == "hullkit: option -o needs a value");
     // Several INPUTs are one cloud: the tetrahedron twice is the tetrahedron (repeats: lowest index).
     CHECK(run_cli(dir, {"hull", tetra, tetra}).out == run_cli(dir, {"hull", tetra}).out);
@@ -328,6 +328,7 @@ TEST_CASE("cli: no points is an empty hull (dimension -1), exit 0, in every form
     CHECK(hull.at("points").items.empty());
     CHECK(hull.at("vertices").items.empty());
     CHECK(hull.at("triangles").items.empty());
+    CHECK(hull.at("equations").items.empty());
     CHECK(hull.at("volume").number == 0);
     CHECK(hull.at("area").number == 0);
     const Json stats = parse_stats(json);
@@ -499,13 +500,15 @@ TEST_CASE("cli: each output format parses back to the same hull") {
     Json stats = parse_stats(json_run);
     Json hull = parse_json(json_run.out);
     REQUIRE(hull.kind == Json::Kind::Object);
-    CHECK(hull.keys() == std::vector<std::string>{"vertices", "triangles", "points", "volume", "area", "dimension"});
+    CHECK(hull.keys() == std::vector<std::string>{"vertices", "triangles", "points", "equations", "volume", "area", "dimension"});
     const auto& vertices = hull.at("vertices").items;
     const auto& triangles = hull.at("triangles").items;
     const auto& coordinates = hull.at("points").items;
+    const auto& equations = hull.at("equations").items;
     REQUIRE(vertices.size() == stats.at("vertices").number);
     REQUIRE(triangles.size() == stats.at("faces").number);
     REQUIRE(coordinates.size() == vertices.size());
+    REQUIRE(equations.size() == triangles.size());
     CHECK(triangles.size() == 2 * vertices.size() - 4);  // random points: a triangulated sphere
     CHECK(hull.at("volume").number == stats.at("volume").number);
     CHECK(hull.at("area").number == stats.at("area").number);
@@ -518,10 +521,25 @@ TEST_CASE("cli: each output format parses back to the same hull") {
         for (int c = 0; c < 3; ++c) CHECK(coordinates[k].items[c].number == points[3 * id + c]);
     }
     CHECK(std::is_sorted(vertex_ids.begin(), vertex_ids.end()));
+    // Self-contained: the triangles index "points" (as OFF's faces index its vertex lines), each
+    // plane is outward and holds its triangle's corners.
     std::vector<std::uint32_t> json_triangles;
-    for (const Json& t : triangles) {
-        REQUIRE(t.items.size() == 3);
-        for (const Json& corner : t.items) json_triangles.push_back(static_cast<std::uint32_t>(corner.number));
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        REQUIRE(triangles[t].items.size() == 3);
+        REQUIRE(equations[t].items.size() == 4);
+        double n[4];
+        for (int k = 0; k < 4; ++k) n[k] = equations[t].items[k].number;
+        CHECK(std::fabs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1) < 1e-15);
+        for (const Json& corner : triangles[t].items) {
+            const auto k = static_cast<std::uint32_t>(corner.number);
+            REQUIRE(k < coordinates.size());
+            json_triangles.push_back(k);
+            const auto& p = coordinates[k].items;
+            CHECK(std::fabs(n[0] * p[0].number + n[1] * p[1].number + n[2] * p[2].number + n[3]) < 1e-14);
+        }
+        for (std::size_t i = 0; i < 300; ++i) {
+            CHECK(n[0] * points[3 * i] + n[1] * points[3 * i + 1] + n[2] * points[3 * i + 2] + n[3] < 1e-14);
+        }
     }
 
     SECTION("OFF") {
@@ -532,9 +550,7 @@ TEST_CASE("cli: each output format parses back to the same hull") {
         REQUIRE(mesh.ok());
         REQUIRE(mesh.point_count() == vertex_ids.size());
         REQUIRE(mesh.triangles.size() == json_triangles.size());
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-            CHECK(vertex_ids[mesh.triangles[i]] == json_triangles[i]);
-        }
+        CHECK(mesh.triangles == json_triangles);  // the same indices: OFF's vertex lines are JSON's points
         for (std::size_t k = 0; k < vertex_ids.size(); ++k) {
             for (int c = 0; c < 3; ++c) CHECK(mesh.xyz[3 * k + c] == points[3 * vertex_ids[k] + c]);
         }
@@ -557,7 +573,7 @@ TEST_CASE("cli: each output format parses back to the same hull") {
             for (std::uint32_t index; fields >> index;) {
                 REQUIRE(index >= 1);
                 REQUIRE(index <= vertex_ids.size());
-                obj_triangles.push_back(vertex_ids[index - 1]);
+                obj_triangles.push_back(index - 1);
             }
         }
         CHECK(obj_triangles == json_triangles);
@@ -603,6 +619,22 @@ void check_against_qconvex(const std::string& rbox_args) {
     // Qt Fv: the count of triangulated facets first.
     std::vector<double> facet_count = numbers_on_line(qconvex("Qt Fv"), 0);
     REQUIRE(facet_count.size() == 1);
+    // n: "4", the facet count, then "nx ny nz offset" per facet (random points: triangles), by normal.
+    std::map<std::string, std::vector<double>> qhull_planes;
+    auto normal_key = [](const std::vector<double>& plane) {
+        char key[96];
+        std::snprintf(key, sizeof key, "%.6f %.6f %.6f", plane[0] + 0.0, plane[1] + 0.0, plane[2] + 0.0);
+        return std::string(key);
+    };
+    {
+        std::istringstream in(qconvex("n"));
+        std::size_t dimension = 0, count = 0;
+        REQUIRE(in >> dimension >> count);
+        REQUIRE(dimension == 4);
+        std::vector<double> plane(4);
+        while (in >> plane[0] >> plane[1] >> plane[2] >> plane[3]) qhull_planes[normal_key(plane)] = plane;
+        REQUIRE(qhull_planes.size() == count);
+    }
 
     for (const char* algorithm : {"quickhull", "giftwrap"}) {
         RunResult ours = run_cli(dir, {"hull", input, "--format", "json", "--stats", "--algorithm", algorithm});
@@ -624,6 +656,25 @@ void check_against_qconvex(const std::string& rbox_args) {
         // qconvex prints 16 significant digits, so 1e-9 leaves ample room for summation order.
         CHECK(relatively_close(stats.at("volume").number, qhull_volume, 1e-9));
         CHECK(relatively_close(stats.at("area").number, qhull_area, 1e-9));
+        // --normals: qconvex n's facets, to 1e-12 (unit normals; offsets relative to 1 or more).
+        RunResult normals = run_cli(dir, {"hull", input, "--normals", "--algorithm", algorithm});
+        REQUIRE(normals.exit_code == 0);
+        std::istringstream in(normals.out);
+        std::size_t dimension = 0, count = 0;
+        REQUIRE(in >> dimension >> count);
+        CHECK(dimension == 4);
+        CHECK(count == qhull_planes.size());
+        std::vector<double> plane(4);
+        std::size_t matched = 0;
+        while (in >> plane[0] >> plane[1] >> plane[2] >> plane[3]) {
+            const auto found = qhull_planes.find(normal_key(plane));
+            REQUIRE(found != qhull_planes.end());
+            for (int k = 0; k < 4; ++k) {
+                CHECK(std::fabs(plane[k] - found->second[k]) <= 1e-12 * std::max(1.0, std::fabs(found->second[k])));
+            }
+            ++matched;
+        }
+        CHECK(matched == count);
     }
 }
 

@@ -168,3 +168,27 @@ TEST_CASE("insphere: insphere_scale_exponent brings data into range", "[exact]")
     REQUIRE(k == 0);
     REQUIRE_FALSE(hullkit::insphere_scale_exponent(1e100, 1e-100, &k));  // spans more than 2^315
 }
+
+TEST_CASE("compare_distance3d: agrees with rationals, ties included", "[exact]") {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    auto oracle = [](const P3& a, const P3& b, const P3& q) {
+        mpq_class s = 0;
+        for (int k = 0; k < 3; ++k) {
+            const mpq_class da = mpq_class(a[k]) - q[k], db = mpq_class(b[k]) - q[k];
+            s += da * da - db * db;
+        }
+        return sgn(s);
+    };
+    for (int trial = 0; trial < 3000; ++trial) {
+        P3 a, b, q;
+        for (int k = 0; k < 3; ++k) a[k] = unit(rng), b[k] = unit(rng), q[k] = unit(rng);
+        if (trial % 3 == 0) b = {a[1], a[2], a[0]}, q = {0.25, 0.25, 0.25};  // equal distances from a symmetric q
+        if (trial % 3 == 1) {                                              // one ulp apart
+            b = a;
+            b[trial % 3] = std::nextafter(b[trial % 3], 2.0);
+            q = {a[0] * 0.5, a[1] * 0.5, a[2] * 0.5};
+        }
+        REQUIRE(hullkit::compare_distance3d(a.data(), b.data(), q.data()) == oracle(a, b, q));
+    }
+}

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -416,13 +417,30 @@ TEST_CASE("mesh_io: OBJ writer uses 1-based indices into the hull vertices") {
           "f 2 3 4\n");
 }
 
-TEST_CASE("mesh_io: JSON writer keeps input indices") {
+TEST_CASE("mesh_io: JSON writer: triangles index points, vertices give their input indices, equations their planes") {
     SmallHull s;
-    CHECK(hullkit::write_json(s.span(), s.hull) ==
-          "{\"vertices\":[1,3,4,6],"
-          "\"triangles\":[[1,4,3],[1,3,6],[1,6,4],[3,4,6]],"
-          "\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1.5]],"
-          "\"volume\":0.25,\"area\":2.5,\"dimension\":3}\n");
+    const std::string json = hullkit::write_json(s.span(), s.hull);
+    // The input's triangle {1, 4, 3} is points 0, 2, 1: vertices[0] = 1, vertices[2] = 4, vertices[1] = 3.
+    CHECK(json.rfind("{\"vertices\":[1,3,4,6],"
+                     "\"triangles\":[[0,2,1],[0,1,3],[0,3,2],[1,2,3]],"
+                     "\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1.5]],"
+                     "\"equations\":[[0,0,-1,0],[0,-1,0,0],[-1,0,0,0],[",
+                     0) == 0);
+    CHECK(json.find("],\"volume\":0.25,\"area\":2.5,\"dimension\":3}\n") != std::string::npos);
+    // The slanted face x + y + z / 1.5 = 1: normal (3, 3, 2) / sqrt(22), offset -3 / sqrt(22).
+    const std::vector<double> planes = hullkit::plane_equations(s.span(), s.hull);
+    REQUIRE(planes.size() == 16);
+    const double root = std::sqrt(22.0);
+    CHECK(planes[12] == Approx(3 / root).epsilon(1e-15));
+    CHECK(planes[13] == Approx(3 / root).epsilon(1e-15));
+    CHECK(planes[14] == Approx(2 / root).epsilon(1e-15));
+    CHECK(planes[15] == Approx(-3 / root).epsilon(1e-15));
+    CHECK(json.find("[" + hullkit::format_double(planes[12]) + "," + hullkit::format_double(planes[13]) + "," +
+                    hullkit::format_double(planes[14]) + "," + hullkit::format_double(planes[15]) + "]]") != std::string::npos);
+    // The planes in qconvex's `n` layout.
+    const std::string normals = hullkit::write_normals(s.span(), s.hull);
+    CHECK(normals.rfind("4\n4\n0 0 -1 0\n0 -1 0 0\n-1 0 0 0\n", 0) == 0);
+    CHECK(hullkit::write_hull(OutputFormat::Normals, s.span(), s.hull) == normals);
 }
 
 TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
@@ -436,8 +454,9 @@ TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
     CHECK(hullkit::write_off(s.span(), polygon) == "OFF\n3 1 0\n0 1 0\n0 0 0\n1 0 0\n3 0 1 2\n");
     CHECK(hullkit::write_obj(s.span(), polygon) == "v 0 1 0\nv 0 0 0\nv 1 0 0\nf 1 2 3\n");
     CHECK(hullkit::write_json(s.span(), polygon) ==
-          "{\"vertices\":[4,1,3],\"triangles\":[[4,1,3]],\"points\":[[0,1,0],[0,0,0],[1,0,0]],"
-          "\"volume\":0,\"area\":0.5,\"dimension\":2}\n");
+          "{\"vertices\":[4,1,3],\"triangles\":[[0,1,2]],\"points\":[[0,1,0],[0,0,0],[1,0,0]],"
+          "\"equations\":[[0,0,1,0]],\"volume\":0,\"area\":0.5,\"dimension\":2}\n");
+    CHECK(hullkit::write_normals(s.span(), polygon) == "4\n1\n0 0 1 0\n");
 
     Hull segment;
     segment.dimension = 1;
@@ -445,7 +464,10 @@ TEST_CASE("mesh_io: writers keep the vertex order of a planar hull") {
     CHECK(hullkit::write_off(s.span(), segment) == "OFF\n2 0 0\n0 0 1.5\n0 0 0\n");
     CHECK(hullkit::write_json(s.span(), segment) ==
           "{\"vertices\":[6,1],\"triangles\":[],\"points\":[[0,0,1.5],[0,0,0]],"
-          "\"volume\":0,\"area\":0,\"dimension\":1}\n");
+          "\"equations\":[],\"volume\":0,\"area\":0,\"dimension\":1}\n");
+    CHECK(hullkit::write_normals(s.span(), segment) == "4\n0\n");
+    CHECK(hullkit::write_json(s.span(), Hull{}) ==
+          "{\"vertices\":[],\"triangles\":[],\"points\":[],\"equations\":[],\"volume\":0,\"area\":0,\"dimension\":-1}\n");
 }
 
 TEST_CASE("mesh_io: merged faces are written as polygons") {
@@ -464,6 +486,11 @@ TEST_CASE("mesh_io: merged faces are written as polygons") {
     CHECK(hullkit::write_obj(points, hull).find("f 1 4 3 2\nf 1 2 5\n") != std::string::npos);
     const std::string json = hullkit::write_json(points, hull);
     CHECK(json.find("\"faces\":[[0,3,2,1],[0,1,4],[1,2,4],[2,3,4],[0,4,3]]") != std::string::npos);
+    // One plane per polygon in the normals format (the base quad once), one per triangle in JSON.
+    const std::string normals = hullkit::write_normals(points, hull);
+    CHECK(normals.rfind("4\n5\n0 0 -1 0\n", 0) == 0);
+    CHECK(std::count(normals.begin(), normals.end(), '\n') == 7);
+    CHECK(json.find("\"equations\":[[0,0,-1,0],[0,0,-1,0],") != std::string::npos);
     // The merged OFF reads back (fanned) as a closed surface of 6 triangles.
     const auto back = hullkit::read_off_mesh(hullkit::write_off(points, hull), "pyramid.off");
     REQUIRE(back.ok());

@@ -127,10 +127,65 @@ test('hull: bad input throws HullkitError with a clear message', () => {
   assert.throws(() => hullkit.hull(cubeCorners(), { algoritm: 'giftwrap' }), { message: /unknown option "algoritm"/ });
   assert.throws(() => hullkit.hull(cubeCorners(), { epsilon: 1e-9 }), { message: /unknown epsilon "1e-9"/ });
   assert.throws(() => hullkit.hull(cubeCorners(), { mergeCoplanar: 'yes' }), { message: /mergeCoplanar must be true or false/ });
+  assert.throws(() => hullkit.hull(cubeCorners(), { equations: 1 }), { message: /equations must be true or false/ });
   assert.throws(() => hullkit.hull('1 2 3'), TypeError);
   assert.throws(() => hullkit.hull(null), TypeError);
   // The module keeps working after errors.
   assert.equal(hullkit.hull(cubeCorners()).volume, 8);
+});
+
+/** qconvex's `n` output for `xyz` (4, the facet count, then "nx ny nz offset" lines) as arrays of 4. */
+function qconvexPlanes(xyz, dir) {
+  const lines = [`3 ${xyz.length / 3}`];
+  for (let i = 0; i < xyz.length; i += 3) lines.push(`${xyz[i]} ${xyz[i + 1]} ${xyz[i + 2]}`);
+  const file = join(dir, 'qconvex-input.txt');
+  writeFileSync(file, lines.join('\n') + '\n');
+  const out = execFileSync('qconvex', ['n', 'TI', file], { encoding: 'utf8' }).trim().split('\n');
+  assert.equal(out[0].trim(), '4');
+  const planes = out.slice(2).map((line) => line.trim().split(/\s+/).map(Number));
+  assert.equal(planes.length, Number(out[1]));
+  return planes;
+}
+
+test('hull: equations are the outward facet planes qconvex n prints, to 1e-12', (t) => {
+  const dir = mkdtempSync(join(tmpdir(), 'hullkit-js-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
+  const random = seededRandom(7);
+  const sphere = Float64Array.from({ length: 3 * 400 }, () => random() - 0.5);
+  for (let i = 0; i < sphere.length; i += 3) {
+    const r = Math.hypot(sphere[i], sphere[i + 1], sphere[i + 2]);
+    for (let k = 0; k < 3; k++) sphere[i + k] = 3 + sphere[i + k] / r;  // off the origin: offsets of every size
+  }
+  for (const [name, xyz] of [['ball', randomBall(3000, 21)], ['sphere', sphere]]) {
+    const result = hullkit.hull(xyz);
+    const triangles = result.triangles.length / 3;
+    assert.equal(result.equations.length, 4 * triangles);
+    // Random points: every facet is a triangle. Match them by their normals.
+    const theirs = qconvexPlanes(xyz, dir);
+    assert.equal(theirs.length, triangles, name);
+    const key = (n) => n.slice(0, 3).map((v) => v.toFixed(6)).join(' ');
+    const byNormal = new Map(theirs.map((plane) => [key(plane), plane]));
+    let worst = 0;
+    for (let t = 0; t < triangles; t++) {
+      const ours = [...result.equations.subarray(4 * t, 4 * t + 4)];
+      const plane = byNormal.get(key(ours));
+      assert.ok(plane, `${name}: qconvex has no facet with normal ${key(ours)}`);
+      for (let k = 0; k < 3; k++) worst = Math.max(worst, Math.abs(ours[k] - plane[k]));  // unit vectors
+      worst = Math.max(worst, Math.abs(ours[3] - plane[3]) / Math.max(1, Math.abs(plane[3])));
+      // Outward: every point on the inner side.
+      for (let i = 0; i < xyz.length; i += 3) {
+        assert.ok(ours[0] * xyz[i] + ours[1] * xyz[i + 1] + ours[2] * xyz[i + 2] + ours[3] <= 1e-14);
+      }
+    }
+    assert.ok(worst <= 1e-12, `${name}: largest difference from qconvex ${worst}`);
+  }
+  // A polygon's planes are its own; fewer dimensions have none; { equations: false } leaves them out.
+  const square = hullkit.hull([0, 0, 2, 1, 0, 2, 1, 1, 2, 0, 1, 2]);
+  assert.deepEqual([...square.equations], [0, 0, 1, -2, 0, 0, 1, -2]);
+  assert.equal(hullkit.hull([0, 0, 0, 1, 1, 1]).equations.length, 0);
+  assert.equal(hullkit.hull(new Float64Array(0)).equations.length, 0);
+  const without = hullkit.hull(randomBall(100, 3), { equations: false });
+  assert.ok(without.equations instanceof Float64Array && without.equations.length === 0);
 });
 
 test('hull: wasm and the native CLI return the same triangles', (t) => {
@@ -152,8 +207,12 @@ test('hull: wasm and the native CLI return the same triangles', (t) => {
     for (const algorithm of hullkit.algorithms) {
       const json = JSON.parse(execFileSync(cli, ['hull', file, '--format', 'json', '--algorithm', algorithm], { encoding: 'utf8' }));
       const wasm = hullkit.hull(xyz, { algorithm });
-      assert.deepEqual([...wasm.triangles], json.triangles.flat(), `${name} ${algorithm}`);
+      // The JSON file is self-contained: its triangles index its points, whose input indices are
+      // its vertices.
+      assert.deepEqual([...wasm.triangles], json.triangles.flat().map((k) => json.vertices[k]), `${name} ${algorithm}`);
       assert.deepEqual([...wasm.vertices], json.vertices, `${name} ${algorithm}`);
+      assert.deepEqual(json.points.flat(), [...wasm.vertices].flatMap((v) => [...xyz.subarray(3 * v, 3 * v + 3)]));
+      assert.deepEqual([...wasm.equations], json.equations.flat(), `${name} ${algorithm}`);
       assert.equal(wasm.volume, json.volume, `${name} ${algorithm}`);
       assert.equal(wasm.area, json.area, `${name} ${algorithm}`);
     }

@@ -43,6 +43,9 @@ def test_matches_scipy_in_general_position(seed):
     sp, sx = theirs.vertex_neighbor_vertices
     for k in range(0, ours.npoints, 11):
         assert set(ix[ip[k]:ip[k + 1]].tolist()) == set(sx[sp[k]:sp[k + 1]].tolist())
+    # vertex_to_simplex: a simplex each point is a corner of
+    v2s = ours.vertex_to_simplex
+    assert v2s.dtype == np.int32 and (ours.simplices[v2s] == np.arange(ours.npoints)[:, None]).any(axis=1).all()
     # transform: barycentric coordinates of each simplex's centroid are 1/3 each
     t = ours.transform
     centroids = points[ours.simplices].mean(axis=1)
@@ -102,7 +105,7 @@ def test_bad_input_and_unsupported_options():
         Delaunay(points)
     assert caught.value.point == 3
     with pytest.raises(hullkit.HullkitError, match="not supported"):
-        Delaunay(np.zeros((5, 3)))
+        Delaunay(np.zeros((5, 4)))  # 3D is supported (tests/python/test_spatial.py), 4D not
     for option in ({"furthest_site": True}, {"incremental": True}, {"qhull_options": "Qbb"}):
         with pytest.raises(hullkit.HullkitError, match="not supported"):
             Delaunay(np.random.default_rng(2).random((10, 2)), **option)

@@ -1,12 +1,13 @@
 """hullkit.spatial.ConvexHull against scipy.spatial.ConvexHull (Qhull) on the same inputs, and
-hullkit's answers where scipy raises. Run with pytest (scripts/test.sh runs it in a virtual
-environment with hullkit installed from ./python)."""
+hullkit's answers where scipy raises; hullkit.spatial.Delaunay in 3D against scipy's attributes.
+Run with pytest (scripts/test.sh runs it in a virtual environment with hullkit installed from
+./python)."""
 import numpy as np
 import pytest
 import scipy.spatial
 
 import hullkit
-from hullkit.spatial import ConvexHull
+from hullkit.spatial import ConvexHull, Delaunay
 
 
 def random_clouds():
@@ -171,3 +172,71 @@ def test_hull_function_threads_and_algorithms_agree():
         hullkit.hull(points, algorithm="qhull")
     with pytest.raises(hullkit.HullkitError, match="threads"):
         hullkit.hull(points, threads=-1)
+
+
+def matched_rows(ours, theirs):
+    """For each row of ``ours``, the row of ``theirs`` with the same corners (as sets)."""
+    a, b = np.sort(ours, axis=1), np.sort(theirs, axis=1)
+    oa, ob = np.lexsort(a.T[::-1]), np.lexsort(b.T[::-1])
+    assert (a[oa] == b[ob]).all()
+    match = np.empty(len(ours), dtype=np.int64)
+    match[oa] = ob
+    return match
+
+
+def barycentric_by_vertex(d, simplex, x):
+    """Barycentric coordinates of x in each simplex from d.transform, in ascending vertex order."""
+    t = d.transform[simplex]
+    c = np.einsum("nij,nj->ni", t[:, :3], x - t[:, 3])
+    full = np.concatenate([c, 1 - c.sum(axis=1, keepdims=True)], axis=1)
+    return np.take_along_axis(full, np.argsort(d.simplices[simplex], axis=1), axis=1)
+
+
+def test_delaunay_3d_matches_scipy():
+    rng = np.random.default_rng(13)
+    points = rng.random((2000, 3))
+    ours, theirs = Delaunay(points), scipy.spatial.Delaunay(points)
+    assert ours.dimension == 3
+    assert (ours.ndim, ours.npoints, ours.nsimplex) == (theirs.ndim, theirs.npoints, theirs.nsimplex)
+    np.testing.assert_array_equal(ours.points, theirs.points)
+    np.testing.assert_array_equal(ours.min_bound, theirs.min_bound)
+    np.testing.assert_array_equal(ours.max_bound, theirs.max_bound)
+    for name in ("simplices", "neighbors", "convex_hull", "coplanar"):
+        assert getattr(ours, name).dtype == getattr(theirs, name).dtype == np.intc, name
+    assert ours.coplanar.shape == theirs.coplanar.shape == (0, 3)  # every point is a vertex
+    match = matched_rows(ours.simplices, theirs.simplices)  # the same tetrahedra
+    assert set(map(tuple, np.sort(ours.convex_hull, axis=1).tolist())) == \
+        set(map(tuple, np.sort(theirs.convex_hull, axis=1).tolist()))
+    # neighbors: across the face opposite the same vertex, the same tetrahedron (or -1 for both)
+    mine = theirs.simplices[match]
+    position = np.argmax(mine[:, None, :] == ours.simplices[:, :, None], axis=2)  # our corner k in theirs
+    expected = np.take_along_axis(theirs.neighbors[match], position, axis=1)
+    across = np.where(ours.neighbors >= 0, match[ours.neighbors], -1)
+    np.testing.assert_array_equal(across, expected)
+    # vertex_neighbor_vertices: the same neighbours of every point
+    ip, ix = ours.vertex_neighbor_vertices
+    sp, sx = theirs.vertex_neighbor_vertices
+    np.testing.assert_array_equal(ip, sp)
+    owner = np.repeat(np.arange(ours.npoints), np.diff(sp))
+    np.testing.assert_array_equal(ix, sx[np.lexsort((sx, owner))])  # ours ascending per point
+    # vertex_to_simplex: a tetrahedron each point is a corner of
+    v2s = ours.vertex_to_simplex
+    assert v2s.dtype == np.int32 and (ours.simplices[v2s] == np.arange(ours.npoints)[:, None]).any(axis=1).all()
+    # transform: the same barycentric coordinates of points in and near each tetrahedron
+    x = points[ours.simplices].mean(axis=1) + rng.normal(scale=0.01, size=(ours.nsimplex, 3))
+    assert ours.transform.shape == theirs.transform.shape == (ours.nsimplex, 4, 3)
+    np.testing.assert_allclose(barycentric_by_vertex(ours, np.arange(ours.nsimplex), x),
+                               barycentric_by_vertex(theirs, match, x), rtol=0, atol=1e-6)
+    with pytest.raises(NotImplementedError, match="point location"):
+        ours.find_simplex([[0.5, 0.5, 0.5]])
+
+
+def test_delaunay_3d_grid_has_no_flat_simplices():
+    axes = np.meshgrid(np.arange(4.0), np.arange(3.0), np.arange(3.0), indexing="ij")
+    points = np.stack(axes, axis=-1).reshape(-1, 3)
+    d = Delaunay(points)
+    a, b, c, e = (points[d.simplices[:, k]] for k in range(4))
+    volumes = np.einsum("ij,ij->i", np.cross(b - a, c - a), e - a) / 6
+    assert (volumes > 0).all() and volumes.sum() == 3 * 2 * 2
+    assert d.nsimplex == 6 * 3 * 2 * 2 and d.coplanar.shape == (0, 3)
+    assert len(d.convex_hull) == 2 * 2 * (3 * 2 + 3 * 2 + 2 * 2)  # two triangles per unit square

@@ -27,6 +27,9 @@ const result: HullResult = hullkit.hull(xyz);
 const { dimension, triangles, vertices, volume, area } = result;
 check(dimension === 3 && triangles.length === 12 && vertices.length === 4, 'hull of a tetrahedron');
 check(Math.abs(volume - 1 / 6) < 1e-12 && area > 0, 'hull volume and area');
+const equations: Float64Array = result.equations;
+check(equations.length === 16 && Math.abs(Math.hypot(equations[0] ?? 0, equations[1] ?? 0, equations[2] ?? 0) - 1) < 1e-15, 'equations: unit normals');
+check(hullkit.hull(xyz, { equations: false }).equations.length === 0, 'equations: false leaves them out');
 const merged = hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], { algorithm: 'giftwrap', mergeCoplanar: true });
 if (merged.dimension === 2 && merged.normal !== undefined) {
   const normal: Float64Array = merged.normal;

@@ -104,6 +104,70 @@ struct Delaunay3 {
 /// names the smallest and largest point).
 Delaunay3 delaunay3(PointSpan points, const Delaunay3Options& options = {});
 
+/// Point location in a tetrahedralization (dimension 3), exact: which tetrahedron holds a point,
+/// its barycentric coordinates there, and the nearest input point.
+///
+/// A point on a face, edge or vertex is held by every tetrahedron around it: the one with the
+/// lowest index is reported, so the answer depends only on the point (not on where a walk began,
+/// nor on threads). Every decision is made by orient3d and compare_distance3d on the coordinates
+/// scaled as delaunay3() scales them; a query coordinate that is not finite, or outside the range
+/// in which they are exact after that scaling (kPredicateMinMagnitude .. kPredicateMaxMagnitude,
+/// about 1e-75 .. 1e100 at unit scale), is an error naming the query.
+struct Delaunay3QueryOptions {
+    bool barycentric = false;  ///< also the barycentric coordinates (4 per query)
+    bool nearest = false;      ///< also the nearest input point
+    /// Threads: 0 every hardware thread, 1 the calling thread; the answers are the same.
+    unsigned threads = 0;
+};
+struct Delaunay3Queries {
+    /// Per query: the tetrahedron holding it, -1 outside the convex hull.
+    std::vector<std::int32_t> tetrahedron;
+    /// With `barycentric`: 4 per query, the weights of the tetrahedron's corners (in its corner
+    /// order) that give the query point; they sum to 1 up to rounding, are exactly 0 for a corner
+    /// whose opposite face holds the point and exactly 1 at a corner; NaN outside the hull.
+    std::vector<double> barycentric;
+    /// With `nearest`: per query, the nearest input point (exact distances; ties: the lowest index).
+    std::vector<std::int32_t> nearest;
+    std::string error;            ///< empty on success; on failure the arrays are empty
+    std::int64_t error_query = -1;
+
+    bool ok() const { return error.empty(); }
+};
+/// Locates every query (a flat x y z array) in `triangulation`, the delaunay3() result for `points`.
+/// Queries are sorted along a Hilbert curve and each walk starts where the previous one ended, so
+/// many queries cost little more than one walk each; they are spread over the threads.
+Delaunay3Queries delaunay3_locate(PointSpan points, const Delaunay3& triangulation, PointSpan queries,
+                                  const Delaunay3QueryOptions& options = {});
+
+/// The Voronoi diagram of the points, dual to their tetrahedralization (dimension 3).
+///
+/// Vertices are the circumcentres of the Delaunay cells: tetrahedra whose circumspheres coincide
+/// exactly (cospherical ties, decided by the exact in-sphere test) share one vertex. Each face
+/// separates two input points p < q and is dual to a Delaunay edge; edges inside a cospherical cell
+/// have no face. A bounded face is a convex polygon of vertices, counter-clockwise seen from q's
+/// side (its normal points from p to q, out of p's cell). An unbounded face (dual to a hull edge)
+/// lists the chain of vertices between its two rays, in the same orientation. A point's cell is
+/// bounded when it is not on the hull. Coordinates and volumes are rounded (floating point);
+/// which faces and vertices exist is exact.
+struct Voronoi3 {
+    std::vector<double> vertices;                 ///< x y z per Voronoi vertex
+    std::vector<std::uint32_t> tetrahedron_vertex;  ///< per tetrahedron: its Voronoi vertex
+    std::vector<std::uint32_t> face_points;       ///< 2 per face: the points p < q it separates
+    std::vector<std::uint32_t> face_offsets;      ///< face f: face_vertices[face_offsets[f] .. face_offsets[f + 1])
+    std::vector<std::uint32_t> face_vertices;
+    std::vector<std::uint8_t> face_bounded;       ///< per face: 1 bounded, 0 unbounded
+    std::vector<std::uint32_t> cell_offsets;      ///< point i's faces: cell_faces[cell_offsets[i] .. cell_offsets[i + 1])
+    std::vector<std::uint32_t> cell_faces;
+    /// Per point: the volume of its cell; +inf for an unbounded cell, NaN for a duplicate point
+    /// (its representative has the cell).
+    std::vector<double> volume;
+
+    std::size_t face_count() const { return face_points.size() / 2; }
+};
+/// The Voronoi diagram of `points` from `triangulation` (their delaunay3()). For input that is not
+/// 3D (dimension below 3) every cell is unbounded: no vertices or faces, volumes +inf.
+Voronoi3 delaunay3_voronoi(PointSpan points, const Delaunay3& triangulation);
+
 /// An exact check that `tetrahedra` (count index quadruples) is the Delaunay tetrahedralization
 /// of the distinct points of `points`: indices in range, every tetrahedron positively oriented
 /// (none flat), each face shared by at most two tetrahedra with opposite orientations, the boundary

@@ -116,6 +116,20 @@ struct Hull {
 /// predicates' exact range, see predicates.hpp), or an option combination that does not exist.
 Hull hull(PointSpan points, const HullOptions& options = {});
 
+/// The plane of each of `triangle_count` triangles (3 indices each into `points`), 4 doubles per
+/// triangle: nx ny nz offset, the unit normal on the side from which the triangle is seen
+/// counter-clockwise and the offset with n . x + offset = 0 on the plane. For a hull's triangles the
+/// normals point outwards and every point of the hull has n . x + offset <= 0: the facet equations
+/// of qconvex's `n` and scipy's ConvexHull.equations (for a polygon, dimension 2, every triangle's
+/// plane is the polygon's, on the side of Hull::normal). The triangles are exact, their planes are
+/// rounded: each normal is within about 1e-14 of the exact unit normal (the exact cross product of
+/// two edges, rounded once, for a nearly flat triangle), the offset within a few units in the last
+/// place of the corners' coordinates. A triangle without area (never one of a hull) gets 0 0 0 0.
+/// Throws std::invalid_argument for a corner out of range.
+std::vector<double> plane_equations(PointSpan points, const std::uint32_t* triangles, std::size_t triangle_count);
+/// plane_equations of hull.triangles.
+std::vector<double> plane_equations(PointSpan points, const Hull& hull);
+
 /// The hull of a cloud given in pieces (HullBuilder::finish). `hull` indexes `points`, the points
 /// the builder kept (the hull's vertices and nothing else: points not on the hull are gone), and
 /// `index` gives the caller's 64-bit index of each: the hull of the whole cloud has triangle

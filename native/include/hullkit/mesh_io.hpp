@@ -118,22 +118,28 @@ bool read_file(const std::string& path, std::string* out, std::string* error);
 // of range, a vertex listed twice, or a triangle corner not listed in Hull::vertices); a Hull
 // returned by hullkit::hull for `points` always fits.
 
-enum class OutputFormat { Off, Obj, Json, Xyz, Glb };
+enum class OutputFormat { Off, Obj, Json, Xyz, Glb, Normals };
 
-/// "off", "obj", "json", "xyz", "glb".
+/// "off", "obj", "json", "xyz", "glb", "normals".
 const char* output_format_name(OutputFormat format);
-/// Parses "off" / "obj" / "json" / "xyz" / "glb" (lower case); returns false and leaves *out alone otherwise.
+/// Parses "off" / "obj" / "json" / "xyz" / "glb" / "normals" (lower case); returns false and leaves
+/// *out alone otherwise.
 bool parse_output_format(const std::string& name, OutputFormat* out);
-/// Picks the format from a file name's extension (".off", ".obj", ".json", ".xyz", ".glb", any case);
-/// returns false and leaves *out alone for any other name.
+/// Picks the format from a file name's extension (".off", ".obj", ".json", ".xyz", ".glb",
+/// ".normals", any case); returns false and leaves *out alone for any other name.
 bool output_format_from_path(const std::string& path, OutputFormat* out);
 
 /// "OFF", "H F 0", H lines "x y z", F lines "3 i j k" with i j k indexing the listed vertices.
 std::string write_off(PointSpan points, const Hull& hull);
 /// H lines "v x y z", then F lines "f i j k" (1-based into the listed vertices).
 std::string write_obj(PointSpan points, const Hull& hull);
-/// One line: {"vertices":[input indices],"triangles":[[i,j,k],...] (input indices),
-/// "points":[[x,y,z],...] (in the order of "vertices"),"volume":V,"area":A}
+/// One line, self-contained: {"vertices":[input indices],"triangles":[[i,j,k],...],
+/// "points":[[x,y,z],...],"equations":[[nx,ny,nz,offset],...],"volume":V,"area":A,"dimension":D}.
+/// "points" holds the hull's vertices (in the order of Hull::vertices), "triangles" index "points"
+/// (as OFF's faces index its vertex lines), "vertices"[k] is the input index of "points"[k] (so
+/// the triangle [i,j,k] is the input's points vertices[i], vertices[j], vertices[k]), "equations"
+/// has the plane of each triangle (plane_equations: outward unit normal and offset,
+/// n . x + offset <= 0 inside); with merged faces also "faces", polygons indexing "points".
 /// `index`, when given, maps the hull's indices into `points` to the input's indices (a hull of
 /// a subset of the input, as HullBuilder returns: StreamedHull::index); JSON and XYZ write those.
 std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
@@ -146,6 +152,10 @@ std::string write_xyz(PointSpan points, const Hull& hull, const std::uint64_t* i
 /// segment, a point) is a POINTS primitive, an empty one a scene without nodes. Throws
 /// std::domain_error for a coordinate beyond float's range (about 3.4e38).
 std::string write_glb(PointSpan points, const Hull& hull);
+/// The plane of each face as qconvex's `n` writes them: a line "4" (the dimension plus one), a
+/// line with the face count F, then F lines "nx ny nz offset" (plane_equations; with merged faces,
+/// one per polygon, from its first three corners; else one per triangle).
+std::string write_normals(PointSpan points, const Hull& hull);
 /// Dispatches to one of the writers above.
 std::string write_hull(OutputFormat format, PointSpan points, const Hull& hull, const std::uint64_t* index = nullptr);
 /// write_hull straight into `file` in ~1 MiB pieces (the text is never held whole). Returns

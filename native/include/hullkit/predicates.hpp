@@ -172,6 +172,11 @@ bool insphere_scale_exponent(double max_abs_coordinate, double min_abs_nonzero_c
 /// [kInsphereMinMagnitude, kInsphereMaxMagnitude] (or 0).
 int insphere(const double* a, const double* b, const double* c, const double* d, const double* e);
 
+/// Which of a and b (pointers to x, y, z) is nearer to q: the exact sign of |a - q|^2 - |b - q|^2
+/// (-1: a is nearer, +1: b is nearer, 0: exactly as far). Exact for coordinates in orient3d's
+/// range (kPredicateMinMagnitude .. kPredicateMaxMagnitude, or 0).
+int compare_distance3d(const double* a, const double* b, const double* q);
+
 namespace detail {
 
 // Testing and diagnostics hooks. Same results as the public functions.

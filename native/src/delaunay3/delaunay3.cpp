@@ -68,6 +68,26 @@ Delaunay3 check_input(PointSpan points, Extent* extent) {
     return Delaunay3{};
 }
 
+}  // namespace
+
+namespace delaunay3_detail {
+
+bool scale_exponent_of(PointSpan points, int* exponent) {
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 3 * points.count; ++i) {
+        const double magnitude = std::fabs(points.xyz[i]);
+        if (!(magnitude <= std::numeric_limits<double>::max())) return false;
+        largest = std::max(largest, magnitude);
+        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+    }
+    *exponent = 0;
+    return insphere_scale_exponent(4.0 * largest, smallest, exponent);
+}
+
+}  // namespace delaunay3_detail
+
+namespace {
+
 /// Spreads the low 10 bits of v to every third bit.
 std::uint32_t spread3(std::uint32_t v) {
     v &= 0x3ffu;
@@ -220,22 +240,51 @@ void insertion_order(Points& points) {
 }
 
 /// The canonical corner order of a positively oriented tetrahedron: the lowest original index
-/// first, then the second lowest, the other two in the order that keeps the orientation. Returns
-/// the positions (0-3) of the corners in that order, packed 2 bits each.
-std::uint8_t canonical_rotation(const std::uint32_t* original_of_corner) {
-    int at[4];
-    for (int i = 0; i < 4; ++i) {
-        int rank = 0;
-        for (int j = 0; j < 4; ++j) rank += original_of_corner[j] < original_of_corner[i];
-        at[rank] = i;
+/// first, then the second lowest, the other two in the order that keeps the orientation; as the
+/// positions (0-3) of the corners in that order, packed 2 bits each. Tabulated by the corners'
+/// ranks (which corner is lowest, second, third), since this runs once per tetrahedron.
+struct RotationTable {
+    std::uint8_t by_ranks[256];  ///< [rank of corner 0 | rank of corner 1 << 2 | ... << 6]
+};
+constexpr RotationTable make_rotation_table() {
+    RotationTable table{};
+    for (int code = 0; code < 256; ++code) {
+        int at[4] = {-1, -1, -1, -1};
+        bool permutation = true;
+        for (int i = 0; i < 4; ++i) {
+            const int rank = (code >> (2 * i)) & 3;
+            if (at[rank] != -1) permutation = false;
+            at[rank] = i;
+        }
+        if (!permutation) continue;
+        int second = at[2], third = at[3];
+        if (second > third) {
+            const int swap = second;
+            second = third;
+            third = swap;
+        }
+        at[2] = second;
+        at[3] = third;
+        int inversions = 0;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) inversions += at[i] > at[j];
+        if (inversions & 1) {
+            at[2] = third;
+            at[3] = second;
+        }
+        table.by_ranks[code] = static_cast<std::uint8_t>(at[0] | at[1] << 2 | at[2] << 4 | at[3] << 6);
     }
-    if (at[2] > at[3]) std::swap(at[2], at[3]);
-    // An odd permutation swaps the last two.
-    int inversions = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) inversions += at[i] > at[j];
-    if (inversions & 1) std::swap(at[2], at[3]);
-    return static_cast<std::uint8_t>(at[0] | at[1] << 2 | at[2] << 4 | at[3] << 6);
+    return table;
+}
+constexpr RotationTable kRotations = make_rotation_table();
+
+std::uint8_t canonical_rotation(const std::uint32_t* original_of_corner) {
+    const std::uint32_t* o = original_of_corner;
+    const int r0 = (o[1] < o[0]) + (o[2] < o[0]) + (o[3] < o[0]);
+    const int r1 = (o[0] < o[1]) + (o[2] < o[1]) + (o[3] < o[1]);
+    const int r2 = (o[0] < o[2]) + (o[1] < o[2]) + (o[3] < o[2]);
+    const int r3 = 6 - r0 - r1 - r2;
+    return kRotations.by_ranks[r0 | r1 << 2 | r2 << 4 | r3 << 6];
 }
 
 /// Writes the tetrahedra into the mesh's own arrays and moves them into `out` (the output costs no

@@ -68,8 +68,17 @@ public:
         return detail::orient3d_semi_static(orient_bound_, p(a), p(b), p(c), p(d));
     }
     /// Whether e conflicts with tetrahedron `t` (its circumsphere, or for a ghost the open half-space
-    /// beyond its hull face, holds e), perturbed: never 0 for distinct points.
-    bool conflict(const std::uint32_t* t, std::uint32_t e) const;
+    /// beyond its hull face, holds e), perturbed: never 0 for distinct points. The common case, a
+    /// finite tetrahedron the semi-static bound decides, inline; the rest in conflict_exact.
+    bool conflict(const std::uint32_t* t, std::uint32_t e) const {
+        if (t[3] != kGhost) {
+            const double det = detail::insphere_stage_a_det(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
+            if (det > insphere_bound_) return true;
+            if (-det > insphere_bound_) return false;
+        }
+        return conflict_exact(t, e);
+    }
+    bool conflict_exact(const std::uint32_t* t, std::uint32_t e) const;
     /// The perturbed in-sphere sign of e against the positively oriented finite a, b, c, d.
     int insphere_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                            std::uint32_t e) const;
@@ -85,6 +94,13 @@ private:
     double orient_bound_;
     double insphere_bound_;
 };
+
+/// Index along a 3D Hilbert curve on a 1024^3 grid (each coordinate below 1024).
+std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+
+/// The power of two delaunay3() scales `points` by (insphere's exact range, with room for the
+/// perturbation's helper point); false when there is none or a coordinate is not finite.
+bool scale_exponent_of(PointSpan points, int* exponent);
 
 /// Bowyer-Watson insertion of every point of `points` (round by round of points.order) into one
 /// mesh; the points must not be all coplanar. `threads` as Delaunay3Options::threads: the mesh is

@@ -37,6 +37,12 @@ namespace delaunay3_detail {
 namespace {
 
 
+/// The two corners of a tetrahedron other than i and j (i != j).
+constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
+                                             {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
+                                             {{1, 3}, {0, 3}, {0, 0}, {0, 1}},
+                                             {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+
 /// Points in a round below this many are inserted serially; a partition gets at least this many.
 constexpr std::size_t kPartitionPoints = 16384;
 constexpr std::size_t kMaxPartitions = 8;
@@ -50,13 +56,16 @@ struct Shared {
     Predicates predicates;
     Mesh mesh;
     std::vector<std::uint8_t> mark;  ///< 0, 1 in the cavity being grown, 2 checked and not
+    /// Per point, its number + 1 on the boundary of the cavity being filled (0 otherwise); each
+    /// partition numbers only its own points (a cavity's corners are its own).
+    std::vector<std::uint32_t> vertex_id;
 };
 
 /// One partition's (or the serial) insertion: its workspace and, in a pass, its range of owned
 /// corners, its free slots and its block of fresh slots.
 class Worker {
 public:
-    explicit Worker(Shared& shared) : shared_(shared) { resize_table(64); }
+    explicit Worker(Shared& shared) : shared_(shared) { resize_table(32); }
 
     /// Owns everything and appends fresh slots at the end of the mesh (the serial insertion).
     void own_all(std::uint32_t start, std::vector<std::uint32_t>* free_slots) {
@@ -79,9 +88,10 @@ public:
     }
     bool owns(std::uint32_t t) const {
         const std::uint32_t* c = shared_.mesh.corner.data() + 4 * static_cast<std::size_t>(t);
-        for (int k = 0; k < 4; ++k)
-            if (c[k] != kGhost && (c[k] < lo_ || c[k] >= hi_)) return false;
-        return true;
+        // c in [lo, hi) as one unsigned comparison; the vertex at infinity belongs to everyone.
+        const std::uint32_t width = hi_ - lo_;
+        return ((c[0] - lo_ < width) & (c[1] - lo_ < width) & (c[2] - lo_ < width) &
+                ((c[3] - lo_ < width) | (c[3] == kGhost))) != 0;
     }
     /// Fresh slots of the block not used (returned to the shared free list after a pass).
     std::uint32_t block_next() const { return block_next_; }
@@ -162,23 +172,26 @@ private:
             for (std::uint32_t k = 0; k < 4; ++k) {
                 const std::uint32_t across = adjacent[4 * t + k];
                 const std::uint32_t u = across >> 2;
-                if (restricted_ && !owns(u)) {
-                    // Owned by no partition: never marked here (another partition may look at it);
-                    // in conflict it would have to change, so p waits for a later pass.
-                    if (shared_.predicates.conflict(corner + 4 * u, p)) {
-                        unmark();
-                        return false;
-                    }
-                } else if (mark[u] == 1) {
-                    continue;
-                } else if (mark[u] == 0) {
-                    if (shared_.predicates.conflict(corner + 4 * u, p)) {
+                // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
+                // its owner ever marks it: its mark can be read before its ownership is known.
+                const std::uint8_t seen = mark[u];
+                if (seen == 1) continue;
+                if (seen == 0) {
+                    if (restricted_ && !owns(u)) {
+                        // Owned by no partition: never marked (another partition may look at it);
+                        // in conflict it would have to change, so p waits for a later pass.
+                        if (shared_.predicates.conflict(corner + 4 * u, p)) {
+                            unmark();
+                            return false;
+                        }
+                    } else if (shared_.predicates.conflict(corner + 4 * u, p)) {
                         mark[u] = 1;
                         cavity_.push_back(u);
                         continue;
+                    } else {
+                        mark[u] = 2;
+                        checked_.push_back(u);
                     }
-                    mark[u] = 2;
-                    checked_.push_back(u);
                 }
                 Boundary b;
                 std::memcpy(b.corner, corner + 4 * t, sizeof b.corner);
@@ -224,8 +237,24 @@ private:
 
         std::uint32_t* corner = shared_.mesh.corner.data();
         std::uint32_t* adjacent = shared_.mesh.links();
-        if (4 * 3 * count > table_keys_.size()) resize_table(4 * 3 * count);
-        const std::size_t mask = table_keys_.size() - 1;
+        // The boundary's vertices numbered 0, 1, ... (per-vertex slots, cleared afterwards), so that
+        // an edge of the boundary indexes a square table directly: each edge is met twice, by the
+        // two new tetrahedra that share the face through it and p; the first leaves its face there,
+        // the second links the two and empties the entry again.
+        std::uint32_t vertices = 0;
+        for (Boundary& b : boundary_) {
+            for (std::uint32_t i = 0; i < 4; ++i) {
+                if (i == b.face) continue;
+                std::uint32_t& id = b.corner[i] == kGhost ? ghost_id_ : shared_.vertex_id[b.corner[i]];
+                if (id == 0) {
+                    id = ++vertices;
+                    numbered_.push_back(b.corner[i]);
+                }
+                b.local[i] = id - 1;
+            }
+        }
+        if (vertices > table_side_) resize_table(vertices);
+        std::size_t open = 0;  // edges met once so far
         for (std::size_t i = 0; i < count; ++i) {
             const Boundary& b = boundary_[i];
             const std::uint32_t n = slots_[i];
@@ -235,30 +264,22 @@ private:
             // Faces j != face contain p and the boundary edge of the other two corners.
             for (std::uint32_t j = 0; j < 4; ++j) {
                 if (j == b.face) continue;
-                std::uint32_t e[2] = {0, 0}, found = 0;
-                for (std::uint32_t i2 = 0; i2 < 4; ++i2)
-                    if (i2 != j && i2 != b.face) e[found++] = b.corner[i2];
-                const std::uint64_t key =
-                    e[0] < e[1] ? (std::uint64_t{e[0]} << 32 | e[1]) : (std::uint64_t{e[1]} << 32 | e[0]);
-                std::size_t h = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> 40) & mask;
-                for (;; h = (h + 1) & mask) {
-                    if (table_keys_[h] == kEmpty) {
-                        table_keys_[h] = key;
-                        table_values_[h] = 4 * n + j;
-                        used_.push_back(h);
-                        break;
-                    }
-                    if (table_keys_[h] == key) {
-                        const std::uint32_t other = table_values_[h];
-                        adjacent[4 * n + j] = other;
-                        adjacent[other] = 4 * n + j;
-                        break;
-                    }
+                const std::uint32_t e0 = b.local[kOtherTwo[j][b.face][0]], e1 = b.local[kOtherTwo[j][b.face][1]];
+                std::uint32_t& entry = table_[std::min(e0, e1) * table_side_ + std::max(e0, e1)];
+                if (entry == kNoFace) {
+                    entry = 4 * n + j;
+                    ++open;
+                } else {
+                    adjacent[4 * n + j] = entry;
+                    adjacent[entry] = 4 * n + j;
+                    entry = kNoFace;
+                    --open;
                 }
             }
         }
-        for (const std::size_t h : used_) table_keys_[h] = kEmpty;
-        used_.clear();
+        for (const std::uint32_t v : numbered_) (v == kGhost ? ghost_id_ : shared_.vertex_id[v]) = 0;
+        numbered_.clear();
+        if (open != 0) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
         last_ = slots_[0];
         for (std::size_t i = 0; i < count; ++i)
             if (boundary_[i].corner[3] != kGhost) {
@@ -282,19 +303,18 @@ private:
         shared_.mark.resize(tetrahedra, 0);
     }
 
-    void resize_table(std::size_t at_least) {
-        std::size_t size = 64;
-        while (size < at_least) size *= 2;
-        table_keys_.assign(size, kEmpty);
-        table_values_.assign(size, 0);
+    void resize_table(std::uint32_t side) {
+        table_side_ = std::max<std::uint32_t>(2 * table_side_, side);
+        table_.assign(std::size_t{table_side_} * table_side_, kNoFace);
     }
 
     struct Boundary {
-        std::uint32_t corner[4];
-        std::uint32_t outside;
+        std::uint32_t corner[4];  ///< the new tetrahedron's corners: p at `face`
+        std::uint32_t local[4];   ///< the other corners' numbers on the cavity boundary
+        std::uint32_t outside;    ///< the neighbour across `face`, as 4 * tetrahedron + its face
         std::uint32_t face;
     };
-    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+    static constexpr std::uint32_t kNoFace = 0xffffffffu;
 
     Shared& shared_;
     bool restricted_ = false;
@@ -304,9 +324,10 @@ private:
     std::uint32_t block_next_ = 0, block_end_ = 0;
     std::vector<std::uint32_t> cavity_, checked_, slots_;
     std::vector<Boundary> boundary_;
-    std::vector<std::uint64_t> table_keys_;
-    std::vector<std::uint32_t> table_values_;
-    std::vector<std::size_t> used_;
+    std::vector<std::uint32_t> table_;  ///< table_side_^2 faces by boundary edge, all kNoFace between points
+    std::uint32_t table_side_ = 0;
+    std::vector<std::uint32_t> numbered_;  ///< the vertices numbered for the current cavity
+    std::uint32_t ghost_id_ = 0;
     std::uint32_t random_ = 0x9e3779b9u;
 };
 
@@ -337,6 +358,7 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     mesh.corner.resize(20);
     mesh.adjacent.resize(20);
     shared.mark.assign(5, 0);
+    shared.vertex_id.assign(m, 0);
     for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
     // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
     auto face_set = [&](int t, int k) {

@@ -102,13 +102,15 @@ int Predicates::coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32
     return perturbation(w, 3, p(e));
 }
 
-bool Predicates::conflict(const std::uint32_t* t, std::uint32_t e) const {
+bool Predicates::conflict_exact(const std::uint32_t* t, std::uint32_t e) const {
     if (t[3] == kGhost) {
         const int side = orient(t[0], t[1], t[2], e);
         if (side != 0) return side > 0;
         return coplanar_perturbed(t[0], t[1], t[2], e) > 0;
     }
-    return insphere_perturbed(t[0], t[1], t[2], t[3], e) > 0;
+    if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) return s > 0;
+    const double* w[4] = {p(t[0]), p(t[1]), p(t[2]), p(t[3])};
+    return perturbation(w, 4, p(e)) > 0;
 }
 
 }  // namespace delaunay3_detail

@@ -64,18 +64,14 @@ Delaunay3VerifyReport verify_delaunay3(PointSpan points, const std::uint32_t* te
     if (!report.ok) return report;
 
     // The same exact power-of-two rescaling as delaunay3().
-    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < 3 * n; ++i) {
-        const double m = std::fabs(points.xyz[i]);
-        if (!(m <= std::numeric_limits<double>::max())) {
+        if (!(std::fabs(points.xyz[i]) <= std::numeric_limits<double>::max())) {
             problem("point " + std::to_string(i / 3) + " has a non-finite coordinate");
             return report;
         }
-        largest = std::max(largest, m);
-        if (m != 0.0) smallest = std::min(smallest, m);
     }
     int exponent = 0;
-    if (!insphere_scale_exponent(4.0 * largest, smallest, &exponent)) {
+    if (!delaunay3_detail::scale_exponent_of(points, &exponent)) {
         problem("coordinates span too many orders of magnitude for exact in-sphere tests");
         return report;
     }

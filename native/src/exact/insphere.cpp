@@ -1,5 +1,6 @@
 // hullkit: the exact in-sphere test (see predicates.hpp for the contract and the valid range), the
-// predicate of degree 5 that 3D Delaunay by lifting to 4D decides everything with.
+// predicate of degree 5 that 3D Delaunay by lifting to 4D decides everything with, and the 3D
+// distance comparison its nearest-point queries use.
 //
 // det = alift * M(b,c,d) - blift * M(c,d,a) + clift * M(d,a,b) - dlift * M(a,b,c), rows relative
 // to e (aex = ax - ex, ..., alift = aex^2 + aey^2 + aez^2) and M the 3x3 minors of the x, y, z
@@ -275,7 +276,32 @@ inline int insphere_impl(const double* a, const double* b, const double* c, cons
     return insphere_adapt(a, b, c, d, e, s.permanent, stage);
 }
 
+/// Stage D of compare_distance3d: |a-q|^2 - |b-q|^2 from the exact differences.
+int compare_distance3d_exact(const double* a, const double* b, const double* q) {
+    Expansion sum;
+    for (int k = 0; k < 3; ++k) {
+        const Expansion da = difference(a[k], q[k]), db = difference(b[k], q[k]);
+        sum = add(add(sum, multiply(da, da)), negate(multiply(db, db)));
+    }
+    return expansion_sign(static_cast<int>(sum.size()), sum.data());
+}
+
 }  // namespace
+
+int compare_distance3d(const double* a, const double* b, const double* q) {
+    // Forward error of the sum of three squares minus three squares: each square carries its
+    // difference's rounding twice and its own (3 eps), the five additions one each: below
+    // 8 eps (plus higher order) times the sum of the six squares.
+    double a2 = 0.0, b2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double da = a[k] - q[k], db = b[k] - q[k];
+        a2 += da * da;
+        b2 += db * db;
+    }
+    const double det = a2 - b2;
+    if (std::fabs(det) > (9.0 + 64.0 * kEpsilon) * kEpsilon * (a2 + b2)) return sign_of(det);
+    return compare_distance3d_exact(a, b, q);
+}
 
 int insphere(const double* a, const double* b, const double* c, const double* d, const double* e) {
     return insphere_impl(a, b, c, d, e, nullptr);

@@ -29,12 +29,14 @@ const char* output_format_name(OutputFormat format) {
         case OutputFormat::Json: return "json";
         case OutputFormat::Xyz: return "xyz";
         case OutputFormat::Glb: return "glb";
+        case OutputFormat::Normals: return "normals";
     }
     return "?";
 }
 
 bool parse_output_format(const std::string& name, OutputFormat* out) {
-    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json, OutputFormat::Xyz, OutputFormat::Glb}) {
+    for (OutputFormat format : {OutputFormat::Off, OutputFormat::Obj, OutputFormat::Json, OutputFormat::Xyz, OutputFormat::Glb,
+                                OutputFormat::Normals}) {
         if (name == output_format_name(format)) {
             *out = format;
             return true;
@@ -249,12 +251,22 @@ struct InputIndex {
     std::uint64_t operator()(std::uint32_t v) const { return index ? index[v] : v; }
 };
 
-void put_json(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
-    {  // only to validate: JSON keeps input indices
-        const VertexPositions position(points, hull);
-        for (std::uint32_t corner : hull.triangles) position.of(corner);
+/// One JSON array of numbers: [a,b,c] (non-finite as null).
+void put_json_numbers(TextOut& out, const double* values, int count) {
+    out.put('[');
+    for (int k = 0; k < count; ++k) {
+        if (k) out.put(',');
+        out.json_number(values[k]);
     }
-    out.reserve(80 * hull.vertices.size() + 32 * hull.face_count() + 64);
+    out.put(']');
+}
+
+/// Self-contained: "points" holds the hull's vertices, "triangles" and "faces" index "points",
+/// "vertices" gives the input index of each point, "equations" the plane of each triangle.
+void put_json(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
+    const VertexPositions position(points, hull);
+    const std::vector<double> equations = plane_equations(points, hull);
+    out.reserve(80 * hull.vertices.size() + 120 * hull.face_count() + 64);
     out.put("{\"vertices\":[");
     for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
         if (i) out.put(',');
@@ -265,36 +277,35 @@ void put_json(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
     for (std::size_t i = 0; i < hull.triangles.size(); i += 3) {
         if (i) out.put(',');
         out.put('[');
-        out.uint(id(hull.triangles[i]));
+        out.uint(position.of(hull.triangles[i]));
         out.put(',');
-        out.uint(id(hull.triangles[i + 1]));
+        out.uint(position.of(hull.triangles[i + 1]));
         out.put(',');
-        out.uint(id(hull.triangles[i + 2]));
+        out.uint(position.of(hull.triangles[i + 2]));
         out.put(']');
         out.record_done();
     }
     out.put("],\"points\":[");
     for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
         if (i) out.put(',');
-        const double* p = points[hull.vertices[i]];
-        out.put('[');
-        out.json_number(p[0]);
-        out.put(',');
-        out.json_number(p[1]);
-        out.put(',');
-        out.json_number(p[2]);
-        out.put(']');
+        put_json_numbers(out, points[hull.vertices[i]], 3);
+        out.record_done();
+    }
+    out.put("],\"equations\":[");
+    for (std::size_t t = 0; t < hull.face_count(); ++t) {
+        if (t) out.put(',');
+        put_json_numbers(out, &equations[4 * t], 4);
         out.record_done();
     }
     out.put(']');
-    if (!hull.face_offsets.empty()) {  // merge_coplanar: the faces as polygons of input indices
+    if (!hull.face_offsets.empty()) {  // merge_coplanar: the faces as polygons, indices into "points"
         out.put(",\"faces\":[");
         for (std::size_t f = 0; f + 1 < hull.face_offsets.size(); ++f) {
             if (f) out.put(',');
             out.put('[');
             for (std::uint32_t k = hull.face_offsets[f]; k < hull.face_offsets[f + 1]; ++k) {
                 if (k > hull.face_offsets[f]) out.put(',');
-                out.uint(id(hull.face_vertices[k]));
+                out.uint(position.of(hull.face_vertices[k]));
             }
             out.put(']');
             out.record_done();
@@ -308,6 +319,38 @@ void put_json(TextOut& out, PointSpan points, const Hull& hull, InputIndex id) {
     out.put(",\"dimension\":");
     out.put(std::to_string(hull.dimension));
     out.put("}\n");
+}
+
+/// The plane of each face, qconvex's `n` layout: "4" (the dimension plus one), the face count, then
+/// "nx ny nz offset" a line. Faces: the merged polygons (each from its first three corners, never
+/// collinear in a convex polygon) when the hull has them, else the triangles.
+void put_normals(TextOut& out, PointSpan points, const Hull& hull) {
+    const VertexPositions validate(points, hull);
+    std::vector<double> equations;
+    if (hull.face_offsets.empty()) {
+        equations = plane_equations(points, hull);
+    } else {
+        std::vector<std::uint32_t> firsts;
+        for (std::size_t f = 0; f + 1 < hull.face_offsets.size(); ++f) {
+            if (hull.face_offsets[f + 1] - hull.face_offsets[f] < 3) throw std::invalid_argument("a face has fewer than 3 corners");
+            firsts.insert(firsts.end(), hull.face_vertices.begin() + hull.face_offsets[f],
+                          hull.face_vertices.begin() + hull.face_offsets[f] + 3);
+        }
+        equations = plane_equations(points, firsts.data(), firsts.size() / 3);
+    }
+    out.reserve(80 * (equations.size() / 4) + 16);
+    out.put("4\n");
+    out.uint(equations.size() / 4);
+    out.put('\n');
+    for (std::size_t k = 0; k < equations.size(); k += 4) {
+        out.number(equations[k]);
+        for (int c = 1; c < 4; ++c) {
+            out.put(' ');
+            out.number(equations[k + c]);
+        }
+        out.put('\n');
+        out.record_done();
+    }
 }
 
 /// The hull's vertices alone, "x y z # INDEX" a line, which the point readers read back.
@@ -430,6 +473,7 @@ void put_hull(TextOut& out, OutputFormat format, PointSpan points, const Hull& h
         case OutputFormat::Json: return put_json(out, points, hull, id);
         case OutputFormat::Xyz: return put_xyz(out, points, hull, id);
         case OutputFormat::Glb: return put_glb(out, points, hull);
+        case OutputFormat::Normals: return put_normals(out, points, hull);
     }
     throw std::invalid_argument("unknown output format");
 }
@@ -454,6 +498,10 @@ std::string write_obj(PointSpan points, const Hull& hull) {
 
 std::string write_json(PointSpan points, const Hull& hull, const std::uint64_t* index) {
     return to_text([&](TextOut& out) { put_json(out, points, hull, InputIndex{index}); });
+}
+
+std::string write_normals(PointSpan points, const Hull& hull) {
+    return to_text([&](TextOut& out) { put_normals(out, points, hull); });
 }
 
 std::string write_glb(PointSpan points, const Hull& hull) {
