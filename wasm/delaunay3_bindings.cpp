@@ -1,10 +1,11 @@
-// embind registrations for the 3D Delaunay tetrahedralization only: the friendly API lives in
-// delaunay3.js. No geometry here.
+// embind registrations for the 3D Delaunay tetrahedralization and its queries (point location,
+// nearest points, the Voronoi diagram): the friendly API lives in delaunay3.js. No geometry here.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "embind_views.hpp"
 #include "hullkit/delaunay3.hpp"
@@ -57,6 +58,74 @@ val verify_delaunay3_from_heap(std::uintptr_t xyz, std::uint32_t point_count, st
     return out;
 }
 
+// ---------------------------------------------------------------- queries on a tetrahedralization
+
+/// A tetrahedralization the JS layer handed back, as malloc'ed blocks (checked there: indices in
+/// range, neighbours that share their faces back, representatives of lower index): what
+/// delaunay3_locate and delaunay3_voronoi read of a Delaunay3.
+struct HeapTetrahedralization {
+    int dimension = -1;
+    std::uintptr_t tetrahedra = 0;  ///< 4 per tetrahedron (dimension 3)
+    std::uint32_t tetrahedron_count = 0;
+    std::uintptr_t neighbors = 0;  ///< 4 per tetrahedron (dimension 3), 3 per triangle (dimension 2)
+    std::uintptr_t triangles = 0;  ///< 3 per triangle (dimension 2)
+    std::uint32_t triangle_count = 0;
+    std::uintptr_t vertices = 0;  ///< dimension 1 and 0
+    std::uint32_t vertex_count = 0;
+    std::uintptr_t representative = 0;  ///< one per point
+};
+
+template <typename T>
+std::vector<T> block(std::uintptr_t address, std::size_t count) {
+    const T* first = heap_at<T>(address);
+    return count ? std::vector<T>(first, first + count) : std::vector<T>();
+}
+
+/// The Delaunay3 the arrays describe (a copy: the core's queries take a Delaunay3; nothing is
+/// tetrahedralized again).
+hullkit::Delaunay3 rebuilt(const HeapTetrahedralization& h, std::uint32_t point_count) {
+    hullkit::Delaunay3 d;
+    d.dimension = h.dimension;
+    d.tetrahedra = block<std::uint32_t>(h.tetrahedra, 4 * std::size_t{h.tetrahedron_count});
+    d.triangles = block<std::uint32_t>(h.triangles, 3 * std::size_t{h.triangle_count});
+    d.neighbors = block<std::int32_t>(h.neighbors, h.dimension == 3 ? 4 * std::size_t{h.tetrahedron_count}
+                                                                    : 3 * std::size_t{h.triangle_count});
+    d.vertices = block<std::uint32_t>(h.vertices, h.vertex_count);
+    d.representative = block<std::uint32_t>(h.representative, point_count);
+    for (std::uint32_t i = 0; i < point_count; ++i) d.duplicate_count += d.representative[i] != i;
+    return d;
+}
+
+hullkit::Delaunay3Queries locate_from_heap(std::uintptr_t xyz, std::uint32_t count, const HeapTetrahedralization& h,
+                                           std::uintptr_t queries, std::uint32_t query_count, bool barycentric,
+                                           bool nearest) {
+    hullkit::Delaunay3QueryOptions options;
+    options.barycentric = barycentric;
+    options.nearest = nearest;
+    options.threads = 1;  // no threads in the wasm build; the answers are the same
+    return hullkit::delaunay3_locate(hullkit::PointSpan(heap_at<double>(xyz), count), rebuilt(h, count),
+                                     hullkit::PointSpan(heap_at<double>(queries), query_count), options);
+}
+
+val tetrahedron_view(const hullkit::Delaunay3Queries& q) { return view_of(q.tetrahedron); }
+val barycentric_view(const hullkit::Delaunay3Queries& q) { return view_of(q.barycentric); }
+val nearest_view(const hullkit::Delaunay3Queries& q) { return view_of(q.nearest); }
+double error_query(const hullkit::Delaunay3Queries& q) { return static_cast<double>(q.error_query); }
+
+hullkit::Voronoi3 voronoi_from_heap(std::uintptr_t xyz, std::uint32_t count, const HeapTetrahedralization& h) {
+    return hullkit::delaunay3_voronoi(hullkit::PointSpan(heap_at<double>(xyz), count), rebuilt(h, count));
+}
+
+val voronoi_vertices_view(const hullkit::Voronoi3& v) { return view_of(v.vertices); }
+val tetrahedron_vertex_view(const hullkit::Voronoi3& v) { return view_of(v.tetrahedron_vertex); }
+val face_points_view(const hullkit::Voronoi3& v) { return view_of(v.face_points); }
+val face_offsets_view(const hullkit::Voronoi3& v) { return view_of(v.face_offsets); }
+val face_vertices_view(const hullkit::Voronoi3& v) { return view_of(v.face_vertices); }
+val face_bounded_view(const hullkit::Voronoi3& v) { return view_of(v.face_bounded); }
+val cell_offsets_view(const hullkit::Voronoi3& v) { return view_of(v.cell_offsets); }
+val cell_faces_view(const hullkit::Voronoi3& v) { return view_of(v.cell_faces); }
+val volume_view(const hullkit::Voronoi3& v) { return view_of(v.volume); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(hullkit_delaunay3) {
@@ -75,4 +144,33 @@ EMSCRIPTEN_BINDINGS(hullkit_delaunay3) {
         .function("representativeView", &representative_view);
     emscripten::function("delaunay3FromHeap", &delaunay3_from_heap);
     emscripten::function("verifyDelaunay3FromHeap", &verify_delaunay3_from_heap);
+
+    emscripten::value_object<HeapTetrahedralization>("HeapTetrahedralization")
+        .field("dimension", &HeapTetrahedralization::dimension)
+        .field("tetrahedra", &HeapTetrahedralization::tetrahedra)
+        .field("tetrahedronCount", &HeapTetrahedralization::tetrahedron_count)
+        .field("neighbors", &HeapTetrahedralization::neighbors)
+        .field("triangles", &HeapTetrahedralization::triangles)
+        .field("triangleCount", &HeapTetrahedralization::triangle_count)
+        .field("vertices", &HeapTetrahedralization::vertices)
+        .field("vertexCount", &HeapTetrahedralization::vertex_count)
+        .field("representative", &HeapTetrahedralization::representative);
+    emscripten::class_<hullkit::Delaunay3Queries>("Delaunay3Queries")
+        .property("error", &hullkit::Delaunay3Queries::error)
+        .function("errorQuery", &error_query)
+        .function("tetrahedronView", &tetrahedron_view)
+        .function("barycentricView", &barycentric_view)
+        .function("nearestView", &nearest_view);
+    emscripten::class_<hullkit::Voronoi3>("Voronoi3")
+        .function("verticesView", &voronoi_vertices_view)
+        .function("tetrahedronVertexView", &tetrahedron_vertex_view)
+        .function("facePointsView", &face_points_view)
+        .function("faceOffsetsView", &face_offsets_view)
+        .function("faceVerticesView", &face_vertices_view)
+        .function("faceBoundedView", &face_bounded_view)
+        .function("cellOffsetsView", &cell_offsets_view)
+        .function("cellFacesView", &cell_faces_view)
+        .function("volumeView", &volume_view);
+    emscripten::function("delaunay3LocateFromHeap", &locate_from_heap);
+    emscripten::function("delaunay3VoronoiFromHeap", &voronoi_from_heap);
 }

@@ -266,6 +266,60 @@ export interface Hullkit {
     options?: VerifyDelaunay3Options,
   ): Delaunay3VerifyReport;
   /**
+   * Exact point location in a tetrahedralization: for each query point (x y z per query), the
+   * tetrahedron of `triangulation` holding it, or -1 outside the convex hull; with
+   * `{barycentric: true}` its barycentric coordinates there, with `{nearest: true}` the nearest
+   * input point. A point on a face, edge or vertex is held by every tetrahedron around it: the one
+   * with the lowest index is reported, so the answer depends only on the point. Every decision is
+   * made by exact predicates (orient3d, and an exact comparison of squared distances), never by a
+   * rounded volume. Queries are sorted along a Hilbert curve and each walk starts where the
+   * previous one ended, so many queries cost little more than one walk each.
+   *
+   * `triangulation` is what {@link Hullkit.delaunay3} returned for the same `xyz`: its arrays go
+   * back into the core, which answers from them (nothing is tetrahedralized again). They are
+   * checked for consistency (indices in range, neighbours that share their faces back), not for
+   * geometry: check arrays from elsewhere with {@link Hullkit.verifyDelaunay3} first. Coplanar and
+   * collinear points have no tetrahedra (`tetrahedron` is all -1) but a nearest point.
+   *
+   * @example
+   * const t = hullkit.delaunay3(xyz);
+   * const { tetrahedron, barycentric } = hullkit.locate3(xyz, t, [0.1, 0.2, 0.3], { barycentric: true });
+   * // tetrahedron[0] >= 0: the point is 0.1 0.2 0.3 = Σ barycentric[k] · corner k of that tetrahedron
+   *
+   * @throws {HullkitError} for a non-finite query coordinate or one too far from the points' scale
+   *   to be decided exactly (`queryIndex` names the query), a triangulation whose arrays do not fit
+   *   the points (the message says which entry), an unknown option or a non-boolean flag.
+   * @throws {TypeError} for points or queries that are not a Float64Array or an array of numbers.
+   */
+  locate3(
+    xyz: Float64Array | ArrayLike<number>,
+    triangulation: Delaunay3Triangulation,
+    queries: Float64Array | ArrayLike<number>,
+    options?: Locate3Options,
+  ): Locate3Result;
+  /**
+   * The Voronoi diagram of `xyz`, dual to its tetrahedralization `triangulation` (what
+   * {@link Hullkit.delaunay3} returned for the same points, checked as {@link Hullkit.locate3}
+   * checks it): a vertex at the circumcentre of each Delaunay cell, a face between each pair of
+   * points joined by a Delaunay edge, and each point's cell with its volume. Which vertices and
+   * faces exist is decided exactly (cospherical tetrahedra, as in a grid's cubes, share one
+   * vertex by the exact in-sphere test); coordinates and volumes are rounded. Points on the convex
+   * hull have unbounded cells (volume `Infinity`). Below dimension 3 every cell is unbounded: no
+   * vertices or faces.
+   *
+   * @example
+   * const v = hullkit.voronoi3(xyz, hullkit.delaunay3(xyz));
+   * for (let f = v.cellOffsets[i]; f < v.cellOffsets[i + 1]; f++) {
+   *   const face = v.cellFaces[f];
+   *   const corners = v.faceVertices.subarray(v.faceOffsets[face], v.faceOffsets[face + 1]);
+   *   // corners index v.vertices (x y z each); v.faceBounded[face] === 0 on an unbounded face
+   * }
+   *
+   * @throws {HullkitError} for a triangulation whose arrays do not fit the points.
+   * @throws {TypeError} for points that are not a Float64Array or an array of numbers.
+   */
+  voronoi3(xyz: Float64Array | ArrayLike<number>, triangulation: Delaunay3Triangulation): Voronoi3Result;
+  /**
    * Checks a traverse moved along the scene's route against its obstacles, one check per leg. A
    * straight translation: the convex hull of each part at both ends of a leg contains all it
    * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
@@ -505,6 +559,79 @@ export interface VerifyDelaunay3Options {
   perturbed?: boolean;
 }
 
+/**
+ * What {@link Hullkit.locate3} and {@link Hullkit.voronoi3} read of a tetrahedralization: a
+ * {@link Delaunay3Result} (pass the whole object). `tetrahedra` and `neighbors` are read for
+ * dimension 3, `triangles` and `neighbors` for dimension 2, `vertices` below.
+ */
+export interface Delaunay3Triangulation {
+  dimension: number;
+  tetrahedra?: Uint32Array | ArrayLike<number>;
+  neighbors?: Int32Array | ArrayLike<number>;
+  triangles?: Uint32Array | ArrayLike<number>;
+  vertices?: Uint32Array | ArrayLike<number>;
+  /** One per point: its own index, or the lower index of the point with its coordinates. */
+  representative: Uint32Array | ArrayLike<number>;
+}
+
+export interface Locate3Options {
+  /** Also the barycentric coordinates of each query in its tetrahedron (default false). */
+  barycentric?: boolean;
+  /** Also the nearest input point to each query (default false). */
+  nearest?: boolean;
+}
+
+export interface Locate3Result {
+  /**
+   * Per query: the tetrahedron holding it (the lowest index when it lies on a shared face, edge or
+   * vertex), or -1 outside the convex hull (and always -1 when the points do not span 3D).
+   */
+  tetrahedron: Int32Array;
+  /**
+   * With `barycentric`: 4 per query, the weights of the tetrahedron's corners (in its corner order)
+   * that give the query point: they sum to 1 up to rounding, are exactly 0 for a corner whose
+   * opposite face holds the point and exactly 1 at a corner; NaN outside the hull.
+   */
+  barycentric?: Float64Array;
+  /**
+   * With `nearest`: per query, the nearest input point (exact distances; ties go to the lowest
+   * index, so never a duplicate); -1 only when there are no points.
+   */
+  nearest?: Int32Array;
+}
+
+/**
+ * The Voronoi diagram of 3D points. Face f separates points `facePoints[2f] < facePoints[2f + 1]`
+ * (p < q) and is the polygon of Voronoi vertices
+ * `faceVertices.subarray(faceOffsets[f], faceOffsets[f + 1])`, counter-clockwise seen from q's side
+ * (its normal points from p to q). Point i's cell is bounded by the faces
+ * `cellFaces.subarray(cellOffsets[i], cellOffsets[i + 1])`.
+ */
+export interface Voronoi3Result {
+  /** x y z per Voronoi vertex: the circumcentres of the Delaunay cells (rounded). */
+  vertices: Float64Array;
+  /** Per tetrahedron: its Voronoi vertex (cospherical tetrahedra share one). */
+  tetrahedronVertex: Uint32Array;
+  /** 2 per face: the points p < q it separates (a Delaunay edge). */
+  facePoints: Uint32Array;
+  /** One more than there are faces: where each face's vertices start in `faceVertices`. */
+  faceOffsets: Uint32Array;
+  faceVertices: Uint32Array;
+  /**
+   * Per face: 1 bounded (a convex polygon), 0 unbounded (dual to a hull edge: the chain of
+   * vertices between its two rays, in the same orientation).
+   */
+  faceBounded: Uint8Array;
+  /** One more than there are points: where each point's faces start in `cellFaces`. */
+  cellOffsets: Uint32Array;
+  cellFaces: Uint32Array;
+  /**
+   * Per point: the volume of its cell (rounded); `Infinity` for an unbounded cell (a point on the
+   * convex hull), NaN for a duplicate (its representative has the cell).
+   */
+  volume: Float64Array;
+}
+
 export interface Delaunay3VerifyReport {
   /** True when nothing is wrong. */
   ok: boolean;
@@ -709,11 +836,13 @@ export interface RouteChecker extends DisposableIfSupported {
 
 /** What hullkit throws for bad input: the message says what is wrong and where. */
 export class HullkitError extends Error {
-  /** `pointIndex` is kept when it is 0 or more. */
-  constructor(message: string, options?: { pointIndex?: number });
+  /** `pointIndex` and `queryIndex` are kept when they are 0 or more. */
+  constructor(message: string, options?: { pointIndex?: number; queryIndex?: number });
   name: 'HullkitError';
   /** Index of the point to blame, when there is one. */
   pointIndex?: number;
+  /** locate3: index of the query to blame (a non-finite or out-of-range coordinate). */
+  queryIndex?: number;
   /** readPoints / readPoints2d / readMesh: the 1-based line the reader names, when it names one. */
   line?: number;
 }

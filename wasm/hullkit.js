@@ -3,7 +3,7 @@
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
 import { delaunay, delaunayFind, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
-import { delaunay3, verifyDelaunay3 } from './delaunay3.js';
+import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
 import { checkRoute, RouteChecker } from './route.js';
 
 export { HullkitError };
@@ -45,6 +45,8 @@ export default async function createHullkit() {
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
     delaunay3: (xyz, options) => delaunay3(core, xyz, options),
     verifyDelaunay3: (xyz, tetrahedra, options) => verifyDelaunay3(core, xyz, tetrahedra, options),
+    locate3: (xyz, triangulation, queries, options) => locate3(core, xyz, triangulation, queries, options),
+    voronoi3: (xyz, triangulation) => voronoi3(core, xyz, triangulation),
     checkRoute: (scene, options) => checkRoute(core, scene, options),
     RouteChecker: class extends RouteChecker {
       constructor(scene, options) {

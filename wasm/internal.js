@@ -2,10 +2,11 @@
 // Not part of the public API (hullkit.js re-exports HullkitError).
 
 export class HullkitError extends Error {
-  constructor(message, { pointIndex } = {}) {
+  constructor(message, { pointIndex, queryIndex } = {}) {
     super(message);
     this.name = 'HullkitError';
     if (pointIndex !== undefined && pointIndex >= 0) this.pointIndex = pointIndex;
+    if (queryIndex !== undefined && queryIndex >= 0) this.queryIndex = queryIndex;
   }
 }
 

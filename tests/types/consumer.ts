@@ -4,8 +4,8 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, MeshData,
-  RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, VoronoiCells,
+  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, MeshData,
+  RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells,
 } from 'hullkit';
 
 function check(condition: boolean, what: string): void {
@@ -100,6 +100,19 @@ check(planar.dimension === 2 && planar.triangles.length === 6 && up[2] === 1 && 
 const checked: Delaunay3VerifyReport = hullkit.verifyDelaunay3(cubeAndCentre, tetrahedra, { perturbed: true });
 check(checked.ok && checked.problemCount === 0 && checked.distinctPoints === 9 && checked.hullTriangles === 12, 'verifyDelaunay3');
 check(tetrahedralization.duplicateCount === 0 && tetrahedralization.representative.length === 9, 'delaunay3 duplicates');
+// Queries on it: the tetrahedron holding a point, barycentric weights, the nearest point; Voronoi cells
+const located: Locate3Result = hullkit.locate3(cubeAndCentre, tetrahedralization, [0.4, 0.5, 0.5, 2, 2, 2], { barycentric: true, nearest: true });
+const holding: Int32Array = located.tetrahedron;
+const weights: Float64Array | undefined = located.barycentric;
+check(holding.length === 2 && (holding[0] ?? -1) >= 0 && holding[1] === -1, 'locate3: inside, then outside the hull');
+check(weights !== undefined && Math.abs((weights[0] ?? 0) + (weights[1] ?? 0) + (weights[2] ?? 0) + (weights[3] ?? 0) - 1) < 1e-12, 'locate3: barycentric');
+check(located.nearest?.[0] === 8 && located.nearest[1] === 7, 'locate3: nearest (the centre, then the corner 1 1 1)');
+check(hullkit.locate3(cubeAndCentre, tetrahedralization, [0.5, 0.5, 0.5]).barycentric === undefined, 'locate3: barycentric on request');
+const cellsOf: Voronoi3Result = hullkit.voronoi3(cubeAndCentre, tetrahedralization);
+const centreVolume: number = cellsOf.volume[8] ?? 0;
+check(Math.abs(centreVolume - 9 / 16) < 1e-12 && cellsOf.volume[0] === Infinity, 'voronoi3: the centre\'s cell, |x| + |y| + |z| <= 3/4, has volume 9/16');
+const faceRing: Uint32Array = cellsOf.faceVertices.subarray(cellsOf.faceOffsets[0] ?? 0, cellsOf.faceOffsets[1] ?? 0);
+check(faceRing.length >= 1 && cellsOf.faceBounded instanceof Uint8Array && cellsOf.tetrahedronVertex.length === 12, 'voronoi3: faces');
 
 // route checking: legs narrowed by their status
 const scene: RouteScene = {

@@ -20,6 +20,10 @@ hullkit.delaunay3([[0, 0, 0]]); // error
 hullkit.delaunay3(xyz, { threads: 2 }); // error
 const flat: Uint32Array = hullkit.delaunay3(xyz).neighbors; // error
 hullkit.verifyDelaunay3(xyz, hullkit.delaunay3(xyz)); // error
+hullkit.locate3(xyz, hullkit.delaunay3(xyz).tetrahedra, xyz); // error
+hullkit.locate3(xyz, hullkit.delaunay3(xyz), xyz, { exact: true }); // error
+const located: Float64Array = hullkit.locate3(xyz, hullkit.delaunay3(xyz), xyz).tetrahedron; // error
+const volumes: Uint32Array = hullkit.voronoi3(xyz, hullkit.delaunay3(xyz)).volume; // error
 const position = leg.position; // error
 if (leg.status === 'clear') {
   const fromClear = leg.position; // error
