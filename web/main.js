@@ -8,9 +8,10 @@
 // view shown (view.openFile), which reads it with the C++ readers in the worker.
 // Each view's "What am I looking at?" opens its explanation in a dialog (app/explain.js).
 //
-// Test hooks: <body data-view="hull|delaunay|route"> names the view shown and
+// Test hooks: <body data-view="hull|delaunay|delaunay3|route"> names the view shown and
 // <body data-state> its state ('loading' | 'computing' | 'ready' | 'error' | 'cancelled');
-// each view publishes its own results (window.hullkitStats, hullkitDelaunay, hullkitRoute);
+// each view publishes its own results (window.hullkitStats, hullkitDelaunay, hullkitDelaunay3,
+// hullkitRoute);
 // <body data-busy> is present while the busy overlay is shown.
 import { createStage } from './app/stage.js';
 import { WorkerClient } from './app/worker-client.js';
@@ -18,12 +19,14 @@ import { viewFromUrl, queryFromUrl, writeUrl } from './app/url-state.js';
 import { setUpExplain } from './app/explain.js';
 import { createHullView } from './views/hull.js';
 import { createDelaunayView } from './views/delaunay.js';
+import { createDelaunay3View } from './views/delaunay3.js';
 import { createRouteView } from './views/route.js';
 
-const FACTORIES = { hull: createHullView, delaunay: createDelaunayView, route: createRouteView };
+const FACTORIES = { hull: createHullView, delaunay: createDelaunayView, delaunay3: createDelaunay3View, route: createRouteView };
 const TITLES = {
   hull: 'hullkit · 3D convex hulls',
   delaunay: 'hullkit · Delaunay by lifting',
+  delaunay3: 'hullkit · Delaunay tetrahedralization by lifting to 4D',
   route: 'hullkit · route checking with swept hulls',
 };
 

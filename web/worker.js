@@ -22,6 +22,21 @@
 // main -> worker  {type: 'trace', id, xyz, scan?} / {type: 'trace', id, xy, lifted: true}
 // worker -> main  {type: 'result', id, kinds, args, kindNames, triangles, dimension, ms}: the
 //                 events of the real gift wrapping (hullkit.giftwrapTrace / delaunayGiftwrapTrace)
+// main -> worker  {type: 'delaunay3', id, distribution, n, seed, text?, xyz?}   (the Hull view's points)
+// worker -> main  {type: 'progress', id, done, total}   while the points are inserted, then
+//                 {type: 'result', id, key, n, xyz, dimension, tetrahedra, neighbors, hull, triangles,
+//                  vertices, representative, duplicateCount, ms, genMs, drawing, drawingMs}
+//                 (drawing: what the page draws, from positions.js tetrahedraDrawing; buffers transferred)
+// main -> worker  {type: 'delaunay3-voronoi', id, key, points?: {xyz, dimension, tetrahedra, neighbors,
+//                  triangles, vertices, representative}}
+// worker -> main  {type: 'result', id, key, volume, tetrahedronVertex, vertexCount, faceCount, ms}: the
+//                 Voronoi diagram (hullkit.voronoi3) of the tetrahedralization `key` (the id of its
+//                 'delaunay3' request), which the worker keeps for cell requests; {type: 'error',
+//                 kind: 'stale'} when it no longer has it and `points` are not given
+// main -> worker  {type: 'delaunay3-cell', id, key, point}
+// worker -> main  {type: 'result', id, key, point, volume, bounded, vertices (Float64Array x y z),
+//                  faceOffsets, faceCorners (into vertices), faceBounded, neighbours}: one cell of
+//                 that diagram; 'stale' as above
 // main -> worker  {type: 'route', id, scene, route, samples}
 // worker -> main  {type: 'result', id, report, sweeps: [{leg, sub, of, part, points, triangles}], ms}
 //                 (sweeps: each part's swept hull per sub-interval `sub` of `of` of a leg (one
@@ -29,6 +44,7 @@
 //                 placed at both ends of the sub-interval: `points` (Float32Array x y z ...) and
 //                 `triangles` indexing them; buffers transferred)
 //   kind: 'input'    the input was rejected (by the library or the text parser)
+//         'stale'    (Delaunay 3D) the tetrahedralization asked about is no longer in the worker
 //         'load'     the hullkit module could not be loaded / instantiated
 //         'internal' anything else (wasm trap, malformed result, bug)
 //   faces:      polygons with mergeCoplanar (faceSizes: {corners: count}), else triangles
@@ -41,6 +57,7 @@
 import { generatePoints, parsePoints } from './distributions.js';
 import { partVertices } from './route-scenes.js';
 import { legMotion, poseAt, subintervalCount, placeVertices } from './route-poses.js';
+import { tetrahedraDrawing } from './positions.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
 
@@ -84,7 +101,10 @@ function isInputError(err) {
 
 self.onmessage = (event) => {
   const msg = event.data;
-  const run = msg && { compute, delaunay: delaunayJob, route: routeJob, read: readJob, trace: traceJob }[msg.type];
+  const run = msg && {
+    compute, delaunay: delaunayJob, route: routeJob, read: readJob, trace: traceJob,
+    delaunay3: delaunay3Job, 'delaunay3-voronoi': voronoi3Job, 'delaunay3-cell': cell3Job,
+  }[msg.type];
   if (run) {
     run(msg).catch((err) => {
       // Should not happen (compute catches everything), but never drop it.
@@ -93,16 +113,23 @@ self.onmessage = (event) => {
   }
 };
 
+/**
+ * The points a request names (the Hull and Delaunay 3D views): a file's (`xyz`, given), pasted
+ * text, or a generated distribution. Throws what is wrong with them.
+ */
+function requestedPoints({ distribution, n, seed, text, xyz }) {
+  if (distribution === 'file') {
+    if (!(xyz instanceof Float64Array)) throw new Error('no points from a file');
+    return xyz;
+  }
+  return distribution === 'custom' ? parsePoints(text ?? '') : generatePoints(distribution, n, seed);
+}
+
 async function compute({ id, distribution, n, seed, algorithm, epsilon, mergeCoplanar = false, text, xyz: given }) {
   const w0 = performance.now();
   let xyz;
   try {
-    if (distribution === 'file') {
-      if (!(given instanceof Float64Array)) throw new Error('no points from a file');
-      xyz = given;
-    } else {
-      xyz = distribution === 'custom' ? parsePoints(text ?? '') : generatePoints(distribution, n, seed);
-    }
+    xyz = requestedPoints({ distribution, n, seed, text, xyz: given });
   } catch (err) {
     self.postMessage({ type: 'error', id, kind: 'input', message: describe(err), n });
     return;
@@ -473,4 +500,118 @@ function sweptHulls(hullkit, parts, pivot, route) {
     }
   }
   return sweeps;
+}
+
+// ---------------------------------------------------------------- Delaunay 3D view
+
+// The last tetrahedralization and (once asked for) its Voronoi diagram, for the cell requests:
+// {key, xyz, triangulation, voronoi}.
+let tetrahedralization = null;
+
+function delaunay3Job({ id, distribution, n, seed, text, xyz: given }) {
+  return withHullkit(id, (hullkit) => {
+    const g0 = performance.now();
+    const xyz = requestedPoints({ distribution, n, seed, text, xyz: given });
+    const genMs = performance.now() - g0;
+    tetrahedralization = null; // the memory of the last one first
+    const t0 = performance.now();
+    // Progress after each round of the insertion (rounds double; the last holds half the points).
+    const result = hullkit.delaunay3(xyz, { progress: (done, total) => self.postMessage({ type: 'progress', id, done, total }) });
+    const ms = performance.now() - t0;
+    const owned = {
+      tetrahedra: ownedCopy(result.tetrahedra, Uint32Array, 'tetrahedra'),
+      neighbors: ownedCopy(result.neighbors, Int32Array, 'neighbors'),
+      hull: ownedCopy(result.hull, Uint32Array, 'hull'),
+      triangles: ownedCopy(result.triangles, Uint32Array, 'triangles'),
+      vertices: ownedCopy(result.vertices, Uint32Array, 'vertices'),
+      representative: ownedCopy(result.representative, Uint32Array, 'representative'),
+    };
+    // The worker keeps copies for the Voronoi diagram; the page gets the originals.
+    tetrahedralization = {
+      key: id, xyz: xyz.slice(), voronoi: null,
+      triangulation: { dimension: result.dimension, ...Object.fromEntries(Object.entries(owned).map(([k, v]) => [k, v.slice()])) },
+    };
+    const d0 = performance.now();
+    const drawing = tetrahedraDrawing(xyz, { dimension: result.dimension, ...owned });
+    const drawingMs = performance.now() - d0;
+    const drawingBuffers = Object.values(drawing).filter(ArrayBuffer.isView).map((a) => a.buffer);
+    self.postMessage(
+      { type: 'result', id, key: id, n: xyz.length / 3, xyz, dimension: result.dimension, ...owned, duplicateCount: result.duplicateCount, ms, genMs, drawing, drawingMs },
+      [xyz.buffer, ...Object.values(owned).map((a) => a.buffer), ...drawingBuffers],
+    );
+  });
+}
+
+/** The tetrahedralization `key` kept here (or rebuilt from `points`), or null after a 'stale' answer. */
+function keptTetrahedralization(id, key, points) {
+  if (tetrahedralization?.key === key) return tetrahedralization;
+  if (points) {
+    const { xyz, ...triangulation } = points;
+    tetrahedralization = { key, xyz, triangulation, voronoi: null };
+    return tetrahedralization;
+  }
+  self.postMessage({ type: 'error', id, kind: 'stale', message: 'the worker no longer has this tetrahedralization' });
+  return null;
+}
+
+function voronoi3Job({ id, key, points }) {
+  return withHullkit(id, (hullkit) => {
+    const kept = keptTetrahedralization(id, key, points);
+    if (!kept) return;
+    const t0 = performance.now();
+    kept.voronoi ??= hullkit.voronoi3(kept.xyz, kept.triangulation);
+    const ms = performance.now() - t0;
+    const volume = kept.voronoi.volume.slice();
+    const tetrahedronVertex = kept.voronoi.tetrahedronVertex.slice();
+    self.postMessage(
+      { type: 'result', id, key, volume, tetrahedronVertex, vertexCount: kept.voronoi.vertices.length / 3, faceCount: kept.voronoi.facePoints.length / 2, ms },
+      [volume.buffer, tetrahedronVertex.buffer],
+    );
+  });
+}
+
+/**
+ * One point's Voronoi cell: its distinct vertices (x y z), each face as a run of corners into them
+ * (`faceOffsets`, `faceCorners`, counter-clockwise seen from outside the cell), which faces are
+ * bounded, and the point across each face (its Delaunay neighbours).
+ */
+function cell3Job({ id, key, point }) {
+  return withHullkit(id, () => {
+    const kept = keptTetrahedralization(id, key, null);
+    if (!kept) return;
+    const v = kept.voronoi;
+    if (!v) throw new Error('the Voronoi diagram has not been computed');
+    if (!Number.isInteger(point) || point < 0 || point >= v.volume.length) throw new Error(`no point ${point}`);
+    const local = new Map();
+    const coords = [];
+    const offsets = [0];
+    const corners = [];
+    const bounded = [];
+    const neighbours = [];
+    for (let f = v.cellOffsets[point]; f < v.cellOffsets[point + 1]; f++) {
+      const face = v.cellFaces[f];
+      const [p, q] = [v.facePoints[2 * face], v.facePoints[2 * face + 1]];
+      const ring = [];
+      for (let c = v.faceOffsets[face]; c < v.faceOffsets[face + 1]; c++) {
+        const w = v.faceVertices[c];
+        if (!local.has(w)) {
+          local.set(w, coords.length / 3);
+          coords.push(v.vertices[3 * w], v.vertices[3 * w + 1], v.vertices[3 * w + 2]);
+        }
+        ring.push(local.get(w));
+      }
+      // Counter-clockwise seen from q: from outside the cell of p, from inside the cell of q.
+      if (point === q) ring.reverse();
+      corners.push(...ring);
+      offsets.push(corners.length);
+      bounded.push(v.faceBounded[face]);
+      neighbours.push(point === p ? q : p);
+    }
+    const out = {
+      type: 'result', id, key, point, volume: v.volume[point], bounded: Number.isFinite(v.volume[point]),
+      vertices: Float64Array.from(coords), faceOffsets: Uint32Array.from(offsets), faceCorners: Uint32Array.from(corners),
+      faceBounded: Uint8Array.from(bounded), neighbours: Uint32Array.from(neighbours),
+    };
+    self.postMessage(out, [out.vertices.buffer, out.faceOffsets.buffer, out.faceCorners.buffer, out.faceBounded.buffer, out.neighbours.buffer]);
+  });
 }

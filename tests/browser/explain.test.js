@@ -23,6 +23,7 @@ const SHOTS = path.join(os.tmpdir(), 'hullkit-explain');
 const VIEWS = [
   ['hull', '?view=hull&dist=ball&n=60&seed=1'],
   ['delaunay', '?view=delaunay&set=uniform&n=40&seed=1'],
+  ['delaunay3', '?view=delaunay3&dist=ball&n=60&seed=1'],
   ['route', '?view=route'],
 ];
 
@@ -70,7 +71,7 @@ async function checkOpen(page, view, viewport) {
 /** Shown text of the canvas hint (the hull and route views). */
 const hintText = (page) => page.$eval('.overlay-hint', (el) => el.innerText.trim());
 
-test('"What am I looking at?" in the page; URL numbers made valid; stepper labels and legends', { timeout: 180_000 }, async (t) => {
+test('"What am I looking at?" in the page; URL numbers made valid; stepper labels and legends', { timeout: 300_000 }, async (t) => {
   const { browser, base, errors, watch, close } = await openBrowser();
   fs.mkdirSync(SHOTS, { recursive: true });
   const requested = [];

@@ -53,7 +53,7 @@ async function settled(page, view) {
   return page.evaluate(() => document.body.dataset.state);
 }
 
-test('the static site under /demo/: hull, Delaunay and route views', { timeout: 180_000 }, async (t) => {
+test('the static site under /demo/: hull, Delaunay, Delaunay 3D and route views', { timeout: 180_000 }, async (t) => {
   await assertSiteCurrent();
   const { browser, mount, errors, watch, close } = await openBrowser({ folder: SITE, prefix: PREFIX });
   try {
@@ -86,6 +86,18 @@ test('the static site under /demo/: hull, Delaunay and route views', { timeout: 
       assert.equal(info.triangles, 2 * info.n - info.hull - 2);
       const share = await drawnShare(page);
       assert.ok(share > 0.05, `the triangulation is drawn (${(100 * share).toFixed(1)}% of the canvas)`);
+    });
+
+    await t.test('?view=delaunay3 renders, with its Voronoi diagram', async () => {
+      await page.goto(`${mount}?view=delaunay3&dist=ball&n=300&seed=3`);
+      assert.equal(await settled(page, 'delaunay3'), 'ready', await page.textContent('#d3-error'));
+      await page.waitForFunction(() => window.hullkitDelaunay3?.voronoi, null, { timeout: TIMEOUT, polling: 100 });
+      const info = await page.evaluate(() => window.hullkitDelaunay3);
+      t.diagnostic(`delaunay3: n ${info.n}, tetrahedra ${info.tetrahedra}, hull triangles ${info.hullTriangles}`);
+      assert.deepEqual([info.n, info.dimension], [300, 3]);
+      assert.ok(info.tetrahedra > info.n, `${info.tetrahedra} tetrahedra`);
+      const share = await drawnShare(page);
+      assert.ok(share > 0.05, `the tetrahedra are drawn (${(100 * share).toFixed(1)}% of the canvas)`);
     });
 
     await t.test('?view=route renders (from the view switch)', async () => {

@@ -1,4 +1,5 @@
-// The page's three views in headless Debian Chromium: each opens from its URL and from the view
+// The page's views in headless Debian Chromium (the Delaunay 3D view here only at phone width; the
+// rest of it in delaunay3.test.js): each opens from its URL and from the view
 // switch, draws on the canvas (pixels, at desktop and phone width) with no console error,
 // back/forward move between views; the Delaunay view's counts obey 2n − h − 2; the Route view's
 // thin plate is a hit that 20-step sampling misses; its turning presets show the verdicts of
@@ -268,7 +269,7 @@ test('the hull, Delaunay and route views', { timeout: 120_000 }, async (t) => {
       const phone = await browser.newPage({ viewport: PHONE, deviceScaleFactor: 1 });
       watch(phone);
       await phone.goto(`${base}?view=hull`);
-      for (const view of ['hull', 'delaunay', 'route']) {
+      for (const view of ['hull', 'delaunay', 'delaunay3', 'route']) {
         if (view !== 'hull') await phone.click(`[data-view-link="${view}"]`);
         await phone.waitForFunction((v) => document.body.dataset.view === v, view);
         assert.equal(await settled(phone), 'ready', `${view} at phone width`);

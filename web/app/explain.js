@@ -73,6 +73,39 @@ export const EXPLANATIONS = {
       },
     ],
   },
+  delaunay3: {
+    title: 'Delaunay tetrahedralization by lifting to 4D',
+    sections: [
+      {
+        heading: 'What is drawn',
+        paragraphs: [
+          'Points in 3D and their <strong>Delaunay tetrahedralization</strong>: tetrahedra that fill the convex hull of the points, meet face to face, and whose circumspheres (the sphere through a tetrahedron\'s four corners) hold no point inside. Each tetrahedron is drawn shrunk towards its centroid, so that the ones behind it show through the gaps, and a plane cuts the cloud open.',
+          'Hover a tetrahedron to see its circumsphere, translucent pink, with the points on it in white: always its four corners, and more where points are cospherical (a grid\'s cubes: eight corners on one sphere). Click a point to see its <strong>Voronoi cell</strong>, violet: the region of space nearer to it than to any other point, with its volume. A point on the convex hull has an unbounded cell; the page says so and draws the part near the points. On a touch screen, a tap does both.',
+        ],
+      },
+      {
+        heading: 'The controls',
+        paragraphs: [
+          '<em>Distribution</em>: the Hull view\'s point sets (in a cube or a ball, on a sphere, coplanar, near-coplanar, integer grids, a rotated grid, pasted coordinates) or a file you open or drop on the page; 1 to 200 000 points. 100 000 points (about 670 000 tetrahedra) stay interactive: the tetrahedralization runs in the worker with its progress shown, and the shrink and the cut are applied by the graphics card.',
+          '<em>Shrink</em> scales each tetrahedron about its centroid. <em>Cut</em> hides whole tetrahedra whose centroid lies beyond the plane, or clips them at the plane (a three.js clipping plane), or shows them all. <em>Move</em>, <em>Turn</em> and <em>Tilt</em> place the plane; drag its amber handle in the view to move it along its normal. Points beyond the plane are hidden with the tetrahedra. The link keeps the points and these settings.',
+        ],
+      },
+      {
+        heading: 'Lifting to 4D, exactly',
+        paragraphs: [
+          'The seed\'s lifting, one dimension up: lift each point (x, y, z) to (x, y, z, x² + y² + z²) on a paraboloid in 4D. The lower facets of the convex hull of the lifted points are tetrahedra, and projected back down they are exactly the Delaunay tetrahedra: a point lies inside the sphere through a, b, c and d exactly when its lift lies below the hyperplane through their lifts.',
+          'So every decision is one of two exact predicates on the original coordinates, never on rounded lifted ones: <code>orient3d</code> (which side of the plane through three points a fourth lies on) and <code>insphere</code> (inside, on or outside the sphere through four points). A fast floating-point filter decides almost always; exact arithmetic decides the rest.',
+          'Five or more cospherical points (grids, points on a sphere) have more than one Delaunay tetrahedralization. The tie is broken by a symbolic perturbation: each lift is raised by an infinitesimal that grows with the point\'s place in (x, y, z) order, and an in-sphere test that is exactly zero is decided by the first nonzero term of that perturbation. There is never a flat tetrahedron, and the same points give the same tetrahedra in any order, natively and in WebAssembly.',
+        ],
+      },
+      {
+        heading: 'Voronoi cells',
+        paragraphs: [
+          'The Voronoi diagram is dual to the tetrahedralization: its vertices are the centres of the empty spheres (tetrahedra on one sphere share one, decided by the exact in-sphere test), and the face between two points is dual to the Delaunay edge joining them. The worker computes the whole diagram after each tetrahedralization (the time is in the stats); the volumes are rounded, which faces and vertices exist is exact.',
+        ],
+      },
+    ],
+  },
   route: {
     title: 'Route checking with swept hulls',
     sections: [

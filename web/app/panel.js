@@ -41,6 +41,23 @@ export async function readInWorker(worker, file, as) {
 }
 
 /**
+ * A view's file read in the worker (readInWorker) with the panel kept informed: `ui.error` hidden
+ * and "Reading NAME…" in `ui.status` meanwhile. Resolves with the worker's result message, or with
+ * null after a failure (`onError(message)` has been told) or Cancel.
+ */
+export async function readFileForView(worker, file, as, { ui, onError }) {
+  ui.error.hidden = true;
+  ui.status.textContent = `Reading ${file.name}…`;
+  const msg = await readInWorker(worker, file, as);
+  if (msg.cancelled) return null;
+  if (msg.error) {
+    onError(msg.error);
+    return null;
+  }
+  return msg;
+}
+
+/**
  * The short note under "Open file…" about what the reader skipped in the file just read
  * ("fcl.obj: skipped 1 unknown OBJ record "648" (first at line 1)"); hidden when it skipped nothing.
  */
@@ -49,4 +66,15 @@ export function showFileNote(name, warnings) {
   if (!note) return;
   note.textContent = warnings.length ? `${name}: ${warnings.join('; ')}` : '';
   note.hidden = warnings.length === 0;
+}
+
+/**
+ * Shows and selects the hidden "file" option of a view's point-source `select`, named after the
+ * file just opened ("from bunny.obj").
+ */
+export function chooseFileOption(select, name) {
+  const option = select.querySelector('option[value="file"]');
+  option.hidden = false;
+  option.textContent = `from ${name}`;
+  select.value = 'file';
 }

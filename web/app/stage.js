@@ -86,6 +86,24 @@ export function clearGroup(group) {
 }
 
 /**
+ * Fits a sphere of `radius` about the origin into the view of `camera` (orbited by `controls`,
+ * whose target becomes the origin), seen along `direction` (from the origin towards the camera),
+ * with `margin` to spare; near and far planes follow the distance.
+ */
+export function fitCamera(camera, controls, radius, direction, margin = 1.15) {
+  const dir = direction.clone().normalize();
+  const vFov = THREE.MathUtils.degToRad(camera.fov);
+  const hFov = 2 * Math.atan(Math.tan(vFov / 2) * camera.aspect);
+  const dist = (radius / Math.sin(Math.min(vFov, hFov) / 2)) * margin;
+  controls.target.set(0, 0, 0);
+  camera.position.copy(dir).multiplyScalar(dist);
+  camera.near = dist / 1000;
+  camera.far = dist * 20;
+  camera.updateProjectionMatrix();
+  controls.update();
+}
+
+/**
  * A perspective camera with z up, added to `scene`, carrying a key light (so the lighting follows
  * the view) over a hemisphere light: the rig of the Delaunay and Route views.
  */

@@ -1,7 +1,7 @@
 // The URL holds the view shown and that view's options (?view=delaunay&set=grid&n=400...), so a
 // copied link reproduces the view and back/forward move between states.
 
-export const VIEWS = ['hull', 'delaunay', 'route'];
+export const VIEWS = ['hull', 'delaunay', 'delaunay3', 'route'];
 
 /** The view the URL names (hull when none or unknown). */
 export function viewFromUrl() {

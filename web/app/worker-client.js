@@ -3,6 +3,7 @@
 // request(message) posts {...message, id} and resolves with the worker's answer for that id
 // (a 'result' or an 'error' message: the caller reads its type). It rejects with an Error whose
 // `cancelled` is true when restart() dropped the worker (Cancel), or with the worker's crash.
+// 'progress' messages with the id ({done, total}) go to the request's onProgress, if any.
 // 'ready' ({algorithms, delaunay, route}) and 'load-error' ({message}) go to listeners added
 // with on(); `info` keeps the last 'ready' message for views that start later.
 
@@ -10,7 +11,7 @@ export class WorkerClient {
   #url;
   #worker = null;
   #seq = 0;
-  #pending = new Map(); // id -> {resolve, reject}
+  #pending = new Map(); // id -> {resolve, reject, onProgress}
   #listeners = { ready: [], 'load-error': [], crash: [] };
 
   constructor(url) {
@@ -62,6 +63,10 @@ export class WorkerClient {
     }
     const entry = this.#pending.get(msg.id);
     if (!entry) return; // a stale answer from a dropped request
+    if (msg.type === 'progress') {
+      entry.onProgress?.(msg);
+      return;
+    }
     this.#pending.delete(msg.id);
     entry.resolve(msg);
   }
@@ -81,12 +86,12 @@ export class WorkerClient {
     this.#emit('crash', { message });
   }
 
-  /** Posts `message` (with a fresh id) and resolves with the answer. */
-  request(message, transfer = []) {
+  /** Posts `message` (with a fresh id) and resolves with the answer; `onProgress` gets its progress messages. */
+  request(message, transfer = [], { onProgress } = {}) {
     if (!this.#worker) this.#spawn();
     const id = ++this.#seq;
     return new Promise((resolve, reject) => {
-      this.#pending.set(id, { resolve, reject });
+      this.#pending.set(id, { resolve, reject, onProgress });
       this.#worker.postMessage({ ...message, id }, transfer);
     });
   }

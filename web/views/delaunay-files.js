@@ -2,7 +2,7 @@
 // reader in the worker and its points triangulated; the export buttons write the last
 // triangulation drawn as OFF (z = 0) or SVG (with the Voronoi cells when shown).
 import { fmtInt } from '../app/format.js';
-import { showError, readInWorker } from '../app/panel.js';
+import { showError, readFileForView, chooseFileOption } from '../app/panel.js';
 import { compact, offText, triangulationSvg, download } from '../app/export.js';
 
 const FILE_MAX = 200_000; // points of an opened file the page draws (the CLI takes any number)
@@ -29,24 +29,15 @@ export function createDelaunayFiles({ ui, state, worker, setState, updateHint, c
 
   /** Reads `file` with the C++ 2D point reader (in the worker) and triangulates its points. */
   async function openFile(file) {
-    ui.error.hidden = true;
-    ui.status.textContent = `Reading ${file.name}…`;
-    const msg = await readInWorker(worker, file, 'points2d');
-    if (msg.cancelled) return;
-    if (msg.error) {
-      fileError(msg.error);
-      return;
-    }
+    const msg = await readFileForView(worker, file, 'points2d', { ui, onError: fileError });
+    if (!msg) return;
     const count = msg.xy.length / 2;
     if (count > FILE_MAX) {
       fileError(`${file.name} has ${fmtInt(count)} points; this page draws at most ${fmtInt(FILE_MAX)} (the hullkit command and hullkit.delaunay take any number).`);
       return;
     }
     state.fileInput = { name: file.name, xy: msg.xy };
-    const option = ui.set.querySelector('option[value="file"]');
-    option.hidden = false;
-    option.textContent = `from ${file.name}`;
-    ui.set.value = 'file';
+    chooseFileOption(ui.set, file.name);
     ui.n.value = String(count);
     state.added = [];
     updateHint();

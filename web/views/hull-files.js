@@ -1,7 +1,7 @@
 // The Hull view's files in and out: a file opened (or dropped) is read with the C++ point readers
 // in the worker and its points hulled; the export buttons write the last hull drawn as OBJ, OFF,
 // glTF (.glb) or binary STL.
-import { readInWorker } from '../app/panel.js';
+import { readInWorker, chooseFileOption } from '../app/panel.js';
 import { compact, objText, offText, stlBytes, glbBytes, download } from '../app/export.js';
 
 /** The name (without extension) of the files exported for the hull of `params`. */
@@ -17,8 +17,6 @@ export function exportName(params) {
  * `state.lastHull`.
  */
 export function createHullFiles({ ui, state, worker, setState, hideWarning, hideError, updateSourceFields, cancelJob, requestCompute }) {
-  const fileOption = ui.distribution.querySelector('option[value="file"]');
-
   /** Reads `file` with the C++ point readers (in the worker) and hulls its points. */
   async function openFile(file) {
     if (state.job) cancelJob();
@@ -32,9 +30,7 @@ export function createHullFiles({ ui, state, worker, setState, hideWarning, hide
       return;
     }
     state.fileInput = { name: file.name, xyz: msg.xyz };
-    fileOption.hidden = false;
-    fileOption.textContent = `from ${file.name}`;
-    ui.distribution.value = 'file';
+    chooseFileOption(ui.distribution, file.name);
     updateSourceFields();
     requestCompute();
   }

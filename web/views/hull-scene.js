@@ -3,7 +3,8 @@
 // seed's epsilon dropped) or of the points alone, framed in the view.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { discTexture, clearGroup } from '../app/stage.js';
+import { discTexture, clearGroup, fitCamera } from '../app/stage.js';
+import { centredPositions } from '../positions.js';
 
 // Interior points beyond this many are drawn sparsely (every k-th): they only give the hull its
 // context, and a million points would make orbiting stutter on a software renderer.
@@ -20,37 +21,6 @@ const COLORS = {
   point: 0x8a96ab,
   dropped: 0xff4f8b,
 };
-
-/**
- * Float32 positions relative to the centre of the finite points' bounding box
- * (so that data far from the origin keeps its precision on the GPU), and the
- * radius of the sphere around that centre containing them all.
- */
-export function centredPositions(xyz) {
-  const n = Math.floor(xyz.length / 3);
-  const lo = [Infinity, Infinity, Infinity];
-  const hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < n; i++) {
-    const x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
-    if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) continue;
-    if (x < lo[0]) lo[0] = x; if (x > hi[0]) hi[0] = x;
-    if (y < lo[1]) lo[1] = y; if (y > hi[1]) hi[1] = y;
-    if (z < lo[2]) lo[2] = z; if (z > hi[2]) hi[2] = z;
-  }
-  const centre = lo[0] <= hi[0] ? lo.map((l, k) => (l + hi[k]) / 2) : [0, 0, 0];
-  const positions = new Float32Array(3 * n);
-  let r2 = 0;
-  for (let i = 0; i < n; i++) {
-    const x = xyz[3 * i] - centre[0], y = xyz[3 * i + 1] - centre[1], z = xyz[3 * i + 2] - centre[2];
-    positions[3 * i] = x;
-    positions[3 * i + 1] = y;
-    positions[3 * i + 2] = z;
-    const d = x * x + y * y + z * z;
-    if (d > r2 && Number.isFinite(d)) r2 = d;
-  }
-  const radius = Math.sqrt(r2);
-  return { positions, radius: radius > 0 ? radius : 1 };
-}
 
 function pointsGeometry(positions, indices) {
   const pos = new Float32Array(3 * indices.length);
@@ -222,17 +192,7 @@ export function createHullScene({ stage, ui, state }) {
   function frameView(keepDirection) {
     const dir = camera.position.clone().sub(controls.target);
     if (!keepDirection || dir.lengthSq() < 1e-30) dir.copy(DEFAULT_VIEW_DIR);
-    dir.normalize();
-    const vFov = THREE.MathUtils.degToRad(camera.fov);
-    const hFov = 2 * Math.atan(Math.tan(vFov / 2) * camera.aspect);
-    const fov = Math.min(vFov, hFov);
-    const dist = (viewRadius / Math.sin(fov / 2)) * 1.15;
-    controls.target.set(0, 0, 0);
-    camera.position.copy(dir).multiplyScalar(dist);
-    camera.near = dist / 1000;
-    camera.far = dist * 20;
-    camera.updateProjectionMatrix();
-    controls.update();
+    fitCamera(camera, controls, viewRadius, dir);
   }
 
   function requestRender() {

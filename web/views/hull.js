@@ -17,7 +17,8 @@ import { correctUrl } from '../app/url-state.js';
 import { createGiftwrapStepper } from './giftwrap-stepper.js';
 import { hullUi, createHullPanel, nToSlider, urlParamsOf, paramsKey, CUSTOM_SAMPLE } from './hull-panel.js';
 import { SPHERE_WARN_N, needsConfirmation, createCostModel } from './hull-cost.js';
-import { createHullScene, centredPositions } from './hull-scene.js';
+import { createHullScene } from './hull-scene.js';
+import { centredPositions } from '../positions.js';
 import { createHullReport } from './hull-report.js';
 import { createHullFiles, exportName } from './hull-files.js';
 

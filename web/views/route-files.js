@@ -1,7 +1,7 @@
 // The Route view's files in and out: a mesh opened (or dropped) is read with the C++ mesh readers
 // in the worker and becomes another obstacle or the traverse; the export buttons write the last
 // report and the scene with the current route (waypoints with their rotations) as JSON.
-import { readInWorker } from '../app/panel.js';
+import { readFileForView } from '../app/panel.js';
 import { download } from '../app/export.js';
 import { copyRoute } from '../route-poses.js';
 
@@ -21,14 +21,8 @@ export function createRouteFiles({ ui, state, worker, margin, fail, sceneChanged
 
   /** Reads a mesh file with the C++ mesh readers (in the worker): an obstacle or the traverse. */
   return async function openFile(file) {
-    ui.error.hidden = true;
-    ui.status.textContent = `Reading ${file.name}…`;
-    const msg = await readInWorker(worker, file, 'mesh');
-    if (msg.cancelled) return;
-    if (msg.error) {
-      fail(msg.error, false);
-      return;
-    }
+    const msg = await readFileForView(worker, file, 'mesh', { ui, onError: (message) => fail(message, false) });
+    if (!msg) return;
     const vertices = [];
     for (let i = 0; i < msg.vertices.length; i += 3) vertices.push([msg.vertices[i], msg.vertices[i + 1], msg.vertices[i + 2]]);
     const triangles = [];
