@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 
 namespace hullkit_cli {
 
@@ -23,6 +24,30 @@ std::string read_input(const std::string& path) {
     std::string error;
     if (!hullkit::read_file(path, &text, &error)) throw UsageError(error);
     return text;
+}
+
+hullkit::MeshResult read_mesh_file(const std::string& path) {
+    const std::string bytes = read_input(path);
+    hullkit::MeshResult mesh;
+    switch (hullkit::detect_mesh_format(bytes, path)) {
+        case hullkit::MeshFormat::Off:  // faces may be missing: a segment, a point, nothing
+            mesh = hullkit::read_off_mesh(bytes, path);
+            break;
+        case hullkit::MeshFormat::Obj:
+            mesh = hullkit::read_obj_mesh(bytes, path);
+            if (!mesh.ok()) {
+                // An OBJ without vertices (the empty hull's) is no mesh for the mesh reader, but
+                // no points, and no error, for the point reader, which reads OBJ's vertices too.
+                const hullkit::PointsResult points = hullkit::parse_points(bytes, path);
+                if (points.ok() && points.xyz.empty()) mesh = hullkit::MeshResult();
+            }
+            break;
+        default:  // PLY, STL, glTF, or a message saying what the file is not
+            mesh = hullkit::read_mesh(bytes, path);
+            break;
+    }
+    if (!mesh.ok()) throw UsageError(mesh.error);
+    return mesh;
 }
 
 void write_output(const std::string& path, const std::string& text) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "hullkit/mesh_io.hpp"
+
 namespace CLI {
 class App;
 }
@@ -29,6 +31,13 @@ struct UsageError : std::runtime_error {
 
 /// The whole of `path`, or of standard input for "-". Throws UsageError naming the file.
 std::string read_input(const std::string& path);
+
+/// The vertices and triangles of a hull or triangulation file (for `hullkit verify` and
+/// `verify-delaunay`): any mesh format the other commands read (OBJ, OFF, PLY, STL, glTF; the
+/// format from the content, then the name), and what a hull of lower dimension or none is written
+/// as: OFF or OBJ vertices without faces, OFF "0 0 0", an OBJ without records. Throws UsageError
+/// with the reader's message.
+hullkit::MeshResult read_mesh_file(const std::string& path);
 
 /// Writes `text` to `path`, or to standard output for "" and "-". Throws UsageError naming the
 /// file when it cannot be opened or written (a full disk included).

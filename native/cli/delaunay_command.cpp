@@ -77,22 +77,27 @@ problem (one line on stderr).
 )";
 
 const char* const kVerifyDelaunayUsage =
-    R"(Usage: hullkit verify-delaunay POINTS TRIANGLES.off
+    R"(Usage: hullkit verify-delaunay POINTS TRIANGLES
 
-Checks, with exact arithmetic, that TRIANGLES.off is a Delaunay triangulation of
-the 2D points in POINTS ('-' reads them from standard input; the input formats of
-'hullkit delaunay'): every triangle clockwise with y up and not degenerate, each
-edge shared by at most two triangles, the boundary the convex hull, every
+Checks, with exact arithmetic, that TRIANGLES is a Delaunay triangulation of
+the 2D points in POINTS ('-' reads them from standard input; the input formats
+of 'hullkit delaunay'): every triangle clockwise with y up and not degenerate,
+each edge shared by at most two triangles, the boundary the convex hull, every
 distinct point used, 2n - h - 2 triangles, and no point inside the circumcircle
 across any interior edge.
 
-The OFF vertices are matched to the input points with exactly the same x and y
-(and z = 0), as 'hullkit delaunay' writes them; duplicates stand for the lowest
-index.
+TRIANGLES: a mesh file in any format the other commands read (OFF, OBJ, PLY,
+STL, glTF), as 'hullkit delaunay' writes it (OFF). Its vertices are matched to
+the input points with exactly the same x and y (and z = 0); duplicates stand for
+the lowest index.
 
 Prints 'ok: ...' or each problem on its own line.
+
+Options:
+  -h, --help          show this help
+
 Exit status: 0 the triangulation is Delaunay, 1 it is not, 2 a usage or input
-problem.
+problem (one line on standard error).
 )";
 
 enum class Format { Off, Json, Svg };
@@ -466,16 +471,15 @@ int verify_delaunay_main(const std::vector<std::string>& argv) {
         return kExitOk;
     }
     if (files.size() != 2) {
-        throw UsageError("verify-delaunay needs two files, POINTS and TRIANGLES.off, got " +
+        throw UsageError("verify-delaunay needs two files, POINTS and TRIANGLES, got " +
                          std::to_string(files.size()) + " (try 'hullkit verify-delaunay --help')");
     }
-    if (files[1] == "-") throw UsageError("TRIANGLES.off must be a file ('-' is allowed for POINTS only)");
+    if (files[1] == "-") throw UsageError("TRIANGLES must be a file ('-' is allowed for POINTS only)");
     std::string text;
     const hullkit::Points2Result points = load_points_2d(files[0], &text);
-    const hullkit::MeshResult mesh = hullkit::read_off_mesh(read_input(files[1]), files[1]);
-    if (!mesh.ok()) throw UsageError(mesh.error);
+    const hullkit::MeshResult mesh = read_mesh_file(files[1]);
 
-    // Tie each OFF vertex to the input point with the same coordinates (in the plane z = 0).
+    // Tie each mesh vertex to the input point with the same coordinates (in the plane z = 0).
     std::vector<double> xyz(3 * points.count());
     for (std::size_t i = 0; i < points.count(); ++i) {
         xyz[3 * i] = points.xy[2 * i];
@@ -487,7 +491,7 @@ int verify_delaunay_main(const std::vector<std::string>& argv) {
     for (std::size_t k = 0; k < found.size(); ++k) {
         if (found[k] >= 0) continue;
         const double* v = &mesh.xyz[3 * k];
-        unmatched.push_back(files[1] + ": OFF vertex " + std::to_string(k) + " (" + hullkit::format_double(v[0]) + " " +
+        unmatched.push_back(files[1] + ": vertex " + std::to_string(k) + " (" + hullkit::format_double(v[0]) + " " +
                             hullkit::format_double(v[1]) + " " + hullkit::format_double(v[2]) +
                             ") is not one of the input points (with z = 0)");
     }
