@@ -2,8 +2,10 @@
 #include "cli_io.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 
@@ -89,6 +91,22 @@ void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const s
         }
         throw UsageError(what + hint);
     }
+}
+
+std::uint64_t parse_whole_number(const std::string& value, const std::string& option, std::uint64_t min, std::uint64_t max) {
+    std::uint64_t number = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
+    if (value.empty() || error != std::errc() || end != value.data() + value.size() || number < min || number > max) {
+        throw UsageError("option " + option + " needs a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", got \"" + value + "\"");
+    }
+    return number;
+}
+
+void add_whole_number_option(CLI::App& app, const std::string& name, unsigned* value, unsigned min, unsigned max) {
+    app.add_option_function<std::string>(name, [=](const std::string& text) {
+           *value = static_cast<unsigned>(parse_whole_number(text, name, min, max));
+       })->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
 int print_usage_error(const std::string& message) {

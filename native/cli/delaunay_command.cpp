@@ -27,16 +27,22 @@ constexpr int kExitOk = 0;
 constexpr int kExitNotDelaunay = 1;
 
 const char* const kDelaunayUsage =
-    R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format off|json|svg] [--algorithm NAME]
-                        [--merge-cocircular] [--voronoi] [--stats] [--threads N]
-                        [--quiet]
+    R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format FORMAT] [--algorithm NAME]
+                        [--merge-cocircular] [--voronoi] [--stats]
+                        [--threads N] [--quiet]
 
 Computes the Delaunay triangulation of the 2D points in INPUT (standard input if
 INPUT is missing or '-'): the lower convex hull of the points lifted to the
 paraboloid z = x^2 + y^2, projected back to the plane. Every decision is exact.
+Triangles are clockwise with the y axis pointing up (as delaunator's, which
+calls them counter-clockwise on a y-down screen). Exact duplicates are merged
+into their lowest index. Collinear points or fewer than 3 distinct points give
+no triangles ("dimension" 1, 0), no points the empty triangulation (-1).
 
 Input ('#' starts a comment):
-  x y             one point per line (x y z lines also work: z is ignored)
+  x y             one point per line, separated by whitespace or a comma (x y z
+                  lines also work: z is ignored); a byte-order mark and a
+                  header row of column names ("x,y") are skipped
   qhull / rbox    the dimension (2, or 3 with z ignored), the point count, then
                   one point per line ('rbox 100 D2 | hullkit delaunay')
   OBJ, OFF, PLY,  the x and y of the file's vertices (by name or content)
@@ -60,20 +66,17 @@ Options:
   --stats             print one JSON line to standard error: points,
                       triangles, hull, algorithm, seconds (the triangulation
                       alone)
-  --threads N         1: everything on this thread; 0 (default) or more: the
-                      insertion is serial, and for 50 000 points or more the
-                      output stage takes a second thread. The output is the
-                      same for every N
+  --threads N         a whole number from 0 to 1024: 1 everything on this
+                      thread; 0 (default) or more: the insertion is serial,
+                      and for 50 000 points or more the output stage takes a
+                      second thread. The output is the same for every N
   --quiet             no progress line (otherwise drawn on standard error when
                       it is a terminal and the triangulation lasts over a
                       second: points inserted, rate, time left)
   -h, --help          show this help
 
-Triangles are clockwise with the y axis pointing up (as delaunator's, which
-calls them counter-clockwise on a y-down screen). Exact duplicates are merged
-into their lowest index. Collinear points or fewer than 3 distinct points give no
-triangles ("dimension" 1, 0). Exit status: 0 on success, 2 on a usage or input
-problem (one line on stderr).
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error).
 )";
 
 const char* const kVerifyDelaunayUsage =
@@ -158,7 +161,7 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     app.add_flag("--voronoi", args->voronoi);
     app.add_flag("--stats", args->stats);
     // Bounded as in `hullkit route`; the triangulation uses at most two threads anyway.
-    app.add_option("--threads", args->options.threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    add_whole_number_option(app, "--threads", &args->options.threads, 0, 1024);
     app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay");
     if (help) {
