@@ -25,34 +25,38 @@ namespace hullkit_cli {
 namespace {
 
 const char* const kDelaunay3Usage =
-    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format json|ele|vtk] [--threads N]
+    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT] [--threads N]
                          [--stats] [--quiet]
 
 Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
 input if INPUT is missing or '-'): the lower convex hull of the points lifted to
 (x, y, z, x^2 + y^2 + z^2), projected back. Every decision is exact; cospherical
 points (grids, lattices, spheres) are tetrahedralized by one rule that depends
-only on the points, and no tetrahedron is flat.
+only on the points, and no tetrahedron is flat. Tetrahedra are positively
+oriented (a, b, c counter-clockwise seen from d). Exact duplicates are merged
+into their lowest index. Coplanar points give the triangles of their plane,
+collinear points the points in order along their line, no points dimension -1.
 
 Input: every point format of 'hullkit hull' (x y z lines, qhull/rbox, OBJ, OFF,
 PLY, STL, glTF vertices).
 
 Options:
   -o, --output FILE   write to FILE instead of standard output
-  --format FORMAT     json (default): {"dimension", "tetrahedra": [[a,b,c,d],...],
-                        "neighbors": [[...],...] (the tetrahedron across the face
-                        opposite each corner, -1 on the hull), "hull": [[a,b,c],
-                        ...] (outward), "duplicates": [[i, first],...]}; coplanar
-                        input: "triangles", "neighbors", "normal"; collinear or
-                        one point: "vertices";
-                      ele: TetGen's .ele (and FILE's .node beside it: every
+  --format FORMAT     json (default): {"dimension", "tetrahedra": [[a,b,c,d],
+                        ...], "neighbors": [[...],...] (the tetrahedron across
+                        the face opposite each corner, -1 on the hull), "hull":
+                        [[a,b,c],...] (outward), "duplicates": [[i, first],
+                        ...]}; coplanar input: "triangles", "neighbors",
+                        "normal"; collinear or one point: "vertices";
+                      ele: TetGen's .ele, and FILE's .node beside it (every
                         input point, numbered from 1 in input order);
                       vtk: a legacy VTK unstructured grid of tetrahedra (opens
                         in ParaView);
-                      without --format, an output FILE ending in .json, .ele or
-                        .vtk selects that format
-  --threads N         0 (default) every hardware thread, 1 this thread only;
-                      the output is the same for every N
+                      without --format, an output FILE ending in .json, .ele
+                      or .vtk selects that format
+  --threads N         a whole number from 0 to 1024: 0 (default) every
+                      hardware thread, 1 this thread only; the output is the
+                      same for every N
   --stats             print one JSON line to standard error: points,
                       tetrahedra, hull, dimension, threads, seconds (the
                       tetrahedralization alone)
@@ -60,9 +64,8 @@ Options:
                       it is a terminal and the run lasts over a second)
   -h, --help          show this help
 
-Tetrahedra are positively oriented: a, b, c counter-clockwise seen from d. Exact
-duplicates are merged into their lowest index. Exit status: 0 on success, 2 on a
-usage or input problem (one line on stderr).
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error).
 )";
 
 const char* const kVerifyDelaunay3Usage =
@@ -70,19 +73,23 @@ const char* const kVerifyDelaunay3Usage =
 
 Checks, with exact arithmetic, that TETRAHEDRA is the Delaunay tetrahedralization
 of the 3D points in POINTS ('-' reads them from standard input; the input formats
-of 'hullkit delaunay3'): every tetrahedron positively oriented and not flat, each
-face shared by at most two tetrahedra on opposite sides, the boundary a closed
-convex surface (the convex hull), every distinct point used, and no point inside
-the circumsphere across any interior face (cospherical ties broken by the rule of
-'hullkit delaunay3').
+of 'hullkit delaunay3'): every tetrahedron positively oriented and not flat,
+each face shared by at most two tetrahedra on opposite sides, the boundary a
+closed convex surface (the convex hull), every distinct point used, and no point
+inside the circumsphere across any interior face (cospherical ties broken by the
+rule of 'hullkit delaunay3').
 
 TETRAHEDRA: the JSON of 'hullkit delaunay3' (0-based indices into POINTS), or a
 TetGen .ele file (indices numbered as its .node file beside it says, from 1 if
 there is none).
 
 Prints 'ok: ...' or each problem on its own line.
+
+Options:
+  -h, --help          show this help
+
 Exit status: 0 the tetrahedralization is Delaunay, 1 it is not, 2 a usage or
-input problem.
+input problem (one line on standard error).
 )";
 
 enum class Format { Json, Ele, Vtk };
@@ -120,7 +127,7 @@ bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
     app.add_option("input", args->input);
     app.add_option("-o,--output", args->output)->multi_option_policy(last);
     app.add_option("--format", format_name)->multi_option_policy(last);
-    app.add_option("--threads", args->threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    add_whole_number_option(app, "--threads", &args->threads, 0, 1024);
     app.add_flag("--stats", args->stats);
     app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay3");

@@ -254,10 +254,6 @@ TEST_CASE("cli: every command's --help has one layout: usage first, options with
         }
     }
     CHECK(commands.size() >= 5);
-    // The 3D Delaunay commands (issue 29) are being written elsewhere: checked here for the usage
-    // line, the exit status and --help == -h; their options block and ranges are not yet in this
-    // layout (verify-delaunay3 has no "Options:", delaunay3's --threads states no range).
-    const std::vector<std::string> in_progress = {"delaunay3", "verify-delaunay3"};
     const std::regex option_line(R"(^  (-\w, )?(--[a-z0-9-]+)( [A-Z]+)?)");
     const std::regex range(R"(a whole number\s+from\s+(\d+)\s+to\s+(\d+))");
     for (const std::string& command : commands) {
@@ -268,7 +264,6 @@ TEST_CASE("cli: every command's --help has one layout: usage first, options with
         CHECK(help.out.rfind("Usage: hullkit " + command + " ", 0) == 0);
         CHECK(run_cli(dir, {command, "-h"}).out == help.out);
         CHECK(help.out.find("Exit status: ") != std::string::npos);
-        if (std::find(in_progress.begin(), in_progress.end(), command) != in_progress.end()) continue;
         // One block of options, --help last; then the exit status.
         const std::size_t options = help.out.find("\nOptions:\n");
         REQUIRE(options != std::string::npos);
