@@ -38,7 +38,7 @@ into their lowest index. Coplanar points give the triangles of their plane,
 collinear points the points in order along their line, no points dimension -1.
 
 Input: every point format of 'hullkit hull' (x y z lines, qhull/rbox, OBJ, OFF,
-PLY, STL, glTF vertices).
+PLY, STL, glTF vertices, TetGen .node).
 
 Options:
   -o, --output FILE   write to FILE instead of standard output

@@ -63,6 +63,8 @@ Input formats, detected automatically ('#' starts a comment in all of them):
   glTF            .gltf (buffers embedded or in files next to it) or .glb: the
                   vertices of the default scene's triangle meshes, node
                   transforms applied
+  TetGen .node    a file named .node: 'points 3 attributes markers', then
+                  'index x y z [attributes] [marker]' lines
 
 Options:
   -o, --output FILE   write the hull to FILE instead of standard output
