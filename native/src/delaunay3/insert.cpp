@@ -37,6 +37,9 @@ namespace delaunay3_detail {
 namespace {
 
 
+/// The three corners of a tetrahedron other than k, in increasing order.
+constexpr int kOtherThree[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+
 /// The two corners of a tetrahedron other than i and j (i != j).
 constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
                                              {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
@@ -116,17 +119,38 @@ public:
             t = adjacent[4 * t + 3] >> 2;  // the finite side of its hull face
             if (restricted_ && !owns(t)) return kDefer;
         }
+        const Predicates& predicates = shared_.predicates;
+        const double* q = predicates.p(p);
+        const double bound = predicates.orient_bound();
         std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
             const std::uint32_t* c = corner + 4 * t;
+            // The corners relative to p, once: the orientation with corner k replaced by p is then
+            // the determinant of the other three, signed (k = 0: +[1 2 3], 1: -[0 2 3], 2: +[0 1 3],
+            // 3: -[0 1 2]), with orient3d's static bound (the same roundings as its filter).
+            double d[4][3];
+            for (int i = 0; i < 4; ++i) {
+                const double* v = predicates.p(c[i]);
+                d[i][0] = v[0] - q[0], d[i][1] = v[1] - q[1], d[i][2] = v[2] - q[2];
+            }
             const std::uint32_t first = next_random() & 3u;
             std::uint32_t exit = 4;
             for (std::uint32_t i = 0; i < 4; ++i) {
                 const std::uint32_t k = (first + i) & 3u;
                 if (k == entered) continue;
-                std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
-                w[k] = p;
-                if (shared_.predicates.orient(w[0], w[1], w[2], w[3]) < 0) {
+                const double* a = d[kOtherThree[k][0]];
+                const double* b = d[kOtherThree[k][1]];
+                const double* e = d[kOtherThree[k][2]];
+                double det = a[0] * (b[1] * e[2] - b[2] * e[1]) + a[1] * (b[2] * e[0] - b[0] * e[2]) +
+                             a[2] * (b[0] * e[1] - b[1] * e[0]);
+                if (k & 1u) det = -det;
+                bool beyond = det < -bound;
+                if (!beyond && !(det > bound)) {
+                    std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
+                    w[k] = p;
+                    beyond = orient3d(predicates.p(w[0]), predicates.p(w[1]), predicates.p(w[2]), predicates.p(w[3])) < 0;
+                }
+                if (beyond) {
                     exit = k;
                     break;
                 }
