@@ -245,14 +245,12 @@ private:
             slots_.push_back(free_->back());
             free_->pop_back();
         }
-        for (std::size_t i = 0; i < fresh; ++i) {
-            if (restricted_) {
-                slots_.push_back(block_next_++);
-            } else {
-                const std::size_t slot = shared_.mesh.size();
-                grow(slot + 1);
-                slots_.push_back(static_cast<std::uint32_t>(slot));
-            }
+        if (restricted_) {
+            for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(block_next_++);
+        } else if (fresh > 0) {
+            const std::size_t first = shared_.mesh.size();
+            grow(first + fresh);
+            for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(static_cast<std::uint32_t>(first + i));
         }
         for (std::size_t i = count; i < cavity_.size(); ++i) {  // a cavity with more cells than faces
             shared_.mesh.corner[4 * cavity_[i] + 3] = kFree;
