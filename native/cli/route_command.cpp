@@ -41,7 +41,7 @@ Scene (JSON; '-' reads it from standard input):
   ROTATION {"quaternion": [w,x,y,z]}, {"axis": [x,y,z], "degrees": a} or
   {"yaw_pitch_roll_degrees": [yaw, pitch, roll]}; a part or obstacle is
   {"box": {"min", "max"}}, {"vertices", "triangles"} or {"mesh": FILE} (OBJ,
-  OFF, PLY, STL, glTF; relative to the scene file). See README.md.
+  OFF, PLY, STL, glTF; relative to the scene file). See docs/route-checking.md.
 
 Options:
   -o, --output FILE   write the report to FILE instead of standard output
