@@ -2,7 +2,7 @@
 # Builds hullkit. With no arguments: the native library, CLI and tests (build/native), the wasm
 # module (build/wasm) and the page as a static site (build/site). Arguments pick among: native,
 # cli (the library and the hullkit command alone, in build/native), wasm, site (build/site from
-# the wasm build and three.js: scripts/build-site.js, docs/site.md; after wasm), asan (the C++
+# the wasm build and three.js: scripts/build-site.js, docs/page.md; after wasm), asan (the C++
 # tests under AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan), tsan (the C++ test
 # executables under ThreadSanitizer, in build/tsan; scripts/test.sh runs their "[threads]" tests).
 set -euo pipefail

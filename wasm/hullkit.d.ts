@@ -4,6 +4,23 @@
  * (copied out of the WebAssembly heap), so results stay valid across later calls.
  */
 
+/**
+ * One 3D point as callers hold them: `[x, y, z]` (an array or typed array of 3 numbers), or an
+ * object with numeric `x`, `y`, `z` (three.js `Vector3`, `{x, y, z}`; other properties ignored).
+ */
+export type Point3 = ArrayLike<number> | { readonly x: number; readonly y: number; readonly z: number };
+/** One 2D point: `[x, y]`, or an object with numeric `x`, `y` (three.js `Vector2`, `{x, y}`). */
+export type Point2 = ArrayLike<number> | { readonly x: number; readonly y: number };
+/**
+ * 3D points: flat, x0 y0 z0 x1 y1 z1 ... (a Float64Array is used as it is, without a copy: the fast
+ * path; other array-likes of numbers are copied into one), or an array of {@link Point3} (as
+ * quickhull3d and three.js take them), flattened into a Float64Array. Anything else (a ragged
+ * array, a string) is an error saying what to pass: "points[3] has 2 coordinates, expected 3".
+ */
+export type Points3 = Float64Array | ArrayLike<number> | ArrayLike<Point3>;
+/** 2D points: flat x0 y0 x1 y1 ..., or an array of {@link Point2} (as delaunator's `Delaunator.from` takes them). */
+export type Points2 = Float64Array | ArrayLike<number> | ArrayLike<Point2>;
+
 /** Algorithms available to {@link Hullkit.hull}. */
 export type HullAlgorithm = 'quickhull' | 'giftwrap';
 
@@ -83,6 +100,15 @@ export interface Hullkit {
    */
   hull(xyz: Float64Array | ArrayLike<number>, options?: HullOptions): HullResult;
   /**
+   * The convex hull of an array of points, `[[x, y, z], ...]` or `[{x, y, z}, ...]` (three.js
+   * `Vector3`s; as quickhull3d and three.js's `ConvexHull` take them), flattened into a Float64Array
+   * first (pass a Float64Array to skip that copy). Indices in the result are positions in the array.
+   *
+   * @throws {HullkitError} for an entry that is not a point of 3 numbers ("points[3] has 2
+   *   coordinates, expected 3"; `pointIndex` names it), and as the flat overload.
+   */
+  hull(points: ArrayLike<Point3>, options?: HullOptions): HullResult;
+  /**
    * Checks exactly (with exact predicates) that `result` is the convex hull of `xyz`: indices in
    * range, no zero-area triangle, closed and consistently oriented (every directed edge once and
    * its reverse once), convex, containing every point, with only extreme points as vertices.
@@ -94,7 +120,7 @@ export interface Hullkit {
    *   triangles, an index that is not a non-negative integer).
    */
   verify(
-    xyz: Float64Array | ArrayLike<number>,
+    xyz: Points3,
     result: { triangles: Uint32Array | ArrayLike<number>; vertices?: Uint32Array | ArrayLike<number>; dimension?: number },
   ): VerifyReport;
   /** The algorithm names `hull` accepts, the default first. */
@@ -111,7 +137,7 @@ export interface Hullkit {
    *   (5000 single pass, 1000 restart), an unknown option or scan, a coordinate count that is not a
    *   multiple of 3, a non-finite coordinate (`pointIndex`), or coordinates out of the exact range.
    */
-  giftwrapTrace(xyz: Float64Array | ArrayLike<number>, options?: GiftwrapTraceOptions): GiftwrapTrace;
+  giftwrapTrace(xyz: Points3, options?: GiftwrapTraceOptions): GiftwrapTrace;
   /** The most points {@link Hullkit.giftwrapTrace} takes per scan, and {@link Hullkit.delaunayGiftwrapTrace} (`delaunay`). */
   readonly traceLimits: Readonly<Record<GiftwrapScan | 'delaunay', number>>;
   /**
@@ -166,7 +192,7 @@ export interface Hullkit {
    * @throws {HullkitError} for a coordinate beyond float32's range (about 3.4e38), or a result that
    *   does not fit the points.
    */
-  writeGlb(xyz: Float64Array | ArrayLike<number>, result: { vertices: Uint32Array | ArrayLike<number>; triangles: Uint32Array | ArrayLike<number> }): Uint8Array;
+  writeGlb(xyz: Points3, result: { vertices: Uint32Array | ArrayLike<number>; triangles: Uint32Array | ArrayLike<number> }): Uint8Array;
   /**
    * The Delaunay triangulation of the 2D points `xy`, a flat array x0 y0 x1 y1 ... (a Float64Array
    * is used as it is; other array-likes of numbers are converted): the lower convex hull of the
@@ -181,6 +207,15 @@ export interface Hullkit {
    */
   delaunay(xy: Float64Array | ArrayLike<number>, options?: DelaunayOptions): DelaunayResult;
   /**
+   * The Delaunay triangulation of an array of points, `[[x, y], ...]` (as delaunator's
+   * `Delaunator.from` takes them) or `[{x, y}, ...]` (three.js `Vector2`s), flattened into a
+   * Float64Array first (pass a Float64Array to skip that copy).
+   *
+   * @throws {HullkitError} for an entry that is not a point of 2 numbers ("points[3] has 3
+   *   coordinates, expected 2"; `pointIndex` names it), and as the flat overload.
+   */
+  delaunay(points: ArrayLike<Point2>, options?: DelaunayOptions): DelaunayResult;
+  /**
    * The index of the input point nearest to (x, y) (exact ties: the lowest index; a duplicate is
    * never returned, its representative is), found by walking `triangulation` from point `start`
    * (default 0; the previous answer is a good start for a moving query). -1 when there are no points.
@@ -189,7 +224,7 @@ export interface Hullkit {
    * @throws {HullkitError} for a non-finite x or y, a `start` that is not a point index, or a
    *   triangulation whose arrays do not fit `xy` (an index out of range, mismatched lengths).
    */
-  find(xy: Float64Array | ArrayLike<number>, triangulation: DelaunayTriangulation, x: number, y: number, start?: number): number;
+  find(xy: Points2, triangulation: DelaunayTriangulation, x: number, y: number, start?: number): number;
   /**
    * The Voronoi cells of the points, clipped to the rectangle `bounds` = [xmin, ymin, xmax, ymax],
    * built from the circumcentres of `triangulation`'s triangles.
@@ -197,7 +232,7 @@ export interface Hullkit {
    * @throws {HullkitError} for bounds that are not four finite numbers with xmin < xmax and
    *   ymin < ymax, or a triangulation whose arrays do not fit `xy`.
    */
-  voronoi(xy: Float64Array | ArrayLike<number>, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
+  voronoi(xy: Points2, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
   /** The algorithm names `delaunay` accepts, the default first. */
   readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
   /**
@@ -214,7 +249,7 @@ export interface Hullkit {
    *
    * @throws {HullkitError} for more than 2000 points (`traceLimits.delaunay`), and as {@link Hullkit.delaunay}.
    */
-  delaunayGiftwrapTrace(xy: Float64Array | ArrayLike<number>): GiftwrapTrace;
+  delaunayGiftwrapTrace(xy: Points2): GiftwrapTrace;
   /**
    * The Delaunay tetrahedralization of the 3D points `xyz`, a flat array x0 y0 z0 x1 y1 z1 ... (a
    * Float64Array is used as it is; an array of numbers is converted; an array of [x, y, z] or

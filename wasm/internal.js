@@ -32,26 +32,90 @@ export function toUint32(values, where) {
   return Uint32Array.from(values);
 }
 
+/** A value as it may appear in a message: its type, and short values themselves. */
+function described(value) {
+  if (value === null) return 'null';
+  if (Array.isArray(value)) return `an array of ${value.length}`;
+  if (typeof value === 'string') return `the string ${JSON.stringify(value.length > 20 ? `${value.slice(0, 20)}...` : value)}`;
+  if (typeof value === 'object') return 'an object';
+  return `${typeof value} ${String(value)}`;
+}
+
 /**
- * Points as a Float64Array of `dimension` coordinates per point (a plain array of numbers is
- * copied into one); checks the length is a whole number of points and the count fits uint32.
+ * Points as a Float64Array of `dimension` (2 or 3) coordinates per point, from what callers have:
+ *  - a flat Float64Array x0 y0 z0 x1 y1 z1 ... (x0 y0 x1 y1 ... in 2D): used as it is, no copy (the
+ *    fast path);
+ *  - a flat array (or other typed array) of numbers: copied into one;
+ *  - an array of points, as quickhull3d, three.js and delaunator's `Delaunator.from` take them:
+ *    [x, y, z] arrays (or typed arrays), or objects with numeric x, y (and z) properties, such as
+ *    three.js's Vector3 (Vector2 in 2D; other properties are ignored): flattened into one.
+ * Anything else is a TypeError or a HullkitError saying what was found where and what to pass; the
+ * count must fit uint32. Non-finite numbers are passed on (the core names their point).
  */
 export function toFloat64(coordinates, where, dimension = 3) {
-  const layout = dimension === 2 ? 'x0 y0 x1 y1 ...' : 'x0 y0 z0 x1 y1 z1 ...';
+  const axes = dimension === 2 ? ['x', 'y'] : ['x', 'y', 'z'];
+  const flatLayout = dimension === 2 ? 'x0 y0 x1 y1 ...' : 'x0 y0 z0 x1 y1 z1 ...';
+  const pointLayout = dimension === 2 ? '[x, y] or {x, y}' : '[x, y, z] or {x, y, z}';
+  const what = `pass a flat Float64Array (or array of numbers) ${flatLayout}, or an array of points ${pointLayout}`;
   let points = coordinates;
   if (!(coordinates instanceof Float64Array)) {
     if (coordinates == null || typeof coordinates.length !== 'number' || typeof coordinates === 'string') {
-      throw new TypeError(`${where}: points must be a Float64Array (or an array of numbers) ${layout}`);
+      throw new TypeError(`${where}: points must be a Float64Array (or an array of numbers) ${flatLayout}, or an array of points ${pointLayout}`);
     }
-    points = Float64Array.from(coordinates);
+    const first = coordinates[0];
+    points = coordinates.length > 0 && first !== null && typeof first === 'object' && !ArrayBuffer.isView(coordinates)
+      ? flattenPoints(coordinates, where, axes, what)
+      : flatNumbers(coordinates, where, what);
   }
   if (points.length % dimension !== 0) {
-    throw new HullkitError(`${where}: ${points.length} coordinates is not a whole number of ${dimension}D points`);
+    throw new HullkitError(`${where}: ${points.length} coordinates is not a whole number of ${dimension}D points (${flatLayout}); ` +
+      `or pass an array of points ${pointLayout}`);
   }
   if (points.length / dimension > 0xffffffff) {
     throw new HullkitError(`${where}: too many points (${points.length / dimension}), at most 4294967295`);
   }
   return points;
+}
+
+/** A flat array-like of numbers (a typed array, or an array whose entries must all be numbers) copied. */
+function flatNumbers(values, where, what) {
+  if (!ArrayBuffer.isView(values)) {
+    for (let i = 0; i < values.length; i++) {
+      if (typeof values[i] !== 'number') {
+        throw new HullkitError(`${where}: entry ${i} of the flat coordinate array is ${described(values[i])}, not a number; ${what}`);
+      }
+    }
+  }
+  return Float64Array.from(values);
+}
+
+/** An array of points ([x, y, z] arrays or typed arrays, or {x, y, z} objects) flattened. */
+function flattenPoints(points, where, axes, what) {
+  const d = axes.length;
+  const out = new Float64Array(d * points.length);
+  const fail = (i, problem) => new HullkitError(`${where}: points[${i}]${problem}; ${what}`, { pointIndex: i });
+  for (let i = 0; i < points.length; i++) {
+    const p = points[i];
+    if (Array.isArray(p) || ArrayBuffer.isView(p)) {
+      if (p.length !== d) {
+        throw new HullkitError(`${where}: points[${i}] has ${p.length} coordinate${p.length === 1 ? '' : 's'}, expected ${d}`, { pointIndex: i });
+      }
+      for (let k = 0; k < d; k++) {
+        const v = p[k];
+        if (typeof v !== 'number') throw fail(i, `[${k}] is ${described(v)}, not a number`);
+        out[d * i + k] = v;
+      }
+    } else if (p !== null && typeof p === 'object') {
+      for (let k = 0; k < d; k++) {
+        const v = p[axes[k]];
+        if (typeof v !== 'number') throw fail(i, ` has no numeric ${axes[k]} (${axes[k]} is ${v === undefined ? 'missing' : described(v)})`);
+        out[d * i + k] = v;
+      }
+    } else {
+      throw fail(i, ` is ${described(p)}, not a point`);
+    }
+  }
+  return out;
 }
 
 export function checkOptions(options, known, where) {

@@ -2,12 +2,15 @@
 #include "cli_io.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 
 namespace hullkit_cli {
 
@@ -23,6 +26,30 @@ std::string read_input(const std::string& path) {
     std::string error;
     if (!hullkit::read_file(path, &text, &error)) throw UsageError(error);
     return text;
+}
+
+hullkit::MeshResult read_mesh_file(const std::string& path) {
+    const std::string bytes = read_input(path);
+    hullkit::MeshResult mesh;
+    switch (hullkit::detect_mesh_format(bytes, path)) {
+        case hullkit::MeshFormat::Off:  // faces may be missing: a segment, a point, nothing
+            mesh = hullkit::read_off_mesh(bytes, path);
+            break;
+        case hullkit::MeshFormat::Obj:
+            mesh = hullkit::read_obj_mesh(bytes, path);
+            if (!mesh.ok()) {
+                // An OBJ without vertices (the empty hull's) is no mesh for the mesh reader, but
+                // no points, and no error, for the point reader, which reads OBJ's vertices too.
+                const hullkit::PointsResult points = hullkit::parse_points(bytes, path);
+                if (points.ok() && points.xyz.empty()) mesh = hullkit::MeshResult();
+            }
+            break;
+        default:  // PLY, STL, glTF, or a message saying what the file is not
+            mesh = hullkit::read_mesh(bytes, path);
+            break;
+    }
+    if (!mesh.ok()) throw UsageError(mesh.error);
+    return mesh;
 }
 
 void write_output(const std::string& path, const std::string& text) {
@@ -64,6 +91,22 @@ void parse_or_throw(CLI::App& app, const std::vector<std::string>& args, const s
         }
         throw UsageError(what + hint);
     }
+}
+
+std::uint64_t parse_whole_number(const std::string& value, const std::string& option, std::uint64_t min, std::uint64_t max) {
+    std::uint64_t number = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
+    if (value.empty() || error != std::errc() || end != value.data() + value.size() || number < min || number > max) {
+        throw UsageError("option " + option + " needs a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", got \"" + value + "\"");
+    }
+    return number;
+}
+
+void add_whole_number_option(CLI::App& app, const std::string& name, unsigned* value, unsigned min, unsigned max) {
+    app.add_option_function<std::string>(name, [=](const std::string& text) {
+           *value = static_cast<unsigned>(parse_whole_number(text, name, min, max));
+       })->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
 int print_usage_error(const std::string& message) {

@@ -25,34 +25,38 @@ namespace hullkit_cli {
 namespace {
 
 const char* const kDelaunay3Usage =
-    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format json|ele|vtk] [--threads N]
+    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT] [--threads N]
                          [--stats] [--quiet]
 
 Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
 input if INPUT is missing or '-'): the lower convex hull of the points lifted to
 (x, y, z, x^2 + y^2 + z^2), projected back. Every decision is exact; cospherical
 points (grids, lattices, spheres) are tetrahedralized by one rule that depends
-only on the points, and no tetrahedron is flat.
+only on the points, and no tetrahedron is flat. Tetrahedra are positively
+oriented (a, b, c counter-clockwise seen from d). Exact duplicates are merged
+into their lowest index. Coplanar points give the triangles of their plane,
+collinear points the points in order along their line, no points dimension -1.
 
 Input: every point format of 'hullkit hull' (x y z lines, qhull/rbox, OBJ, OFF,
-PLY, STL, glTF vertices).
+PLY, STL, glTF vertices, TetGen .node).
 
 Options:
   -o, --output FILE   write to FILE instead of standard output
-  --format FORMAT     json (default): {"dimension", "tetrahedra": [[a,b,c,d],...],
-                        "neighbors": [[...],...] (the tetrahedron across the face
-                        opposite each corner, -1 on the hull), "hull": [[a,b,c],
-                        ...] (outward), "duplicates": [[i, first],...]}; coplanar
-                        input: "triangles", "neighbors", "normal"; collinear or
-                        one point: "vertices";
-                      ele: TetGen's .ele (and FILE's .node beside it: every
+  --format FORMAT     json (default): {"dimension", "tetrahedra": [[a,b,c,d],
+                        ...], "neighbors": [[...],...] (the tetrahedron across
+                        the face opposite each corner, -1 on the hull), "hull":
+                        [[a,b,c],...] (outward), "duplicates": [[i, first],
+                        ...]}; coplanar input: "triangles", "neighbors",
+                        "normal"; collinear or one point: "vertices";
+                      ele: TetGen's .ele, and FILE's .node beside it (every
                         input point, numbered from 1 in input order);
                       vtk: a legacy VTK unstructured grid of tetrahedra (opens
                         in ParaView);
-                      without --format, an output FILE ending in .json, .ele or
-                        .vtk selects that format
-  --threads N         0 (default) every hardware thread, 1 this thread only;
-                      the output is the same for every N
+                      without --format, an output FILE ending in .json, .ele
+                      or .vtk selects that format
+  --threads N         a whole number from 0 to 1024: 0 (default) every
+                      hardware thread, 1 this thread only; the output is the
+                      same for every N
   --stats             print one JSON line to standard error: points,
                       tetrahedra, hull, dimension, threads, seconds (the
                       tetrahedralization alone)
@@ -60,9 +64,8 @@ Options:
                       it is a terminal and the run lasts over a second)
   -h, --help          show this help
 
-Tetrahedra are positively oriented: a, b, c counter-clockwise seen from d. Exact
-duplicates are merged into their lowest index. Exit status: 0 on success, 2 on a
-usage or input problem (one line on stderr).
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error).
 )";
 
 const char* const kVerifyDelaunay3Usage =
@@ -70,19 +73,23 @@ const char* const kVerifyDelaunay3Usage =
 
 Checks, with exact arithmetic, that TETRAHEDRA is the Delaunay tetrahedralization
 of the 3D points in POINTS ('-' reads them from standard input; the input formats
-of 'hullkit delaunay3'): every tetrahedron positively oriented and not flat, each
-face shared by at most two tetrahedra on opposite sides, the boundary a closed
-convex surface (the convex hull), every distinct point used, and no point inside
-the circumsphere across any interior face (cospherical ties broken by the rule of
-'hullkit delaunay3').
+of 'hullkit delaunay3'): every tetrahedron positively oriented and not flat,
+each face shared by at most two tetrahedra on opposite sides, the boundary a
+closed convex surface (the convex hull), every distinct point used, and no point
+inside the circumsphere across any interior face (cospherical ties broken by the
+rule of 'hullkit delaunay3').
 
 TETRAHEDRA: the JSON of 'hullkit delaunay3' (0-based indices into POINTS), or a
 TetGen .ele file (indices numbered as its .node file beside it says, from 1 if
 there is none).
 
 Prints 'ok: ...' or each problem on its own line.
+
+Options:
+  -h, --help          show this help
+
 Exit status: 0 the tetrahedralization is Delaunay, 1 it is not, 2 a usage or
-input problem.
+input problem (one line on standard error).
 )";
 
 enum class Format { Json, Ele, Vtk };
@@ -120,7 +127,7 @@ bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
     app.add_option("input", args->input);
     app.add_option("-o,--output", args->output)->multi_option_policy(last);
     app.add_option("--format", format_name)->multi_option_policy(last);
-    app.add_option("--threads", args->threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    add_whole_number_option(app, "--threads", &args->threads, 0, 1024);
     app.add_flag("--stats", args->stats);
     app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay3");
@@ -158,8 +165,12 @@ std::vector<double> read_cloud(const std::string& path, unsigned threads, bool q
     hullkit::PointReaderOptions options;
     options.threads = threads;
     hullkit::PointReader reader(file, source_name(path), options);
+    // Address space for every point the header declares or the file could hold (no point line is
+    // shorter than 6 bytes), so that the array never grows by a copy (which would hold it twice);
+    // pages are touched only as points arrive.
     std::vector<double> xyz;
-    if (reader.declared_points()) xyz.reserve(3 * static_cast<std::size_t>(reader.declared_points()));
+    const std::uint64_t expected = reader.declared_points() ? reader.declared_points() : reader.size() / 6 + 1;
+    xyz.reserve(3 * static_cast<std::size_t>(std::min<std::uint64_t>(expected, std::uint64_t{1} << 31)));
     while (reader.append_next(&xyz)) {
     }
     if (!reader.error().empty()) throw UsageError(reader.error());
@@ -167,153 +178,184 @@ std::vector<double> read_cloud(const std::string& path, unsigned threads, bool q
     return xyz;
 }
 
-/// Appends unsigned integers and separators to a growing buffer quickly (std::to_chars).
-struct TextOut {
-    std::string text;
-    void number(std::uint64_t value) {
-        char buffer[24];
-        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-        text.append(buffer, end);
+/// Text written straight to a file (or standard output for "" and "-") through a buffer of about
+/// a megabyte: a million points' tetrahedra are hundreds of megabytes of text, never held whole.
+/// Numbers by std::to_chars (doubles: the shortest text that reads back the same).
+class TextOut {
+public:
+    explicit TextOut(const std::string& path) : path_(path.empty() || path == "-" ? "<stdout>" : path) {
+        file_ = path.empty() || path == "-" ? stdout : std::fopen(path.c_str(), "wb");
+        if (!file_) throw UsageError(path + ": cannot open for writing: " + std::strerror(errno));
+        buffer_.reserve(kFlushAt + 256);
     }
-    void signed_number(std::int64_t value) {
-        char buffer[24];
-        const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-        text.append(buffer, end);
+    ~TextOut() {
+        if (file_ && file_ != stdout) std::fclose(file_);
     }
-    void operator+=(const char* s) { text += s; }
-    void operator+=(char c) { text += c; }
+    TextOut(const TextOut&) = delete;
+    TextOut& operator=(const TextOut&) = delete;
+
+    void put(const char* text) {
+        buffer_ += text;
+        maybe_flush();
+    }
+    void put(char c) { buffer_ += c; }
+    void number(std::int64_t value) {
+        char digits[24];
+        buffer_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+        maybe_flush();
+    }
+    void real(double value) {
+        char digits[32];
+        buffer_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+        maybe_flush();
+    }
+    /// Writes what is left and closes the file; a full disk or a closed pipe is an error naming it.
+    void finish() {
+        flush();
+        const bool ok = file_ == stdout ? std::fflush(stdout) == 0 : std::fclose(file_) == 0;
+        if (file_ != stdout) file_ = nullptr;
+        if (!ok) throw UsageError(path_ + ": cannot write: " + std::strerror(errno));
+    }
+
+private:
+    static constexpr std::size_t kFlushAt = std::size_t{1} << 20;
+    void maybe_flush() {
+        if (buffer_.size() >= kFlushAt) flush();
+    }
+    void flush() {
+        if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+            throw UsageError(path_ + ": cannot write: " + std::strerror(errno));
+        }
+        buffer_.clear();
+    }
+    std::string path_;
+    std::FILE* file_ = nullptr;
+    std::string buffer_;
 };
 
 /// JSON lists of index tuples: [[a,b,c],[...]].
 template <class Int>
 void json_tuples(TextOut& out, const std::vector<Int>& values, std::size_t arity) {
-    out += '[';
+    out.put('[');
     for (std::size_t i = 0; i < values.size(); i += arity) {
-        if (i) out += ',';
-        out += '[';
+        if (i) out.put(',');
+        out.put('[');
         for (std::size_t k = 0; k < arity; ++k) {
-            if (k) out += ',';
-            out.signed_number(static_cast<std::int64_t>(values[i + k]));
+            if (k) out.put(',');
+            out.number(static_cast<std::int64_t>(values[i + k]));
         }
-        out += ']';
+        out.put(']');
     }
-    out += ']';
+    out.put(']');
 }
 
-std::string write_json(const hullkit::Delaunay3& d) {
-    TextOut out;
-    out.text.reserve(80 * d.tetrahedron_count() + 64);
-    out += "{\"dimension\":";
-    out.signed_number(d.dimension);
+void write_json(TextOut& out, const hullkit::Delaunay3& d) {
+    out.put("{\"dimension\":");
+    out.number(d.dimension);
     if (d.dimension == 3) {
-        out += ",\"tetrahedra\":";
+        out.put(",\"tetrahedra\":");
         json_tuples(out, d.tetrahedra, 4);
-        out += ",\"neighbors\":";
+        out.put(",\"neighbors\":");
         json_tuples(out, d.neighbors, 4);
-        out += ",\"hull\":";
+        out.put(",\"hull\":");
         json_tuples(out, d.hull, 3);
     } else if (d.dimension == 2) {
-        out += ",\"triangles\":";
+        out.put(",\"triangles\":");
         json_tuples(out, d.triangles, 3);
-        out += ",\"neighbors\":";
+        out.put(",\"neighbors\":");
         json_tuples(out, d.neighbors, 3);
-        out += ",\"normal\":[";
+        out.put(",\"normal\":[");
         for (int k = 0; k < 3; ++k) {
-            if (k) out += ',';
-            out.text += hullkit::format_double(d.normal[k]);
+            if (k) out.put(',');
+            out.real(d.normal[k]);
         }
-        out += ']';
+        out.put(']');
     } else {
-        out += ",\"vertices\":";
+        out.put(",\"vertices\":");
         json_tuples(out, d.vertices, 1);
     }
-    out += ",\"duplicates\":[";
+    out.put(",\"duplicates\":[");
     bool first = true;
     for (std::size_t i = 0; i < d.representative.size(); ++i) {
         if (d.representative[i] == i) continue;
-        if (!first) out += ',';
+        if (!first) out.put(',');
         first = false;
-        out += '[';
-        out.number(i);
-        out += ',';
+        out.put('[');
+        out.number(static_cast<std::int64_t>(i));
+        out.put(',');
         out.number(d.representative[i]);
-        out += ']';
+        out.put(']');
     }
-    out += "]}\n";
-    return std::move(out.text);
+    out.put("]}\n");
+}
+
+/// One point's coordinates, space-separated.
+void write_point(TextOut& out, const double* p) {
+    for (int k = 0; k < 3; ++k) {
+        if (k) out.put(' ');
+        out.real(p[k]);
+    }
 }
 
 /// TetGen's .node: "N 3 0 0" then "i x y z", numbered from 1.
-std::string write_node(const std::vector<double>& xyz) {
-    TextOut out;
+void write_node(TextOut& out, const std::vector<double>& xyz) {
     const std::size_t n = xyz.size() / 3;
-    out.number(n);
-    out += " 3 0 0\n";
+    out.number(static_cast<std::int64_t>(n));
+    out.put(" 3 0 0\n");
     for (std::size_t i = 0; i < n; ++i) {
-        out.number(i + 1);
-        for (int k = 0; k < 3; ++k) {
-            out += ' ';
-            out.text += hullkit::format_double(xyz[3 * i + k]);
-        }
-        out += '\n';
+        out.number(static_cast<std::int64_t>(i + 1));
+        out.put(' ');
+        write_point(out, &xyz[3 * i]);
+        out.put('\n');
     }
-    return std::move(out.text);
 }
 
 /// TetGen's .ele: "T 4 0" then "t a b c d", numbered from 1 (tetrahedra and nodes alike).
-std::string write_ele(const hullkit::Delaunay3& d) {
-    TextOut out;
-    out.text.reserve(48 * d.tetrahedron_count() + 32);
-    out.number(d.tetrahedron_count());
-    out += " 4 0\n";
+void write_ele(TextOut& out, const hullkit::Delaunay3& d) {
+    out.number(static_cast<std::int64_t>(d.tetrahedron_count()));
+    out.put(" 4 0\n");
     for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
-        out.number(t + 1);
+        out.number(static_cast<std::int64_t>(t + 1));
         for (int k = 0; k < 4; ++k) {
-            out += ' ';
-            out.number(std::uint64_t{d.tetrahedra[4 * t + k]} + 1);
+            out.put(' ');
+            out.number(std::int64_t{d.tetrahedra[4 * t + k]} + 1);
         }
-        out += '\n';
+        out.put('\n');
     }
-    return std::move(out.text);
 }
 
 /// Legacy VTK, an unstructured grid: every input point, then the tetrahedra (cell type 10), or the
 /// triangles of coplanar input (type 5).
-std::string write_vtk(const std::vector<double>& xyz, const hullkit::Delaunay3& d) {
-    TextOut out;
+void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Delaunay3& d) {
     const std::size_t n = xyz.size() / 3;
-    out += "# vtk DataFile Version 3.0\nhullkit delaunay3\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS ";
-    out.number(n);
-    out += " double\n";
+    out.put("# vtk DataFile Version 3.0\nhullkit delaunay3\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS ");
+    out.number(static_cast<std::int64_t>(n));
+    out.put(" double\n");
     for (std::size_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) {
-            if (k) out += ' ';
-            out.text += hullkit::format_double(xyz[3 * i + k]);
-        }
-        out += '\n';
+        write_point(out, &xyz[3 * i]);
+        out.put('\n');
     }
     const bool solid = d.dimension == 3;
     const std::vector<std::uint32_t>& cells = solid ? d.tetrahedra : d.triangles;
     const std::size_t arity = solid ? 4 : 3;
     const std::size_t count = cells.size() / arity;
-    out += "CELLS ";
-    out.number(count);
-    out += ' ';
-    out.number(count * (arity + 1));
-    out += '\n';
+    out.put("CELLS ");
+    out.number(static_cast<std::int64_t>(count));
+    out.put(' ');
+    out.number(static_cast<std::int64_t>(count * (arity + 1)));
+    out.put('\n');
     for (std::size_t c = 0; c < count; ++c) {
-        out.number(arity);
+        out.number(static_cast<std::int64_t>(arity));
         for (std::size_t k = 0; k < arity; ++k) {
-            out += ' ';
+            out.put(' ');
             out.number(cells[arity * c + k]);
         }
-        out += '\n';
+        out.put('\n');
     }
-    out += "CELL_TYPES ";
-    out.number(count);
-    out += '\n';
-    for (std::size_t c = 0; c < count; ++c) out += solid ? "10\n" : "5\n";
-    return std::move(out.text);
+    out.put("CELL_TYPES ");
+    out.number(static_cast<std::int64_t>(count));
+    out.put('\n');
+    for (std::size_t c = 0; c < count; ++c) out.put(solid ? "10\n" : "5\n");
 }
 
 /// "FILE.ele" -> "FILE.node" (any other name gets ".node" appended).
@@ -341,19 +383,23 @@ int delaunay3_main(const std::vector<std::string>& argv) {
     }
     const auto stop = std::chrono::steady_clock::now();
     if (!result.ok()) throw UsageError(source_name(args.input) + ": " + result.error);
-    switch (args.format) {
-        case Format::Json: write_output(args.output, write_json(result)); break;
-        case Format::Vtk: write_output(args.output, write_vtk(xyz, result)); break;
-        case Format::Ele:
-            if (result.dimension != 3) {
-                throw UsageError(source_name(args.input) + ": the points are " +
-                                 (result.dimension == 2 ? "coplanar" : "not spread in 3D") +
-                                 ": there are no tetrahedra for a .ele file (use --format json or vtk)");
-            }
-            write_output(node_path_of(args.output), write_node(xyz));
-            write_output(args.output, write_ele(result));
-            break;
+    if (args.format == Format::Ele && result.dimension != 3) {
+        throw UsageError(source_name(args.input) + ": the points are " +
+                         (result.dimension == 2 ? "coplanar" : "not spread in 3D") +
+                         ": there are no tetrahedra for a .ele file (use --format json or vtk)");
     }
+    if (args.format == Format::Ele) {
+        TextOut node(node_path_of(args.output));
+        write_node(node, xyz);
+        node.finish();
+    }
+    TextOut out(args.output);
+    switch (args.format) {
+        case Format::Json: write_json(out, result); break;
+        case Format::Vtk: write_vtk(out, xyz, result); break;
+        case Format::Ele: write_ele(out, result); break;
+    }
+    out.finish();
     if (args.stats) {
         const unsigned threads = args.threads ? args.threads : std::max(1u, std::thread::hardware_concurrency());
         std::fprintf(stderr,

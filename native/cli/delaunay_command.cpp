@@ -27,16 +27,22 @@ constexpr int kExitOk = 0;
 constexpr int kExitNotDelaunay = 1;
 
 const char* const kDelaunayUsage =
-    R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format off|json|svg] [--algorithm NAME]
-                        [--merge-cocircular] [--voronoi] [--stats] [--threads N]
-                        [--quiet]
+    R"(Usage: hullkit delaunay [INPUT|-] [-o FILE] [--format FORMAT] [--algorithm NAME]
+                        [--merge-cocircular] [--voronoi] [--stats]
+                        [--threads N] [--quiet]
 
 Computes the Delaunay triangulation of the 2D points in INPUT (standard input if
 INPUT is missing or '-'): the lower convex hull of the points lifted to the
 paraboloid z = x^2 + y^2, projected back to the plane. Every decision is exact.
+Triangles are clockwise with the y axis pointing up (as delaunator's, which
+calls them counter-clockwise on a y-down screen). Exact duplicates are merged
+into their lowest index. Collinear points or fewer than 3 distinct points give
+no triangles ("dimension" 1, 0), no points the empty triangulation (-1).
 
 Input ('#' starts a comment):
-  x y             one point per line (x y z lines also work: z is ignored)
+  x y             one point per line, separated by whitespace or a comma (x y z
+                  lines also work: z is ignored); a byte-order mark and a
+                  header row of column names ("x,y") are skipped
   qhull / rbox    the dimension (2, or 3 with z ignored), the point count, then
                   one point per line ('rbox 100 D2 | hullkit delaunay')
   OBJ, OFF, PLY,  the x and y of the file's vertices (by name or content)
@@ -60,39 +66,41 @@ Options:
   --stats             print one JSON line to standard error: points,
                       triangles, hull, algorithm, seconds (the triangulation
                       alone)
-  --threads N         1: everything on this thread; 0 (default) or more: the
-                      insertion is serial, and for 50 000 points or more the
-                      output stage takes a second thread. The output is the
-                      same for every N
+  --threads N         a whole number from 0 to 1024: 1 everything on this
+                      thread; 0 (default) or more: the insertion is serial,
+                      and for 50 000 points or more the output stage takes a
+                      second thread. The output is the same for every N
   --quiet             no progress line (otherwise drawn on standard error when
                       it is a terminal and the triangulation lasts over a
                       second: points inserted, rate, time left)
   -h, --help          show this help
 
-Triangles are clockwise with the y axis pointing up (as delaunator's, which
-calls them counter-clockwise on a y-down screen). Exact duplicates are merged
-into their lowest index. Collinear points or fewer than 3 distinct points give no
-triangles ("dimension" 1, 0). Exit status: 0 on success, 2 on a usage or input
-problem (one line on stderr).
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error).
 )";
 
 const char* const kVerifyDelaunayUsage =
-    R"(Usage: hullkit verify-delaunay POINTS TRIANGLES.off
+    R"(Usage: hullkit verify-delaunay POINTS TRIANGLES
 
-Checks, with exact arithmetic, that TRIANGLES.off is a Delaunay triangulation of
-the 2D points in POINTS ('-' reads them from standard input; the input formats of
-'hullkit delaunay'): every triangle clockwise with y up and not degenerate, each
-edge shared by at most two triangles, the boundary the convex hull, every
+Checks, with exact arithmetic, that TRIANGLES is a Delaunay triangulation of
+the 2D points in POINTS ('-' reads them from standard input; the input formats
+of 'hullkit delaunay'): every triangle clockwise with y up and not degenerate,
+each edge shared by at most two triangles, the boundary the convex hull, every
 distinct point used, 2n - h - 2 triangles, and no point inside the circumcircle
 across any interior edge.
 
-The OFF vertices are matched to the input points with exactly the same x and y
-(and z = 0), as 'hullkit delaunay' writes them; duplicates stand for the lowest
-index.
+TRIANGLES: a mesh file in any format the other commands read (OFF, OBJ, PLY,
+STL, glTF), as 'hullkit delaunay' writes it (OFF). Its vertices are matched to
+the input points with exactly the same x and y (and z = 0); duplicates stand for
+the lowest index.
 
 Prints 'ok: ...' or each problem on its own line.
+
+Options:
+  -h, --help          show this help
+
 Exit status: 0 the triangulation is Delaunay, 1 it is not, 2 a usage or input
-problem.
+problem (one line on standard error).
 )";
 
 enum class Format { Off, Json, Svg };
@@ -153,7 +161,7 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     app.add_flag("--voronoi", args->voronoi);
     app.add_flag("--stats", args->stats);
     // Bounded as in `hullkit route`; the triangulation uses at most two threads anyway.
-    app.add_option("--threads", args->options.threads)->multi_option_policy(last)->check(CLI::Range(0u, 1024u));
+    add_whole_number_option(app, "--threads", &args->options.threads, 0, 1024);
     app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay");
     if (help) {
@@ -466,16 +474,15 @@ int verify_delaunay_main(const std::vector<std::string>& argv) {
         return kExitOk;
     }
     if (files.size() != 2) {
-        throw UsageError("verify-delaunay needs two files, POINTS and TRIANGLES.off, got " +
+        throw UsageError("verify-delaunay needs two files, POINTS and TRIANGLES, got " +
                          std::to_string(files.size()) + " (try 'hullkit verify-delaunay --help')");
     }
-    if (files[1] == "-") throw UsageError("TRIANGLES.off must be a file ('-' is allowed for POINTS only)");
+    if (files[1] == "-") throw UsageError("TRIANGLES must be a file ('-' is allowed for POINTS only)");
     std::string text;
     const hullkit::Points2Result points = load_points_2d(files[0], &text);
-    const hullkit::MeshResult mesh = hullkit::read_off_mesh(read_input(files[1]), files[1]);
-    if (!mesh.ok()) throw UsageError(mesh.error);
+    const hullkit::MeshResult mesh = read_mesh_file(files[1]);
 
-    // Tie each OFF vertex to the input point with the same coordinates (in the plane z = 0).
+    // Tie each mesh vertex to the input point with the same coordinates (in the plane z = 0).
     std::vector<double> xyz(3 * points.count());
     for (std::size_t i = 0; i < points.count(); ++i) {
         xyz[3 * i] = points.xy[2 * i];
@@ -487,7 +494,7 @@ int verify_delaunay_main(const std::vector<std::string>& argv) {
     for (std::size_t k = 0; k < found.size(); ++k) {
         if (found[k] >= 0) continue;
         const double* v = &mesh.xyz[3 * k];
-        unmatched.push_back(files[1] + ": OFF vertex " + std::to_string(k) + " (" + hullkit::format_double(v[0]) + " " +
+        unmatched.push_back(files[1] + ": vertex " + std::to_string(k) + " (" + hullkit::format_double(v[0]) + " " +
                             hullkit::format_double(v[1]) + " " + hullkit::format_double(v[2]) +
                             ") is not one of the input points (with z = 0)");
     }

@@ -11,7 +11,7 @@ namespace hullkit_cli {
 /// (0 success, 2 a usage or input problem with one line "hullkit: ..." on stderr).
 int run_delaunay(const std::vector<std::string>& args);
 
-/// Runs `hullkit verify-delaunay POINTS TRIANGLES.off`: 0 the triangulation is Delaunay, 1 it is
+/// Runs `hullkit verify-delaunay POINTS TRIANGLES`: 0 the triangulation is Delaunay, 1 it is
 /// not (each problem on its own line), 2 a usage or input problem.
 int run_verify_delaunay(const std::vector<std::string>& args);
 

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cstdint>
 #include <chrono>
 #include <cstdio>
@@ -39,17 +38,22 @@ constexpr hullkit::Algorithm kAlgorithms[] = {hullkit::Algorithm::Quickhull,
                                               hullkit::Algorithm::Giftwrap};
 
 const char* const kHullUsage =
-    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format off|obj|json|xyz|glb|normals] [--algorithm NAME]
-                    [--merge-coplanar] [--epsilon exact|seed] [--threads N]
-                    [--memory MB] [--vertices-only] [--stats] [--quiet]
+    R"(Usage: hullkit hull [INPUT...|-] [-o FILE] [--format FORMAT] [--normals]
+                    [--vertices-only] [--algorithm NAME] [--merge-coplanar]
+                    [--epsilon exact|seed] [--threads N] [--memory MB] [--stats]
+                    [--quiet]
 
 Computes the convex hull of the 3D points in INPUT (standard input if INPUT is
 missing or '-') and writes its vertices and triangles (counter-clockwise seen
 from outside). Several INPUTs are read in order as one cloud (indices run on
-from one file to the next).
+from one file to the next). Points that are all coplanar, collinear or identical
+give a polygon, a segment or a point (OFF/OBJ: the polygon's triangles; JSON:
+"dimension"); no points give the empty hull (dimension -1).
 
 Input formats, detected automatically ('#' starts a comment in all of them):
-  x y z           one point per line, separated by whitespace or a comma
+  x y z           one point per line, separated by whitespace or a comma; a
+                  byte-order mark and a header row of column names ("x,y,z")
+                  are skipped
   qhull / rbox    the dimension (3), the point count, then one point per line
   OBJ             'v x y z' lines are the points; other records are ignored
                   (records that are not OBJ's are skipped with a warning)
@@ -59,48 +63,52 @@ Input formats, detected automatically ('#' starts a comment in all of them):
   glTF            .gltf (buffers embedded or in files next to it) or .glb: the
                   vertices of the default scene's triangle meshes, node
                   transforms applied
+  TetGen .node    a file named .node: 'points 3 attributes markers', then
+                  'index x y z [attributes] [marker]' lines
 
 Options:
   -o, --output FILE   write the hull to FILE instead of standard output
-  --format FORMAT     off (default), obj, json, xyz, glb (binary glTF: the
-                      coordinates rounded to float32) or normals; without
-                      --format, an output FILE ending in .obj, .json, .xyz or
-                      .glb selects it. json: "points" (the hull's vertices),
-                      "triangles" and "faces" indexing "points", "vertices"
-                      (the input index of each point), "equations" (each
-                      triangle's nx ny nz offset), volume, area, dimension
+  --format FORMAT     off (default), obj, json, xyz, glb or normals; without
+                      --format, an output FILE ending in .off, .obj, .json,
+                      .xyz, .glb or .normals selects it.
+                      json: "points" (the hull's vertices), "triangles" (and
+                        with --merge-coplanar "faces") indexing "points",
+                        "vertices" (the input index of each point),
+                        "equations" (each triangle's plane, as --normals),
+                        "volume", "area", "dimension";
+                      glb: binary glTF, the coordinates rounded to float32
   --normals           the same as --format normals: each face's plane as
                       qconvex's 'n' prints them: "4", the face count, then
-                      "nx ny nz offset" lines (outward unit normal; inside,
-                      n.x + offset <= 0)
+                      "nx ny nz offset" a face (the outward unit normal;
+                      inside, n.x + offset <= 0)
   --vertices-only     the same as --format xyz: the hull's vertices alone, one
-                      'x y z # INDEX' line each (INDEX: the point's input index),
-                      which hullkit hull reads back as points: hull each part
-                      of a cloud, then hull the parts' outputs together
+                      'x y z # INDEX' line each (INDEX: the point's input
+                      index), which hullkit hull reads back as points: hull
+                      each part of a cloud, then the parts' outputs together
   --algorithm NAME    hull algorithm: {algorithms}
   --merge-coplanar    write each planar face as one convex polygon (a cube: 6
                       quads) instead of triangles; JSON gets a "faces" list
   --epsilon MODE      exact (default): every decision by exact predicates;
                       seed: the seed document's epsilon (giftwrap only), for
                       comparison, it may reject near-degenerate input
-  --threads N         threads for parsing and quickhull: 0 (default) every
-                      hardware thread, 1 the calling thread only; the output
-                      is the same for every N
-  --memory MB         memory for the points (default {memory}): a cloud that
-                      fits is hulled whole; a larger one is streamed in pieces,
-                      keeping only the hull's vertices between them (quickhull),
-                      with the same output
+  --threads N         threads for parsing and quickhull, a whole number from 0
+                      to 1024: 0 (default) every hardware thread, 1 the calling
+                      thread only; the output is the same for every N
+  --memory MB         memory for the points, a whole number from 1 to
+                      1073741824 (default {memory}):
+                      a cloud that fits is hulled whole; a larger one is
+                      streamed in pieces, keeping only the hull's vertices
+                      between them, with the same output
   --stats             print one JSON line of statistics to standard error:
                       points, vertices, faces, volume, area, algorithm,
                       seconds (the hull computation alone), streamed, threads
   --quiet             no progress line (it is drawn on standard error only
                       when that is a terminal and the run takes over a second)
                       and no warnings about skipped input records
-Points that are all coplanar, collinear or identical give a polygon, a segment
-or a point (OFF/OBJ: the polygon's triangles; JSON: "dimension").
   -h, --help          show this help
 
-Exit status: 0 on success, 2 on a usage or input problem (one line on stderr).
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error).
 )";
 
 // ---- arguments of `hullkit hull` ----
@@ -128,17 +136,6 @@ std::uint64_t default_memory_mb() {
         mb = std::min<std::uint64_t>(mb, static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 4 >> 20);
     }
     return std::max<std::uint64_t>(mb, 64);
-}
-
-/// A whole number option value in [0, limit], or a usage error naming the option.
-std::uint64_t parse_whole(const std::string& value, const std::string& option, std::uint64_t limit) {
-    std::uint64_t number = 0;
-    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
-    if (value.empty() || error != std::errc() || end != value.data() + value.size() || number > limit) {
-        throw CliError("option " + option + " needs a whole number from 0 to " + std::to_string(limit) + ", got \"" +
-                       value + "\"");
-    }
-    return number;
 }
 
 /// "quickhull, giftwrap"; with `mark_default`, the library's default is marked "(default)".
@@ -208,10 +205,9 @@ HullArgs parse_hull_args(std::vector<std::string> argv) {
             args.format = hullkit::OutputFormat::Normals;
             args.format_given = true;
         } else if (is_option(arg, "--threads")) {
-            args.threads = static_cast<unsigned>(parse_whole(cursor.value_of(arg, "--threads"), "--threads", 1024));
+            args.threads = static_cast<unsigned>(hullkit_cli::parse_whole_number(cursor.value_of(arg, "--threads"), "--threads", 0, 1024));
         } else if (is_option(arg, "--memory")) {
-            args.memory_mb = parse_whole(cursor.value_of(arg, "--memory"), "--memory", std::uint64_t{1} << 30);
-            if (args.memory_mb == 0) throw CliError("option --memory needs at least 1 (MB)");
+            args.memory_mb = hullkit_cli::parse_whole_number(cursor.value_of(arg, "--memory"), "--memory", 1, std::uint64_t{1} << 30);
         } else if (arg == "--quiet") {
             args.quiet = true;
         } else if (is_option(arg, "--algorithm")) {

@@ -30,9 +30,9 @@ const char* const kMainUsage =
 
 Commands:
   hull             compute the convex hull of a 3D point set
-  verify           check exactly that an OFF file is the convex hull of a point set
+  verify           check exactly that a mesh file is the convex hull of a point set
   delaunay         Delaunay triangulation of 2D points (by lifting to a paraboloid)
-  verify-delaunay  check exactly that an OFF file is a Delaunay triangulation
+  verify-delaunay  check exactly that a mesh file is a Delaunay triangulation
   delaunay3        Delaunay tetrahedralization of 3D points (by lifting to 4D)
   verify-delaunay3 check exactly that tetrahedra are a Delaunay tetrahedralization
   route            check a traverse's route (straight or turning legs) against obstacles

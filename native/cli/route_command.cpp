@@ -24,56 +24,77 @@ namespace {
 constexpr int kExitClear = 0;
 constexpr int kExitNotClear = 1;  // bad input exits 2 through the shared error path (cli_io)
 
-const char* const kRouteDescription =
-    "Checks a traverse moved along a route of straight translations, or of legs that turn while they\n"
-    "move, against obstacles, one check per leg (swept convex hulls, exact predicates): no contact\n"
-    "is missed and none is invented. Writes the report as JSON: per leg \"clear\" (with its\n"
-    "clearance), \"hit\" (the first contact as a fraction of the leg, the obstacle, triangle and\n"
-    "part) or \"start-overlap\".\n"
-    "Scene: {\"traverse\": {\"parts\": [...], \"pivot\": [x,y,z]}, \"route\": [WAYPOINT, ...],\n"
-    "\"obstacles\": [...], \"margin\": m}; a WAYPOINT is [x,y,z] or {\"position\": [x,y,z],\n"
-    "\"rotation\": {\"quaternion\": [w,x,y,z]} or {\"axis\": [x,y,z], \"degrees\": a}}; a part or\n"
-    "obstacle is {\"box\": {\"min\", \"max\"}}, {\"vertices\", \"triangles\"} or {\"mesh\": FILE}\n"
-    "(OBJ, OFF, PLY, STL, glTF; relative to the scene file). See README.md.\n"
-    "Exit status: 0 every leg clear, 1 some leg not clear, 2 a usage or input problem.";
+const char* const kRouteUsage =
+    R"(Usage: hullkit route SCENE [-o FILE] [--samples N] [--no-clearance]
+                     [--threads N] [--quiet]
+
+Checks a traverse moved along a route of straight translations, or of legs that
+turn while they move, against obstacles, one check per leg (swept convex hulls,
+exact predicates): no contact is missed and none is invented. Writes the report
+as JSON: per leg "clear" (with its clearance), "hit" (the first contact as a
+fraction of the leg, the obstacle, triangle and part) or "start-overlap".
+
+Scene (JSON; '-' reads it from standard input):
+  {"traverse": {"parts": [...], "pivot": [x,y,z]}, "route": [WAYPOINT, ...],
+   "obstacles": [...], "margin": m}
+  a WAYPOINT is [x,y,z] or {"position": [x,y,z], "rotation": ROTATION}, a
+  ROTATION {"quaternion": [w,x,y,z]}, {"axis": [x,y,z], "degrees": a} or
+  {"yaw_pitch_roll_degrees": [yaw, pitch, roll]}; a part or obstacle is
+  {"box": {"min", "max"}}, {"vertices", "triangles"} or {"mesh": FILE} (OBJ,
+  OFF, PLY, STL, glTF; relative to the scene file). See docs/route-checking.md.
+
+Options:
+  -o, --output FILE   write the report to FILE instead of standard output
+  --samples N         also report per leg what checking N+1 evenly spaced poses
+                      would find ("sampled"), for comparison; a whole number
+                      from 0 to 1000000 (default 0: none)
+  --no-clearance      do not compute the clearance of clear legs (faster)
+  --threads N         check legs on N threads, a whole number from 0 to 1024:
+                      0 (default) every hardware thread, 1 this thread only;
+                      the report is the same for every N
+  --quiet             no progress line (otherwise shown on a terminal's
+                      standard error when the check takes more than about a
+                      second) and no warnings about skipped mesh records
+  -h, --help          show this help
+
+Exit status: 0 every leg clear, 1 some leg not clear, 2 a usage or input problem
+(one line on standard error).
+)";
 
 }  // namespace
 
 int run_route(const std::vector<std::string>& args) {
-    CLI::App app(kRouteDescription, "hullkit route");
-    std::string scene_path;
+    std::vector<std::string> scenes;
     std::string output;
-    std::uint32_t samples = 0;
+    unsigned samples = 0;
     unsigned threads = 0;
     bool no_clearance = false;
     bool quiet = false;
-    app.add_option("SCENE", scene_path, "the scene (JSON); '-' reads standard input")->required()->type_name("");
-    app.add_option("--samples", samples,
-                   "also report per leg what checking N+1 evenly spaced poses would find (\"sampled\"), "
-                   "for comparison")
-        ->type_name("N")
-        ->check(CLI::Range(0u, 1000000u));
-    app.add_flag("--no-clearance", no_clearance, "do not compute the clearance of clear legs (faster)");
-    app.add_option("--threads", threads,
-                   "check legs on N threads: 0 (default) every hardware thread, 1 this thread only; "
-                   "the report is the same for every N")
-        ->type_name("N")
-        ->check(CLI::Range(0u, 1024u));  // bounded: a mistyped huge N would start a thread per block
-    app.add_flag("--quiet", quiet,
-                 "no progress line (otherwise shown on a terminal's standard error when the check "
-                 "takes more than about a second)");
-    app.add_option("-o,--output", output, "write the report to FILE instead of standard output")->type_name("FILE");
-
-    // CLI11 wants argv order reversed for its vector overload.
-    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    bool help = false;
     try {
-        app.parse(reversed);
-    } catch (const CLI::CallForHelp&) {
-        std::fputs(app.help().c_str(), stdout);
-        return kExitClear;
-    } catch (const CLI::ParseError& error) {
-        return print_usage_error(std::string("route: ") + error.what() + " (try 'hullkit route --help')");
+        CLI::App app("hullkit route", "hullkit route");
+        app.set_help_flag();  // the help text above, in the layout of every command
+        app.add_flag("-h,--help", help);
+        app.add_option("SCENE", scenes);
+        add_whole_number_option(app, "--samples", &samples, 0, 1000000);
+        app.add_flag("--no-clearance", no_clearance);
+        // Bounded: a mistyped huge N would start a thread per block.
+        add_whole_number_option(app, "--threads", &threads, 0, 1024);
+        app.add_flag("--quiet", quiet);
+        app.add_option("-o,--output", output)->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+        parse_or_throw(app, args, "route");
+        if (help) {
+            std::fputs(kRouteUsage, stdout);
+            return kExitClear;
+        }
+        if (scenes.size() != 1) {
+            throw UsageError("route needs one SCENE file, got " + std::to_string(scenes.size()) + " (try 'hullkit route --help')");
+        }
+        if (app.count("--output") && output.empty()) throw UsageError("option --output needs a file name");
+    } catch (const UsageError& error) {
+        return print_usage_error(error.what());
     }
+    const std::string& scene_path = scenes[0];
 
     hullkit::SceneResult scene = hullkit::read_scene_file(scene_path);
     if (!scene.ok()) return print_usage_error(scene.error);

@@ -1,5 +1,5 @@
-// `hullkit verify POINTS HULL.off`: reads a point set and a hull written as OFF, matches the OFF's
-// vertices to input points by exact coordinates, and runs hullkit::verify.
+// `hullkit verify POINTS HULL`: reads a point set and a hull file (any mesh format), matches the
+// hull's vertices to input points by exact coordinates, and runs hullkit::verify.
 #include "verify_command.hpp"
 
 #include <algorithm>
@@ -11,53 +11,41 @@
 #include <string>
 #include <vector>
 
+#include "cli_io.hpp"
 #include "hullkit/hull.hpp"
 #include "hullkit/mesh_io.hpp"
+#include "hullkit/mesh_read.hpp"
 #include "hullkit/verify.hpp"
 
 namespace hullkit_cli {
 namespace {
 
-constexpr int kExitOk = 0;
 constexpr int kExitNotAHull = 1;
-constexpr int kExitUsage = 2;
 
 const char* const kVerifyUsage =
-    R"(Usage: hullkit verify POINTS HULL.off
+    R"(Usage: hullkit verify [options] POINTS HULL
 
-Checks, with exact arithmetic, that HULL.off is the convex hull of the 3D points
-in POINTS ('-' reads them from standard input; any input format of 'hullkit
-hull'): its triangles close up into a convex surface facing outwards, every point
-lies inside or on it, only extreme points are its vertices (the lowest index of
-identical points), and no triangle has zero area.
+Checks, with exact arithmetic, that HULL is the convex hull of the 3D points in
+POINTS: its triangles close up into a convex surface facing outwards, every
+point lies inside or on it, only extreme points are its vertices (the lowest
+index of identical points), and no triangle has zero area.
 
-The OFF file's vertices are matched to the input points with exactly the same
-coordinates, as 'hullkit hull' writes them. A hull of lower dimension is
-recognised by its shape: 1 vertex (a point), 2 vertices (a segment), or a
-polygon fanned from its first vertex.
+POINTS: any input of 'hullkit hull' ('-': standard input). HULL: a mesh file in
+any format the other commands read (OFF, OBJ, PLY, STL, glTF; the format from
+the content, then the name), as 'hullkit hull' writes it. Its vertices are
+matched to the input points with exactly the same coordinates, so the float32
+positions of STL and GLB match only points whose coordinates are floats. A hull
+of lower dimension is recognised by its shape: no vertex (no points), 1 vertex
+(a point), 2 vertices (a segment), or a polygon fanned from its first vertex.
 
 Prints 'ok: N points, F triangles, V vertices', or each problem on its own line.
-Exit status: 0 the hull is correct, 1 it is not, 2 a usage or input problem.
+
+Options:
+  -h, --help          show this help
+
+Exit status: 0 the hull is correct, 1 it is not, 2 a usage or input problem
+(one line on standard error).
 )";
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-std::string read_input(const std::string& path) {
-    std::string text;
-    if (path == "-") {
-        char buffer[1 << 16];
-        std::size_t n;
-        while ((n = std::fread(buffer, 1, sizeof buffer, stdin)) > 0) text.append(buffer, n);
-        if (std::ferror(stdin)) throw UsageError(std::string("<stdin>: cannot read: ") + std::strerror(errno));
-        return text;
-    }
-    std::string error;
-    if (!hullkit::read_file(path, &text, &error)) throw UsageError(error);
-    return text;
-}
-
 
 std::string coordinates(const double* p) {
     return hullkit::format_double(p[0]) + " " + hullkit::format_double(p[1]) + " " + hullkit::format_double(p[2]);
@@ -75,12 +63,11 @@ bool is_polygon_fan(const std::vector<std::uint32_t>& triangles, std::size_t m) 
 
 int verify_files(const std::string& points_path, const std::string& hull_path) {
     const std::string points_name = points_path == "-" ? "<stdin>" : points_path;
-    hullkit::PointsResult points = hullkit::parse_points(read_input(points_path), points_name);
+    hullkit::PointsResult points = hullkit::read_points(read_input(points_path), points_name);
     if (!points.ok()) throw UsageError(points.error);
-    hullkit::MeshResult mesh = hullkit::read_off_mesh(read_input(hull_path), hull_path);
-    if (!mesh.ok()) throw UsageError(mesh.error);
+    const hullkit::MeshResult mesh = read_mesh_file(hull_path);
 
-    // Each OFF vertex is the input point with the same coordinates (the lowest index of equals).
+    // Each hull vertex is the input point with the same coordinates (the lowest index of equals).
     const std::size_t m = mesh.point_count();
     const std::vector<std::int64_t> found =
         hullkit::match_points(hullkit::PointSpan(points.xyz), hullkit::PointSpan(mesh.xyz.data(), m));
@@ -89,7 +76,7 @@ int verify_files(const std::string& points_path, const std::string& hull_path) {
     for (std::size_t k = 0; k < m; ++k) {
         input_index[k] = static_cast<std::uint32_t>(found[k]);
         if (found[k] < 0) {
-            unmatched.push_back(hull_path + ": OFF vertex " + std::to_string(k) + " (" + coordinates(&mesh.xyz[3 * k]) +
+            unmatched.push_back(hull_path + ": vertex " + std::to_string(k) + " (" + coordinates(&mesh.xyz[3 * k]) +
                                 ") is not one of the input points");
         }
     }
@@ -109,12 +96,12 @@ int verify_files(const std::string& points_path, const std::string& hull_path) {
     hullkit::VerifyReport report;
     std::vector<std::string> extra;
     if (m >= 3 && !is_polygon_fan(mesh.triangles, m)) {
-        // A solid: the triangles say everything; an OFF vertex no triangle uses is a problem.
+        // A solid: the triangles say everything; a hull vertex no triangle uses is a problem.
         report = hullkit::verify(span, triangles.data(), triangles.size() / 3);
         std::vector<char> used(m, 0);
         for (std::uint32_t k : mesh.triangles) used[k] = 1;
         for (std::size_t k = 0; k < m; ++k) {
-            if (!used[k]) extra.push_back("OFF vertex " + std::to_string(k) + " (point " + std::to_string(input_index[k]) +
+            if (!used[k]) extra.push_back("vertex " + std::to_string(k) + " (point " + std::to_string(input_index[k]) +
                                           ") is not a corner of any triangle");
         }
     } else {
@@ -158,20 +145,15 @@ int run_verify(const std::vector<std::string>& args) {
             }
         }
         if (files.size() != 2) {
-            throw UsageError("verify needs two files, POINTS and HULL.off, got " + std::to_string(files.size()) +
+            throw UsageError("verify needs two files, POINTS and HULL, got " + std::to_string(files.size()) +
                              " (try 'hullkit verify --help')");
         }
-        if (files[1] == "-") throw UsageError("HULL.off must be a file ('-' is allowed for POINTS only)");
+        if (files[1] == "-") throw UsageError("HULL must be a file ('-' is allowed for POINTS only)");
         const int status = verify_files(files[0], files[1]);
         if (std::fflush(stdout) != 0) throw UsageError(std::string("<stdout>: cannot write: ") + std::strerror(errno));
         return status;
     } catch (const UsageError& error) {
-        std::string line = error.what();
-        for (char& c : line) {
-            if (c == '\n' || c == '\r') c = ' ';
-        }
-        std::fprintf(stderr, "hullkit: %s\n", line.c_str());
-        return kExitUsage;
+        return print_usage_error(error.what());
     }
 }
 

@@ -1,4 +1,4 @@
-// `hullkit verify POINTS HULL.off`: checks a hull file against its point set (hullkit/verify.hpp).
+// `hullkit verify POINTS HULL`: checks a hull file (any mesh format) against its point set (hullkit/verify.hpp).
 #pragma once
 
 #include <string>

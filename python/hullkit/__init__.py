@@ -405,7 +405,7 @@ class RouteChecker:
         ``hullkit route``'s JSON format: clear, min_clearance, legs (each with status "clear",
         "hit" or "start-overlap" and its details), build_seconds, seconds. ``rotations``: the
         traverse's orientation at each waypoint, shape (k, 4), unit quaternions w x y z (legs
-        between different orientations turn; see the README's route section)."""
+        between different orientations turn; see docs/route-checking.md)."""
         waypoints = _np.zeros((0, 3)) if route is None else as_points(route, 3, "route")
         if route is not None and len(waypoints) < 2:
             raise HullkitError(f"a route needs at least 2 waypoints, got {len(waypoints)}")

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <regex>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -235,6 +236,98 @@ TEST_CASE("cli: --help, hull --help and --version") {
     RunResult version = run_cli(dir, {"--version"});
     CHECK(version.exit_code == 0);
     CHECK(version.out == "hullkit 0.1.0\n");
+}
+
+TEST_CASE("cli: every command's --help has one layout: usage first, options with their defaults, ranges in one wording") {
+    TempDir dir("hullkit-cli");
+    // The commands the main help lists.
+    const std::string main_help = run_cli(dir, {"--help"}).out;
+    const std::size_t list = main_help.find("Commands:\n");
+    REQUIRE(list != std::string::npos);
+    std::vector<std::string> commands;
+    {
+        std::istringstream lines(main_help.substr(list + 10, main_help.find("\n\n", list) - list - 10));
+        for (std::string line; std::getline(lines, line);) {
+            std::istringstream words(line);
+            std::string name;
+            if (words >> name) commands.push_back(name);
+        }
+    }
+    CHECK(commands.size() >= 5);
+    const std::regex option_line(R"(^  (-\w, )?(--[a-z0-9-]+)( [A-Z]+)?)");
+    const std::regex range(R"(a whole number\s+from\s+(\d+)\s+to\s+(\d+))");
+    for (const std::string& command : commands) {
+        const RunResult help = run_cli(dir, {command, "--help"});
+        INFO(command << " --help:\n" << help.out);
+        CHECK(help.exit_code == 0);
+        CHECK(help.err.empty());
+        CHECK(help.out.rfind("Usage: hullkit " + command + " ", 0) == 0);
+        CHECK(run_cli(dir, {command, "-h"}).out == help.out);
+        CHECK(help.out.find("Exit status: ") != std::string::npos);
+        // One block of options, --help last; then the exit status.
+        const std::size_t options = help.out.find("\nOptions:\n");
+        REQUIRE(options != std::string::npos);
+        const std::size_t block_end = help.out.find("\n\n", options + 1);
+        REQUIRE(block_end != std::string::npos);
+        const std::string block = help.out.substr(options + 9, block_end - options - 9);  // from its first line's '\n'
+        CHECK_THAT(block, Catch::EndsWith("\n  -h, --help          show this help"));
+        CHECK(help.out.find("\nExit status: ", block_end) != std::string::npos);
+        // Each option with a value says its default (the output's: standard output); a number's
+        // range is worded as its error message words it, and that message is the one given.
+        std::vector<std::string> entries;
+        std::istringstream lines(block);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.empty()) continue;
+            if (line.rfind("  -", 0) == 0 || entries.empty()) {
+                entries.push_back(line);
+            } else {
+                entries.back() += " " + line;
+            }
+        }
+        for (const std::string& entry : entries) {
+            std::smatch option;
+            REQUIRE(std::regex_search(entry, option, option_line));
+            const std::string name = option[2], value = option[3];
+            if (value.empty()) continue;
+            INFO(entry);
+            CHECK((entry.find("default") != std::string::npos || entry.find("instead of standard output") != std::string::npos));
+            if (value != " N" && value != " MB") continue;
+            std::smatch bounds;
+            REQUIRE(std::regex_search(entry, bounds, range));
+            CHECK(single_error_line(run_cli(dir, {command, name, "abc"})) ==
+                  "hullkit: option " + name + " needs a whole number from " + bounds[1].str() + " to " + bounds[2].str() +
+                      ", got \"abc\"");
+        }
+        // "whole number" only ever in those words.
+        std::size_t whole = 0, worded = 0;
+        for (std::size_t at = help.out.find("whole number"); at != std::string::npos; at = help.out.find("whole number", at + 1)) ++whole;
+        const std::regex worded_range(R"(a whole number\s+from\s+\d+\s+to\s+\d+)");
+        for (auto it = std::sregex_iterator(help.out.begin(), help.out.end(), worded_range); it != std::sregex_iterator(); ++it) {
+            ++worded;
+        }
+        CHECK(whole == worded);
+    }
+}
+
+TEST_CASE("cli: a bad option value names the option, in every command (route --samples abc)") {
+    TempDir dir("hullkit-cli");
+    CHECK(single_error_line(run_cli(dir, {"route", "scene.json", "--samples", "abc"})) ==
+          "hullkit: option --samples needs a whole number from 0 to 1000000, got \"abc\"");
+    CHECK(single_error_line(run_cli(dir, {"route", "scene.json", "--samples=-3"})) ==
+          "hullkit: option --samples needs a whole number from 0 to 1000000, got \"-3\"");
+    CHECK(single_error_line(run_cli(dir, {"route", "--threads", "1025", "scene.json"})) ==
+          "hullkit: option --threads needs a whole number from 0 to 1024, got \"1025\"");
+    CHECK(single_error_line(run_cli(dir, {"delaunay", "--threads", "two"})) ==
+          "hullkit: option --threads needs a whole number from 0 to 1024, got \"two\"");
+    CHECK(single_error_line(run_cli(dir, {"hull", "--threads", "two"})) ==
+          "hullkit: option --threads needs a whole number from 0 to 1024, got \"two\"");
+    CHECK(single_error_line(run_cli(dir, {"hull", "--memory", "0"})) ==
+          "hullkit: option --memory needs a whole number from 1 to 1073741824, got \"0\"");
+    CHECK(single_error_line(run_cli(dir, {"route", "scene.json", "--samples"})) ==
+          "hullkit: option --samples needs a value (try 'hullkit route --help')");
+    CHECK(single_error_line(run_cli(dir, {"route"})) == "hullkit: route needs one SCENE file, got 0 (try 'hullkit route --help')");
+    CHECK(single_error_line(run_cli(dir, {"route", "a.json", "--bogus"})) ==
+          "hullkit: unknown option \"--bogus\" (try 'hullkit route --help')");
 }
 
 TEST_CASE("cli: malformed file exits 2 with one line naming file and line") {

@@ -582,6 +582,27 @@ TEST_CASE("verify-delaunay cli: tells the Delaunay diagonal of a quadrilateral f
     CHECK(delaunay_count == 1);
 }
 
+TEST_CASE("verify-delaunay cli: the triangulation in any mesh format (OBJ here), as hullkit verify reads hulls") {
+    TempDir dir("hullkit-delaunay-cli");
+    const Points xy = uniform_points(50, 9);
+    write_text(dir.file("points.txt"), xy_lines(xy));
+    const hullkit::MeshResult off = hullkit::read_off_mesh(run_cli(dir, {"delaunay", dir.file("points.txt")}).out, "t.off");
+    REQUIRE(off.ok());
+    std::string obj;
+    for (std::size_t k = 0; k < off.point_count(); ++k) {
+        obj += "v " + hullkit::format_double(off.xyz[3 * k]) + " " + hullkit::format_double(off.xyz[3 * k + 1]) + " 0\n";
+    }
+    for (std::size_t t = 0; t < off.triangle_count(); ++t) {
+        obj += "f " + std::to_string(off.triangles[3 * t] + 1) + " " + std::to_string(off.triangles[3 * t + 1] + 1) + " " +
+               std::to_string(off.triangles[3 * t + 2] + 1) + "\n";
+    }
+    write_text(dir.file("t.obj"), obj);
+    const RunResult run = run_cli(dir, {"verify-delaunay", dir.file("points.txt"), dir.file("t.obj")});
+    INFO(run.out << run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.rfind("ok: 50 points", 0) == 0);
+}
+
 TEST_CASE("verify-delaunay cli: problems are lines on stdout with exit status 1") {
     TempDir dir("hullkit-delaunay-cli");
     const Points xy = uniform_points(20, 2);
@@ -595,7 +616,7 @@ TEST_CASE("verify-delaunay cli: problems are lines on stdout with exit status 1"
     write_text(dir.file("moved.off"), moved);
     RunResult run = run_cli(dir, {"verify-delaunay", dir.file("points.txt"), dir.file("moved.off")});
     CHECK(run.exit_code == 1);
-    CHECK(run.out.find("OFF vertex 0 (12345 ") != std::string::npos);
+    CHECK(run.out.find(": vertex 0 (12345 ") != std::string::npos);
     CHECK(run.out.find("is not one of the input points") != std::string::npos);
 
     // A triangle dropped: a point no longer used, the hull no longer covered.
@@ -632,9 +653,9 @@ TEST_CASE("verify-delaunay cli: usage and input errors exit 2") {
     const std::string points = dir.file("points.txt");
     CHECK(run_cli(dir, {"verify-delaunay", points, dir.file("ok.off")}).exit_code == 0);
     require_usage_error(run_cli(dir, {"verify-delaunay", points}), "needs two files");
-    require_usage_error(run_cli(dir, {"verify-delaunay", points, dir.file("ok.off"), points}), "needs two files, POINTS and TRIANGLES.off, got 3");
+    require_usage_error(run_cli(dir, {"verify-delaunay", points, dir.file("ok.off"), points}), "needs two files, POINTS and TRIANGLES, got 3");
     require_usage_error(run_cli(dir, {"verify-delaunay", "--strict", points, dir.file("ok.off")}), "unknown option \"--strict\"");
-    require_usage_error(run_cli(dir, {"verify-delaunay", points, "-"}), "TRIANGLES.off must be a file");
+    require_usage_error(run_cli(dir, {"verify-delaunay", points, "-"}), "TRIANGLES must be a file");
     require_usage_error(run_cli(dir, {"verify-delaunay", points, dir.file("missing.off")}), "missing.off: cannot open");
     require_usage_error(run_cli(dir, {"verify-delaunay", points, dir.file("bad.off")}), "bad.off:");
     require_usage_error(run_cli(dir, {"verify-delaunay", points, points}), "points.txt:");

@@ -519,6 +519,84 @@ TEST_CASE("verify: cli accepts the hulls that hullkit hull writes") {
     }
 }
 
+TEST_CASE("verify: cli reads the hull in every mesh format the other commands read") {
+    TempDir dir("hullkit-verify");
+    // Whole-number coordinates: exact in float32 too, so STL and GLB positions match the points.
+    const std::string points = dir.file("points.txt");
+    write_text(points, points_text(cube_corners()) + "0.5 0.5 0.5\n0 0.25 0.75\n");
+    for (const char* name : {"hull.off", "hull.obj", "hull.glb"}) {
+        REQUIRE(run_cli(dir, {"hull", points, "-o", dir.file(name)}).exit_code == 0);
+        RunResult check = run_cli(dir, {"verify", points, dir.file(name)});
+        INFO(name << ": " << check.out << check.err);
+        CHECK(check.exit_code == 0);
+        CHECK(check.out == "ok: 10 points, 12 triangles, 8 vertices\n");
+    }
+    // PLY and STL (ASCII), written here from the OFF: STL repeats corners, which are merged.
+    const hullkit::MeshResult mesh = hullkit::read_off_mesh(read_text(dir.file("hull.off")), "hull.off");
+    REQUIRE(mesh.ok());
+    std::string ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(mesh.point_count()) +
+                      "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+                      std::to_string(mesh.triangle_count()) + "\nproperty list uchar int vertex_indices\nend_header\n";
+    std::string stl = "solid hull\n";
+    for (std::size_t k = 0; k < mesh.point_count(); ++k) {
+        ply += points_text({mesh.xyz.begin() + 3 * k, mesh.xyz.begin() + 3 * k + 3});
+    }
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+        ply += "3";
+        stl += "facet normal 0 0 0\nouter loop\n";
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t v = mesh.triangles[3 * t + c];
+            ply += " " + std::to_string(v);
+            stl += "vertex " + points_text({mesh.xyz.begin() + 3 * v, mesh.xyz.begin() + 3 * v + 3});
+        }
+        ply += "\n";
+        stl += "endloop\nendfacet\n";
+    }
+    write_text(dir.file("hull.ply"), ply);
+    write_text(dir.file("hull.stl"), stl + "endsolid hull\n");
+    write_text(dir.file("hull-by-content"), stl + "endsolid hull\n");  // no extension: the content says STL
+    for (const char* name : {"hull.ply", "hull.stl", "hull-by-content"}) {
+        RunResult check = run_cli(dir, {"verify", points, dir.file(name)});
+        INFO(name << ": " << check.out << check.err);
+        CHECK(check.exit_code == 0);
+        CHECK(check.out == "ok: 10 points, 12 triangles, 8 vertices\n");
+    }
+    // The points in any format hullkit hull reads (a PLY cloud here).
+    RunResult from_ply = run_cli(dir, {"verify", dir.file("hull.ply"), dir.file("hull.obj")});
+    CHECK(from_ply.exit_code == 0);
+    CHECK(from_ply.out == "ok: 8 points, 12 triangles, 8 vertices\n");
+
+    // Lower dimensions and no points, as OBJ: a polygon, a segment, a point, nothing.
+    const std::vector<std::pair<std::string, std::string>> flat = {
+        {"0 0 1\n4 0 1\n4 3 1\n0 3 1\n2 1 1\n", "ok: 5 points, 2 triangles, 4 vertices\n"},
+        {"0 0 0\n1 1 1\n3 3 3\n", "ok: 3 points, 0 triangles, 2 vertices\n"},
+        {"7 7 7\n", "ok: 1 points, 0 triangles, 1 vertices\n"},
+        {"", "ok: 0 points, 0 triangles, 0 vertices\n"},
+    };
+    for (const auto& [cloud, expected] : flat) {
+        write_text(points, cloud);
+        for (const char* name : {"flat.obj", "flat.off"}) {
+            REQUIRE(run_cli(dir, {"hull", points, "-o", dir.file(name)}).exit_code == 0);
+            RunResult check = run_cli(dir, {"verify", points, dir.file(name)});
+            INFO(name << ": " << read_text(dir.file(name)) << check.out << check.err);
+            CHECK(check.exit_code == 0);
+            CHECK(check.out == expected);
+        }
+    }
+    // float32 positions (STL, GLB) match only points that are floats: said, not hidden.
+    write_text(points, "0 0 0\n1 0 0\n0 1 0\n0 0 0.1\n");
+    REQUIRE(run_cli(dir, {"hull", points, "-o", dir.file("tenth.glb")}).exit_code == 0);
+    RunResult rounded = run_cli(dir, {"verify", points, dir.file("tenth.glb")});
+    CHECK(rounded.exit_code == 1);
+    CHECK(rounded.out.find(dir.file("tenth.glb") + ": vertex 3 (0 0 0.10000000149011612) is not one of the input points") !=
+          std::string::npos);
+    // Not a mesh: the reader says what it is not.
+    write_text(dir.file("notes.txt"), "hello\n");
+    RunResult notes = run_cli(dir, {"verify", points, dir.file("notes.txt")});
+    CHECK(notes.exit_code == 2);
+    CHECK(notes.err == "hullkit: " + dir.file("notes.txt") + ": not a mesh file this reader knows (OBJ, OFF, PLY, STL or glTF)\n");
+}
+
 TEST_CASE("verify: cli reports a broken hull with exit status 1") {
     TempDir dir("hullkit-verify");
     const std::string points = dir.file("points.txt"), off = dir.file("hull.off");
@@ -574,7 +652,7 @@ TEST_CASE("verify: cli usage and input errors exit 2 with one line") {
 
     run = run_cli(dir, {"verify", points});
     CHECK(run.exit_code == 2);
-    CHECK(run.err == "hullkit: verify needs two files, POINTS and HULL.off, got 1 (try 'hullkit verify --help')\n");
+    CHECK(run.err == "hullkit: verify needs two files, POINTS and HULL, got 1 (try 'hullkit verify --help')\n");
     run = run_cli(dir, {"verify", "--fast", points, off});
     CHECK(run.exit_code == 2);
     CHECK(run.err == "hullkit: unknown option \"--fast\" (try 'hullkit verify --help')\n");
@@ -584,7 +662,7 @@ TEST_CASE("verify: cli usage and input errors exit 2 with one line") {
 
     run = run_cli(dir, {"verify", "--help"});
     CHECK(run.exit_code == 0);
-    CHECK(run.out.rfind("Usage: hullkit verify POINTS HULL.off", 0) == 0);
+    CHECK(run.out.rfind("Usage: hullkit verify [options] POINTS HULL", 0) == 0);
     run = run_cli(dir, {"--help"});
     CHECK(run.out.find("\n  verify      ") != std::string::npos);
 }

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -661,4 +662,25 @@ TEST_CASE("point_reader: broken PLY files give read_points' message", "[threads]
                  "a.ply", false);
     // The PLY reader is never reached in text-only mode.
     check_agrees(ply_file("ascii", kPlyTypes[6], 5, false, false, 15), "a.ply", true);
+}
+
+TEST_CASE("point_reader: TetGen .node files (by name), with attributes and markers", "[threads]") {
+    const PointLines lines = plain_lines(300, 17);
+    // The same points as "index x y z [attributes] [marker]" lines under a .node header.
+    std::string node = "# a TetGen node file\n300 3 2 1\n", bare = "300 3\n";
+    std::istringstream in(lines.text);
+    std::size_t index = 1;
+    for (std::string line; std::getline(in, line); ++index) {
+        node += std::to_string(index) + " " + line + " 0.5 7 1\n";
+        bare += std::to_string(index - 1) + "  " + line + "\n";
+    }
+    REQUIRE(hullkit::parse_points(node, "mesh.node", 1).xyz == lines.xyz);
+    REQUIRE(hullkit::parse_points(bare, "mesh.node", 1).xyz == lines.xyz);
+    check_agrees(node, "mesh.node", true, nullptr, {Via::File, Via::Stream}, {1000});
+    check_agrees(bare, "mesh.node", true);
+    // A line with the wrong number of fields, a 2D node file, fewer points than declared.
+    const PointsResult wrong = hullkit::parse_points("2 3 0 1\n1 0 0 0 1\n2 1 1 1\n", "m.node", 1);
+    REQUIRE(wrong.error == "m.node:3: expected 5 numbers (index, x, y, z, attributes, marker) as the header says, got 4");
+    REQUIRE(hullkit::parse_points("4 2\n1 0 0\n", "m.node", 1).error == "m.node:1: .node file of dimension 2 (only 3D nodes are read)");
+    REQUIRE_FALSE(hullkit::parse_points("3 3\n1 0 0 0\n", "m.node", 1).ok());
 }

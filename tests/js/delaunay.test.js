@@ -384,3 +384,24 @@ test('voronoi: bad bounds throw', () => {
   assert.throws(() => hullkit.voronoi(xy, t, [0, 0, NaN, 1]), /bounds xmax must be a finite number/);
   assert.throws(() => hullkit.voronoi(xy, t), TypeError);
 });
+
+test('delaunay: arrays of points as Delaunator.from takes them ([x, y]) and {x, y} objects (three.js Vector2)', () => {
+  const xy = uniform(500, 31);
+  const expected = hullkit.delaunay(xy);
+  const pairs = Array.from({ length: xy.length / 2 }, (_, i) => [xy[2 * i], xy[2 * i + 1]]);
+  // The same points delaunator users hand to Delaunator.from, with the same triangles back.
+  const theirs = Delaunator.from(pairs);
+  assert.equal(theirs.triangles.length, expected.triangles.length);
+  for (const points of [pairs, pairs.map(([x, y]) => ({ x, y })), pairs.map(([x, y]) => ({ x, y, z: 7, isVector3: true }))]) {
+    const result = hullkit.delaunay(points);
+    assert.deepEqual(result.triangles, expected.triangles);
+    assert.deepEqual(result.halfedges, expected.halfedges);
+    assert.deepEqual(result.hull, expected.hull);
+    assert.equal(hullkit.find(points, result, 0.1, 0.2), hullkit.find(xy, expected, 0.1, 0.2));
+    assert.deepEqual(hullkit.voronoi(points, result, [-1, -1, 1, 1]), hullkit.voronoi(xy, expected, [-1, -1, 1, 1]));
+  }
+  assert.throws(() => hullkit.delaunay([[0, 0], [1, 0], [0, 1, 2]]), (error) => error instanceof HullkitError &&
+    error.pointIndex === 2 && error.message === 'delaunay: points[2] has 3 coordinates, expected 2');
+  assert.throws(() => hullkit.delaunay([{ x: 0, y: 0 }, { x: 1 }]), { message: /^delaunay: points\[1\] has no numeric y \(y is missing\); pass a flat Float64Array \(or array of numbers\) x0 y0 x1 y1 \.\.\., or an array of points \[x, y\] or \{x, y\}$/ });
+  assert.throws(() => hullkit.delaunay([0, 0, 1]), { message: /3 coordinates is not a whole number of 2D points \(x0 y0 x1 y1 \.\.\.\); or pass an array of points \[x, y\] or \{x, y\}/ });
+});

@@ -261,3 +261,49 @@ test('verify: accepts hullkit results and pinpoints broken hulls', () => {
   assert.throws(() => hullkit.verify(xyz, { triangles: [0, 1, -2] }), { message: /entry 2 \(-2\) is not a valid index/ });
   assert.throws(() => hullkit.verify(xyz, null), TypeError);
 });
+
+test('hull: arrays of points ([x, y, z], {x, y, z}, three.js Vector3-like) as quickhull3d and three.js users pass them', () => {
+  const flat = randomBall(300, 17);
+  const expected = hullkit.hull(flat);
+  const nested = Array.from({ length: flat.length / 3 }, (_, i) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]]);
+  // A class like three.js's Vector3: x, y, z own properties, methods on the prototype.
+  class Vector3 {
+    constructor(x, y, z) { this.x = x; this.y = y; this.z = z; this.isVector3 = true; }
+    length() { return Math.hypot(this.x, this.y, this.z); }
+  }
+  const inputs = {
+    arrays: nested,
+    typed: nested.map((p) => Float64Array.from(p)),
+    objects: nested.map(([x, y, z]) => ({ x, y, z })),
+    vectors: nested.map(([x, y, z]) => new Vector3(x, y, z)),
+    mixed: nested.map((p, i) => (i % 2 ? p : { x: p[0], y: p[1], z: p[2] })),
+  };
+  for (const [name, points] of Object.entries(inputs)) {
+    const result = hullkit.hull(points);
+    assert.deepEqual(result.triangles, expected.triangles, name);
+    assert.deepEqual(result.vertices, expected.vertices, name);
+    assert.deepEqual(result.equations, expected.equations, name);
+    assert.equal(hullkit.verify(points, result).ok, true, name);
+  }
+  assert.equal(hullkit.hull([]).dimension, -1);
+  assert.equal(hullkit.giftwrapTrace(nested.slice(0, 50)).dimension, 3);
+  assert.ok(hullkit.writeGlb(inputs.vectors, expected) instanceof Uint8Array);
+});
+
+test('hull: what is not points gets a message saying what to pass', () => {
+  const points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0]];
+  assert.throws(() => hullkit.hull(points), (error) => error instanceof HullkitError && error.pointIndex === 3 &&
+    error.message === 'hull: points[3] has 2 coordinates, expected 3');
+  assert.throws(() => hullkit.hull([[0, 0, 0], [1, 0, 0, 5]]), { message: 'hull: points[1] has 4 coordinates, expected 3' });
+  assert.throws(() => hullkit.hull([{ x: 0, y: 0, z: 0 }, { x: 1, y: 2 }]),
+    { message: /^hull: points\[1\] has no numeric z \(z is missing\); pass a flat Float64Array .* or an array of points \[x, y, z\] or \{x, y, z\}$/ });
+  assert.throws(() => hullkit.hull([[0, 0, 0], ['1', 0, 0]]), { message: /^hull: points\[1\]\[0\] is the string "1", not a number;/ });
+  assert.throws(() => hullkit.hull([[0, 0, 0], null]), { message: /^hull: points\[1\] is null, not a point;/ });
+  assert.throws(() => hullkit.hull([0, 0, 0, [1, 0, 0]]), { message: /^hull: entry 3 of the flat coordinate array is an array of 3, not a number;/ });
+  assert.throws(() => hullkit.hull([0, 0, '0']), { message: /entry 2 of the flat coordinate array is the string "0", not a number/ });
+  assert.throws(() => hullkit.hull([0, 0, 0, 1]), { message: /4 coordinates is not a whole number of 3D points \(x0 y0 z0 x1 y1 z1 \.\.\.\); or pass an array of points/ });
+  assert.throws(() => hullkit.hull('0 0 0'), TypeError);
+  assert.throws(() => hullkit.hull(42), TypeError);
+  // Non-finite numbers reach the core, which names the point, in any layout.
+  assert.throws(() => hullkit.hull([[0, 0, 0], [1, NaN, 0]]), (error) => error.pointIndex === 1 && /non-finite y/.test(error.message));
+});

@@ -268,15 +268,15 @@ TEST_CASE("cli route: output file, standard input, help", "[cli_route]") {
 
 TEST_CASE("cli route: usage problems give exit 2 and one line", "[cli_route]") {
     TempDir dir("hullkit-route");
-    CHECK(one_error_line(hullkit_test::run_cli(dir, {"route"})) == "hullkit: route: SCENE is required (try 'hullkit route --help')");
+    CHECK(one_error_line(hullkit_test::run_cli(dir, {"route"})) == "hullkit: route needs one SCENE file, got 0 (try 'hullkit route --help')");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--bogus"})) ==
-          "hullkit: route: The following argument was not expected: --bogus (try 'hullkit route --help')");
+          "hullkit: unknown option \"--bogus\" (try 'hullkit route --help')");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--samples", "-3"})) ==
-          "hullkit: route: --samples: Value -3 not in range 0 to 1000000 (try 'hullkit route --help')");
+          "hullkit: option --samples needs a whole number from 0 to 1000000, got \"-3\"");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--threads", "-1"})) ==
-          "hullkit: route: --threads: Value -1 not in range 0 to 1024 (try 'hullkit route --help')");
+          "hullkit: option --threads needs a whole number from 0 to 1024, got \"-1\"");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", "a.json", "--threads", "x"})) ==
-          "hullkit: route: --threads: Value x not in range 0 to 1024 (try 'hullkit route --help')");
+          "hullkit: option --threads needs a whole number from 0 to 1024, got \"x\"");
     CHECK(one_error_line(hullkit_test::run_cli(dir, {"route", dir.file("none.json")})) ==
           "hullkit: " + dir.file("none.json") + ": cannot open: No such file or directory");
     hullkit_test::write_text(dir.file("scene.json"), cube_scene("[[0,0,0],[0,5,0]]"));

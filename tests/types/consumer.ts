@@ -30,6 +30,13 @@ check(Math.abs(volume - 1 / 6) < 1e-12 && area > 0, 'hull volume and area');
 const equations: Float64Array = result.equations;
 check(equations.length === 16 && Math.abs(Math.hypot(equations[0] ?? 0, equations[1] ?? 0, equations[2] ?? 0) - 1) < 1e-15, 'equations: unit normals');
 check(hullkit.hull(xyz, { equations: false }).equations.length === 0, 'equations: false leaves them out');
+// Arrays of points, as quickhull3d, three.js and delaunator take them.
+const nested: number[][] = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]];
+check(hullkit.hull(nested).volume === 1 / 6, 'hull of [x, y, z] arrays');
+const vectors = [{ x: 0, y: 0, z: 0 }, { x: 1, y: 0, z: 0 }, { x: 0, y: 1, z: 0 }, { x: 0, y: 0, z: 1 }];
+check(hullkit.hull(vectors, { algorithm: 'giftwrap' }).triangles.length === 12, 'hull of {x, y, z} objects');
+check(hullkit.delaunay([[0, 0], [1, 0], [0, 1]]).triangles.length === 3, 'delaunay of [x, y] arrays');
+check(hullkit.delaunay([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }]).hull.length === 3, 'delaunay of {x, y} objects');
 const merged = hullkit.hull([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], { algorithm: 'giftwrap', mergeCoplanar: true });
 if (merged.dimension === 2 && merged.normal !== undefined) {
   const normal: Float64Array = merged.normal;

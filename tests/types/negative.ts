@@ -12,6 +12,8 @@ declare const scene: RouteScene;
 hullkit.hull('0 0 0 1 1 1'); // error
 hullkit.hull(xyz, { algorithm: 'qhull' }); // error
 hullkit.hull(xyz, { mergeCoplanar: 'yes' }); // error
+hullkit.hull([{ x: 0, y: 0 }]); // error
+hullkit.delaunay([{ x: 0 }]); // error
 const wrongType: Float64Array = hullkit.hull(xyz).triangles; // error
 hullkit.readMesh('cube.obj'); // error
 hullkit.delaunay(xyz, { algorithm: 'quickhull' }); // error

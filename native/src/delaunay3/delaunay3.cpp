@@ -296,26 +296,38 @@ void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
     std::uint32_t* corner = mesh.corner.data();
     std::uint32_t* link = mesh.links();
     const std::uint32_t* original = points.original.data();
+    points.xyz = std::vector<double>();  // the coordinates are not needed any more: room for the rest
     constexpr std::uint32_t kNone = 0xffffffffu;  // -1 as a neighbour
-    std::vector<std::uint32_t> position(slots);
+    // Each slot's new position, as a bit per slot (kept or not) and the count of kept slots before
+    // each block of 64: 0.56 bytes a slot instead of 4, and small enough to stay in the caches for
+    // the random lookups of the neighbours' positions.
+    const std::size_t blocks = (slots + 63) / 64;
+    std::vector<std::uint64_t> kept(blocks, 0);
+    std::vector<std::uint32_t> before(blocks + 1, 0);
     std::vector<std::array<std::uint32_t, 3>> hull;
-    std::uint32_t finite = 0;
     for (std::size_t t = 0; t < slots; ++t) {
         const std::uint32_t* c = corner + 4 * t;
-        position[t] = c[3] >= delaunay3_detail::kFree ? kNone : finite++;
+        if (c[3] < delaunay3_detail::kFree) kept[t >> 6] |= std::uint64_t{1} << (t & 63);
         if (c[3] == kGhost) {
             std::array<std::uint32_t, 3> f = {original[c[0]], original[c[1]], original[c[2]]};
             std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
             hull.push_back(f);
         }
     }
+    for (std::size_t b = 0; b < blocks; ++b) before[b + 1] = before[b] + static_cast<std::uint32_t>(__builtin_popcountll(kept[b]));
+    const std::uint32_t finite = before[blocks];
+    auto position = [&](std::uint32_t t) -> std::uint32_t {
+        const std::uint64_t word = kept[t >> 6], bit = std::uint64_t{1} << (t & 63);
+        if (!(word & bit)) return kNone;
+        return before[t >> 6] + static_cast<std::uint32_t>(__builtin_popcountll(word & (bit - 1)));
+    };
     std::sort(hull.begin(), hull.end());
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
-    // Rows move down only (position[t] <= t), so rewriting in slot order reads each row before any
+    // Rows move down only (position(t) <= t), so rewriting in slot order reads each row before any
     // row is written over it.
     for (std::size_t t = 0; t < slots; ++t) {
-        const std::uint32_t q = position[t];
+        const std::uint32_t q = position(static_cast<std::uint32_t>(t));
         if (q == kNone) continue;
         const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
                                        original[corner[4 * t + 2]], original[corner[4 * t + 3]]};
@@ -324,7 +336,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
         for (int j = 0; j < 4; ++j) {
             const std::uint32_t k = (r >> (2 * j)) & 3u;
             c[j] = orig[k];
-            n[j] = position[link[4 * t + k] >> 2];  // kNone (-1) across the hull
+            n[j] = position(link[4 * t + k] >> 2);  // kNone (-1) across the hull
         }
         std::copy(c, c + 4, corner + 4 * std::size_t{q});
         std::copy(n, n + 4, link + 4 * std::size_t{q});

@@ -87,6 +87,8 @@ public:
     int coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t e) const;
 
     const double* p(std::uint32_t i) const { return xyz_ + 3 * static_cast<std::size_t>(i); }
+    /// orient3d's semi-static bound for these points (detail::orient3d_static_bound).
+    double orient_bound() const { return orient_bound_; }
 
 private:
     const double* xyz_;

@@ -37,13 +37,16 @@ namespace delaunay3_detail {
 namespace {
 
 
+/// The three corners of a tetrahedron other than k, in increasing order.
+constexpr int kOtherThree[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+
 /// The two corners of a tetrahedron other than i and j (i != j).
 constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
                                              {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
                                              {{1, 3}, {0, 3}, {0, 0}, {0, 1}},
                                              {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
 
-/// Points in a round below this many are inserted serially; a partition gets at least this many.
+/// A pass over fewer than 2 x this many points is left to the serial insertion.
 constexpr std::size_t kPartitionPoints = 16384;
 constexpr std::size_t kMaxPartitions = 8;
 constexpr int kMaxPasses = 3;
@@ -116,17 +119,38 @@ public:
             t = adjacent[4 * t + 3] >> 2;  // the finite side of its hull face
             if (restricted_ && !owns(t)) return kDefer;
         }
+        const Predicates& predicates = shared_.predicates;
+        const double* q = predicates.p(p);
+        const double bound = predicates.orient_bound();
         std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
             const std::uint32_t* c = corner + 4 * t;
+            // The corners relative to p, once: the orientation with corner k replaced by p is then
+            // the determinant of the other three, signed (k = 0: +[1 2 3], 1: -[0 2 3], 2: +[0 1 3],
+            // 3: -[0 1 2]), with orient3d's static bound (the same roundings as its filter).
+            double d[4][3];
+            for (int i = 0; i < 4; ++i) {
+                const double* v = predicates.p(c[i]);
+                d[i][0] = v[0] - q[0], d[i][1] = v[1] - q[1], d[i][2] = v[2] - q[2];
+            }
             const std::uint32_t first = next_random() & 3u;
             std::uint32_t exit = 4;
             for (std::uint32_t i = 0; i < 4; ++i) {
                 const std::uint32_t k = (first + i) & 3u;
                 if (k == entered) continue;
-                std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
-                w[k] = p;
-                if (shared_.predicates.orient(w[0], w[1], w[2], w[3]) < 0) {
+                const double* a = d[kOtherThree[k][0]];
+                const double* b = d[kOtherThree[k][1]];
+                const double* e = d[kOtherThree[k][2]];
+                double det = a[0] * (b[1] * e[2] - b[2] * e[1]) + a[1] * (b[2] * e[0] - b[0] * e[2]) +
+                             a[2] * (b[0] * e[1] - b[1] * e[0]);
+                if (k & 1u) det = -det;
+                bool beyond = det < -bound;
+                if (!beyond && !(det > bound)) {
+                    std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
+                    w[k] = p;
+                    beyond = orient3d(predicates.p(w[0]), predicates.p(w[1]), predicates.p(w[2]), predicates.p(w[3])) < 0;
+                }
+                if (beyond) {
                     exit = k;
                     break;
                 }
@@ -221,14 +245,12 @@ private:
             slots_.push_back(free_->back());
             free_->pop_back();
         }
-        for (std::size_t i = 0; i < fresh; ++i) {
-            if (restricted_) {
-                slots_.push_back(block_next_++);
-            } else {
-                const std::size_t slot = shared_.mesh.size();
-                grow(slot + 1);
-                slots_.push_back(static_cast<std::uint32_t>(slot));
-            }
+        if (restricted_) {
+            for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(block_next_++);
+        } else if (fresh > 0) {
+            const std::size_t first = shared_.mesh.size();
+            grow(first + fresh);
+            for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(static_cast<std::uint32_t>(first + i));
         }
         for (std::size_t i = count; i < cavity_.size(); ++i) {  // a cavity with more cells than faces
             shared_.mesh.corner[4 * cavity_[i] + 3] = kFree;
@@ -384,24 +406,22 @@ public:
     }
 
     void insert_round(std::vector<std::uint32_t> pending) {
-        // The partitions' ranges of corners: cut at equal counts of the round's points, and the same
-        // shifted so that each cut falls in the middle of a range (the odd passes).
-        std::vector<std::uint32_t> cut, shifted;
+        // The partitions' ranges of corners: the round's points cut into equal counts, the cuts moved
+        // by a fraction of a range each pass (0, 1/2, 1/4), so that the points deferred near one
+        // pass's cuts lie inside a range in the next.
+        const std::vector<std::uint32_t> all = pending;
+        constexpr double kShift[kMaxPasses] = {0.0, 0.5, 0.25};
         for (int pass = 0; pass < kMaxPasses && pending.size() >= 2 * kPartitionPoints; ++pass) {
-            if (pass == 0) {
-                const std::size_t parts = std::min(kMaxPartitions, pending.size() / kPartitionPoints);
-                cut.assign(1, 0);
-                for (std::size_t i = 1; i < parts; ++i) cut.push_back(pending[i * pending.size() / parts]);
-                cut.push_back(kGhost);
-                shifted.assign(1, 0);
-                for (std::size_t i = 0; i + 1 < cut.size(); ++i) {
-                    const std::uint32_t hi =
-                        i + 2 == cut.size() ? static_cast<std::uint32_t>(shared_.points.size()) : cut[i + 1];
-                    shifted.push_back(cut[i] + (hi - cut[i]) / 2);
-                }
-                shifted.push_back(kGhost);
+            // Larger partitions defer fewer points (their boundary layer is a smaller share):
+            // 2 ranges below 2^17 points, 4 below 2^20, then 8. Never the thread count.
+            const std::size_t parts = all.size() < (std::size_t{1} << 17) ? 2 : all.size() < (std::size_t{1} << 20) ? 4 : 8;
+            std::vector<std::uint32_t> bounds(1, 0);
+            for (std::size_t i = 0; i < parts; ++i) {
+                const std::size_t at = static_cast<std::size_t>((static_cast<double>(i) + kShift[pass]) *
+                                                                static_cast<double>(all.size()) / static_cast<double>(parts));
+                if (at > 0 && all[at] > bounds.back()) bounds.push_back(all[at]);
             }
-            const std::vector<std::uint32_t>& bounds = pass % 2 == 0 ? cut : shifted;
+            bounds.push_back(kGhost);
             pending = pass_over(pending, bounds);
         }
         serial_.own_all(last_, &free_);
@@ -426,17 +446,20 @@ private:
                 lists[i].push_back(p);
             }
         }
-        // Starting tetrahedra (serially): the one holding one of a partition's first points, if the
-        // partition owns it.
+        // Starting tetrahedra (serially): the one holding a point of the partition's list that it
+        // owns, trying positions 0, 1, 3, 7, 15, ... (the list's first points lie at the range's
+        // boundary, where tetrahedra often have corners in the next range). The points before the
+        // one found wait for the next pass.
         std::vector<std::uint32_t> start(parts, kNoStart);
+        std::vector<std::size_t> first(parts, 0);
         serial_.own_all(last_, &free_);
         for (std::size_t i = 0; i < parts; ++i) {
             workers_[i].own_range(bounds[i], bounds[i + 1], 0, nullptr, 0, 0);
-            for (std::size_t k = 0; k < lists[i].size() && k < 8; ++k) {
+            for (std::size_t k = 0; k < lists[i].size() && start[i] == kNoStart; k = 2 * k + 1) {
                 const std::uint32_t t = serial_.walk(lists[i][k]);
                 if (shared_.mesh.corner[4 * t + 3] != kGhost && workers_[i].owns(t)) {
                     start[i] = t;
-                    break;
+                    first[i] = k;
                 }
             }
         }
@@ -467,8 +490,10 @@ private:
             }
             Worker& w = workers_[i];
             w.own_range(bounds[i], bounds[i + 1], start[i], &free[i], block_begin[i], block_end[i]);
-            for (const std::uint32_t p : lists[i])
-                if (!w.insert(p)) deferred[i].push_back(p);
+            const std::vector<std::uint32_t>& list = lists[i];
+            deferred[i].assign(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(first[i]));
+            for (std::size_t k = first[i]; k < list.size(); ++k)
+                if (!w.insert(list[k])) deferred[i].push_back(list[k]);
             lasts[i] = w.last();
         });
         // Unused slots back to the shared free list, in partition order.

@@ -194,9 +194,9 @@ private:
 /// How far reading a header got in the input seen so far.
 enum class ReadStatus { Done, NeedMore, Failed };
 
-// ---- point text: xyz, rbox, OBJ, OFF (point_text.cpp) ----
+// ---- point text: xyz, rbox, OBJ, OFF, TetGen .node (point_text.cpp) ----
 
-enum class PointTextFormat { Xyz, Rbox, Obj, Off };
+enum class PointTextFormat { Xyz, Rbox, Obj, Off, Node };
 
 /// What comes before the points of point text.
 struct PointTextHeader {
@@ -208,6 +208,7 @@ struct PointTextHeader {
     std::size_t body_line = 0;    ///< the number of lines before body_offset
     std::size_t column_names_line = 0;  ///< xyz: the line of a header row of column names ("x,y,z"), 0 if none
     std::string column_names;     ///< that line, printable
+    std::size_t node_fields = 4;  ///< .node: fields per point line (index, x, y, z, attributes, marker)
 };
 
 /// The warning for a header row of column names that a point reader skipped:

@@ -1,4 +1,4 @@
-// The point readers: point text (xyz, rbox, OBJ, OFF) told apart by its first line, its header
+// The point readers: point text (xyz, rbox, OBJ, OFF; TetGen .node by name) told apart by its first line, its header
 // read once and its point lines parsed in pieces for PointReader (io::read_point_text_header,
 // io::parse_point_piece), parse_points and read_points_file on top of PointReader, the OFF mesh
 // reader (read_off_mesh) and read_file; see mesh_io.hpp for the formats. Lines, fields and
@@ -52,6 +52,44 @@ bool is_obj_keyword(std::string_view field) {
         if (field == keyword) return true;
     }
     return false;
+}
+
+/// TetGen's .node header: "points dimension attributes markers" (the last two optional, 0 if
+/// absent); only 3D nodes are points here.
+bool read_node_header(Reader& reader, io::PointTextHeader* header) {
+    if (!reader.split(false)) return false;
+    const auto& fields = reader.fields();
+    std::uint64_t values[4] = {0, 3, 0, 0};
+    if (fields.size() > 4) return reader.fail("expected the .node header \"points 3 attributes markers\", got " + quoted(reader.line()));
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (!parse_count(fields[i], kMaxCount, &values[i])) {
+            return reader.fail("expected the .node header \"points 3 attributes markers\", got " + quoted(reader.line()));
+        }
+    }
+    if (values[1] != 3) return reader.fail(".node file of dimension " + std::to_string(values[1]) + " (only 3D nodes are read)");
+    if (values[3] > 1) return reader.fail(".node header: markers must be 0 or 1, got " + std::to_string(values[3]));
+    if (values[2] > 1000) return reader.fail(".node header: " + std::to_string(values[2]) + " attributes per node is too many");
+    header->counted = true;
+    header->declared = values[0];
+    header->count_line = reader.line_number();
+    header->node_fields = static_cast<std::size_t>(4 + values[2] + values[3]);
+    return true;
+}
+
+/// One .node point line: "index x y z [attributes...] [marker]"; the index is any number (TetGen
+/// numbers from 0 or 1), the point is x y z, the rest is checked to be numeric.
+bool read_node_line(Reader& reader, const io::PointTextHeader& header, std::vector<double>* xyz) {
+    if (!reader.split(false)) return false;
+    const std::size_t n = reader.fields().size();
+    if (n != header.node_fields) {
+        return reader.fail("expected " + std::to_string(header.node_fields) + " numbers (index, x, y, z" +
+                           (header.node_fields > 4 ? ", attributes, marker" : "") + ") as the header says, got " +
+                           std::to_string(n));
+    }
+    std::vector<double> extra;
+    if (!reader.append_numbers(0, 1, "node index", &extra)) return false;
+    if (!reader.append_numbers(1, 3, "coordinate", xyz, /*coordinates=*/true)) return false;
+    return reader.append_numbers(4, n - 4, "node value", &extra);
 }
 
 /// qhull's header line: the dimension alone, or followed by a comment such as "rbox 1000 s D3".
@@ -323,10 +361,12 @@ ReadStatus read_point_text_header(std::string_view text, bool whole, const std::
     }
     if (reader.split(false)) {  // cannot fail without commas
         header->format = detect_format(reader.fields());
-        // A file named .obj is OBJ whatever its first line (FCL's meshes start with "648 1292").
+        // A file named .obj is OBJ whatever its first line (FCL's meshes start with "648 1292");
+        // one named .node is TetGen's (its lines "index x y z" would read as four coordinates).
         if (header->format != PointTextFormat::Off && io::extension_of(source) == "obj") {
             header->format = PointTextFormat::Obj;
         }
+        if (io::extension_of(source) == "node") header->format = PointTextFormat::Node;
         switch (header->format) {
             case PointTextFormat::Xyz: {
                 // A header row of column names, as CSV files start ("x,y,z"), is skipped (and
@@ -351,6 +391,9 @@ ReadStatus read_point_text_header(std::string_view text, bool whole, const std::
                 break;
             case PointTextFormat::Rbox:
                 ok = read_rbox_header(reader, header);
+                break;
+            case PointTextFormat::Node:
+                ok = read_node_header(reader, header);
                 break;
             case PointTextFormat::Off: {
                 OffHeader off;
@@ -393,12 +436,16 @@ void parse_point_piece(std::string_view text, const PointTextHeader& header, std
             if (!(ok = read_obj_line(reader, xyz, &piece->skipped))) break;
             continue;
         }
-        if (found == limit) {  // rbox: a point line after the last one declared
+        if (found == limit) {  // rbox, .node: a point line after the last one declared
             ok = reader.fail("more points than the " + std::to_string(header.declared) + " declared on line " +
                              std::to_string(header.count_line));
             break;
         }
-        if (!(ok = reader.append_point_line(/*allow_commas=*/format == PointTextFormat::Xyz, xyz))) break;
+        if (format == PointTextFormat::Node) {
+            if (!(ok = read_node_line(reader, header, xyz))) break;
+        } else if (!(ok = reader.append_point_line(/*allow_commas=*/format == PointTextFormat::Xyz, xyz))) {
+            break;
+        }
         ++found;
     }
     piece->points = (xyz->size() - start) / 3;
