@@ -89,7 +89,7 @@ test('the static site under /demo/: hull, Delaunay, Delaunay 3D and route views'
     });
 
     await t.test('?view=delaunay3 renders, with its Voronoi diagram', async () => {
-      await page.goto(`${mount}?view=delaunay3&dist=ball&n=300&seed=3`);
+      await page.goto(`${mount}web/?view=delaunay3&dist=ball&n=300&seed=3`);
       assert.equal(await settled(page, 'delaunay3'), 'ready', await page.textContent('#d3-error'));
       await page.waitForFunction(() => window.hullkitDelaunay3?.voronoi, null, { timeout: TIMEOUT, polling: 100 });
       const info = await page.evaluate(() => window.hullkitDelaunay3);
