@@ -263,15 +263,21 @@ private:
         // an edge of the boundary indexes a square table directly: each edge is met twice, by the
         // two new tetrahedra that share the face through it and p; the first leaves its face there,
         // the second links the two and empties the entry again.
+        // Both loops are written without branches on the data (a vertex seen before or not, an edge
+        // met the first or the second time): those go either way at random and mispredicted
+        // branches were most of their cost.
         std::uint32_t vertices = 0;
+        numbered_.resize(3 * count + 1);
+        std::size_t numbered = 0;
         for (Boundary& b : boundary_) {
             for (std::uint32_t i = 0; i < 4; ++i) {
                 if (i == b.face) continue;
                 std::uint32_t& id = b.corner[i] == kGhost ? ghost_id_ : shared_.vertex_id[b.corner[i]];
-                if (id == 0) {
-                    id = ++vertices;
-                    numbered_.push_back(b.corner[i]);
-                }
+                const std::uint32_t fresh = id == 0;
+                vertices += fresh;
+                id = fresh ? vertices : id;
+                numbered_[numbered] = b.corner[i];
+                numbered += fresh;
                 b.local[i] = id - 1;
             }
         }
@@ -283,24 +289,25 @@ private:
             std::memcpy(corner + 4 * n, b.corner, sizeof b.corner);
             adjacent[4 * n + b.face] = b.outside;
             adjacent[b.outside] = 4 * n + b.face;
-            // Faces j != face contain p and the boundary edge of the other two corners.
+            // Faces j != face contain p and the boundary edge of the other two corners. The first
+            // face met at an edge waits in the table (its own entry holds kNoFace until then); the
+            // second links the two and empties the entry.
             for (std::uint32_t j = 0; j < 4; ++j) {
                 if (j == b.face) continue;
                 const std::uint32_t e0 = b.local[kOtherTwo[j][b.face][0]], e1 = b.local[kOtherTwo[j][b.face][1]];
                 std::uint32_t& entry = table_[std::min(e0, e1) * table_side_ + std::max(e0, e1)];
-                if (entry == kNoFace) {
-                    entry = 4 * n + j;
-                    ++open;
-                } else {
-                    adjacent[4 * n + j] = entry;
-                    adjacent[entry] = 4 * n + j;
-                    entry = kNoFace;
-                    --open;
-                }
+                const std::uint32_t me = 4 * n + j, waiting = entry;
+                const bool second = waiting != kNoFace;
+                entry = second ? kNoFace : me;
+                adjacent[second ? waiting : me] = me;
+                adjacent[me] = waiting;
+                open = second ? open - 1 : open + 1;
             }
         }
-        for (const std::uint32_t v : numbered_) (v == kGhost ? ghost_id_ : shared_.vertex_id[v]) = 0;
-        numbered_.clear();
+        for (std::size_t k = 0; k < numbered; ++k) {
+            const std::uint32_t v = numbered_[k];
+            (v == kGhost ? ghost_id_ : shared_.vertex_id[v]) = 0;
+        }
         if (open != 0) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
         last_ = slots_[0];
         for (std::size_t i = 0; i < count; ++i)
