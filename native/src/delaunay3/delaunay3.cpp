@@ -10,6 +10,7 @@
 
 #include "delaunay3_internal.hpp"
 #include "hull/large_array.hpp"
+#include "hull/parallel.hpp"
 
 namespace hullkit {
 namespace {
@@ -132,7 +133,7 @@ std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 namespace {
 
 /// The input as (Hilbert key << 32 | index), sorted (stable LSD radix sort on the 30-bit key).
-std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box) {
+std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box, unsigned threads) {
     const std::size_t n = p.count;
     double scale[3];
     for (int axis = 0; axis < 3; ++axis) {
@@ -140,18 +141,21 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box) {
         scale[axis] = width > 0 ? 1023.0 / width : 0.0;
     }
     std::vector<std::uint64_t> keyed(n), swap(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        std::uint32_t cell[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            // A box narrower than 1023 / DBL_MAX makes the scale infinite, one wider than DBL_MAX
-            // the width infinite: NaN and negatives go to 0 (the order only affects speed).
-            double f = (p[i][axis] - box.lo[axis]) * scale[axis];
-            f = f > 0.0 ? std::min(f, 1023.0) : 0.0;
-            cell[axis] = static_cast<std::uint32_t>(f);
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    detail::parallel_for(threads, (n + kBlock - 1) / kBlock, [&](std::size_t block) {
+        for (std::size_t i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i) {
+            std::uint32_t cell[3];
+            for (int axis = 0; axis < 3; ++axis) {
+                // A box narrower than 1023 / DBL_MAX makes the scale infinite, one wider than
+                // DBL_MAX the width infinite: NaN and negatives go to 0 (the order only affects speed).
+                double f = (p[i][axis] - box.lo[axis]) * scale[axis];
+                f = f > 0.0 ? std::min(f, 1023.0) : 0.0;
+                cell[axis] = static_cast<std::uint32_t>(f);
+            }
+            const std::uint32_t key = delaunay3_detail::hilbert3(cell[0], cell[1], cell[2]);
+            keyed[i] = (std::uint64_t{key} << 32) | i;
         }
-        const std::uint32_t key = delaunay3_detail::hilbert3(cell[0], cell[1], cell[2]);
-        keyed[i] = (std::uint64_t{key} << 32) | i;
-    }
+    });
     std::vector<std::uint32_t> count(1025);
     for (int shift = 32; shift < 62; shift += 10) {
         std::fill(count.begin(), count.end(), 0u);
@@ -165,8 +169,8 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box) {
 
 /// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
 /// and stores the distinct points contiguously in that order, scaled by 2^exponent.
-void gather_distinct(PointSpan p, const Extent& box, Delaunay3& out, Points& points) {
-    const std::vector<std::uint64_t> keyed = hilbert_order(p, box);
+void gather_distinct(PointSpan p, const Extent& box, unsigned threads, Delaunay3& out, Points& points) {
+    const std::vector<std::uint64_t> keyed = hilbert_order(p, box, threads);
     const std::size_t n = p.count;
     out.representative.resize(n);
     std::iota(out.representative.begin(), out.representative.end(), 0u);
@@ -298,7 +302,7 @@ inline std::uint32_t ones(std::uint64_t v) {
 /// second copy of the mesh): the finite tetrahedra in slot order (the insertion's order, the same
 /// for every thread count), each row rewritten as original indices in canonical corner order and
 /// its neighbours' new positions; the hull triangles from the ghosts.
-void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
+void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& out) {
     const std::size_t slots = mesh.size();
     std::uint32_t* corner = mesh.corner.data();
     std::uint32_t* link = mesh.links();
@@ -331,22 +335,30 @@ void write_tetrahedra(Mesh& mesh, Points& points, Delaunay3& out) {
     std::sort(hull.begin(), hull.end());
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
-    // Rows move down only (position(t) <= t), so rewriting in slot order reads each row before any
-    // row is written over it.
+    // Each kept row rewritten where it is (on the threads: a row reads only itself and the shared
+    // positions), then the rows moved down into place (position(t) <= t) in one pass.
+    constexpr std::size_t kRows = std::size_t{1} << 16;
+    detail::parallel_for(threads, (slots + kRows - 1) / kRows, [&](std::size_t block) {
+        for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t) {
+            if (position(static_cast<std::uint32_t>(t)) == kNone) continue;
+            const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
+                                           original[corner[4 * t + 2]], original[corner[4 * t + 3]]};
+            const std::uint32_t r = canonical_rotation(orig);
+            std::uint32_t c[4], n[4];
+            for (int j = 0; j < 4; ++j) {
+                const std::uint32_t k = (r >> (2 * j)) & 3u;
+                c[j] = orig[k];
+                n[j] = position(link[4 * t + k] >> 2);  // kNone (-1) across the hull
+            }
+            std::copy(c, c + 4, corner + 4 * t);
+            std::copy(n, n + 4, link + 4 * t);
+        }
+    });
     for (std::size_t t = 0; t < slots; ++t) {
         const std::uint32_t q = position(static_cast<std::uint32_t>(t));
-        if (q == kNone) continue;
-        const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
-                                       original[corner[4 * t + 2]], original[corner[4 * t + 3]]};
-        const std::uint32_t r = canonical_rotation(orig);
-        std::uint32_t c[4], n[4];
-        for (int j = 0; j < 4; ++j) {
-            const std::uint32_t k = (r >> (2 * j)) & 3u;
-            c[j] = orig[k];
-            n[j] = position(link[4 * t + k] >> 2);  // kNone (-1) across the hull
-        }
-        std::copy(c, c + 4, corner + 4 * std::size_t{q});
-        std::copy(n, n + 4, link + 4 * std::size_t{q});
+        if (q == kNone || q == t) continue;
+        std::copy(corner + 4 * t, corner + 4 * t + 4, corner + 4 * std::size_t{q});
+        std::copy(link + 4 * t, link + 4 * t + 4, link + 4 * std::size_t{q});
     }
     mesh.corner.resize(4 * std::size_t{finite});
     mesh.adjacent.resize(4 * std::size_t{finite});
@@ -431,7 +443,7 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
     Delaunay3 out = check_input(input, &extent);
     if (!out.ok()) return out;
     Points points;
-    gather_distinct(input, extent, out, points);
+    gather_distinct(input, extent, options.threads, out, points);
     const std::size_t m = points.size();
     if (m == 0) {
         out.dimension = -1;
@@ -465,7 +477,7 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
         }
         out.dimension = 3;
         Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
-        write_tetrahedra(mesh, points, out);
+        write_tetrahedra(mesh, points, options.threads, out);
     } catch (const std::bad_alloc&) {
         return failure("out of memory tetrahedralizing " + std::to_string(m) + " points");
     } catch (const std::length_error&) {
