@@ -179,12 +179,14 @@ struct PointReader::Impl {
             fail_read();
             return;
         }
-        // A UTF-8 byte-order mark (some editors start text files with one) is not content; it
-        // stays part of line 1.
-        input.consume(io::bom_length(input.available()));
-        const std::string_view head = input.available().substr(0, kHeadBytes);
-        switch (route(head)) {
-            case Mode::Text: start_text(head); break;
+        // The format is judged on the bytes as they are, as read_points judges them (a byte-order
+        // mark before "ply" or a glTF header makes text); a UTF-8 byte-order mark before text
+        // (some editors start text files with one) is not content, and stays part of line 1.
+        switch (route(input.available().substr(0, kHeadBytes))) {
+            case Mode::Text:
+                input.consume(io::bom_length(input.available()));
+                start_text(input.available().substr(0, kHeadBytes));
+                break;
             case Mode::Ply: start_ply(); break;
             case Mode::Whole: start_whole(); break;
             case Mode::Done: break;
