@@ -51,14 +51,12 @@ constexpr std::size_t kPartitionPoints = 16384;
 constexpr std::size_t kMaxPartitions = 8;
 constexpr int kMaxPasses = 3;
 
-/// What the partitions share: the points, the mesh, and a mark per tetrahedron (each partition
-/// marks only tetrahedra it owns).
+/// What the partitions share: the points and the mesh.
 struct Shared {
     explicit Shared(const Points& p) : points(p), predicates(p) {}
     const Points& points;
     Predicates predicates;
     Mesh mesh;
-    std::vector<std::uint8_t> mark;  ///< 0, 1 in the cavity being grown, 2 checked and not
     /// Per point, its number + 1 on the boundary of the cavity being filled (0 otherwise); each
     /// partition numbers only its own points (a cavity's corners are its own).
     std::vector<std::uint32_t> vertex_id;
@@ -68,7 +66,9 @@ struct Shared {
 /// corners, its free slots and its block of fresh slots.
 class Worker {
 public:
-    explicit Worker(Shared& shared) : shared_(shared) { resize_table(32); }
+    explicit Worker(Shared& shared) : shared_(shared) {
+        resize_table(32);
+    }
 
     /// Owns everything and appends fresh slots at the end of the mesh (the serial insertion).
     void own_all(std::uint32_t start, std::vector<std::uint32_t>* free_slots) {
@@ -174,22 +174,29 @@ private:
         return random_;
     }
 
+    // While a cavity grows, the tetrahedra met are marked in the top bits of their first corner
+    // (a point index, below 2^30; the vertex at infinity is always the last corner): kInCavity, or
+    // kChecked when not in conflict. The mark is read with the row the conflict test reads anyway,
+    // and costs no array of its own. Only the worker that owns a tetrahedron marks it, and workers
+    // read only the rows of tetrahedra they own or that no partition owns.
+    static constexpr std::uint32_t kInCavity = 1u << 30, kChecked = 2u << 30, kIndex = kInCavity - 1;
+
     void unmark() {
-        for (const std::uint32_t t : cavity_) shared_.mark[t] = 0;
-        for (const std::uint32_t t : checked_) shared_.mark[t] = 0;
+        std::uint32_t* corner = shared_.mesh.corner.data();
+        for (const std::uint32_t t : cavity_) corner[4 * t] &= kIndex;
+        for (const std::uint32_t t : checked_) corner[4 * t] &= kIndex;
     }
 
-    /// Collects the cavity (marked 1) from t0 and its boundary faces, each with the new
+    /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the new
     /// tetrahedron's corners (p in place of the corner opposite the face) and the neighbour outside.
     /// False (marks undone) when the cavity reaches a tetrahedron this worker does not own.
     bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
-        const std::uint32_t* corner = shared_.mesh.corner.data();
+        std::uint32_t* corner = shared_.mesh.corner.data();
         const std::uint32_t* adjacent = shared_.mesh.links();
-        std::uint8_t* mark = shared_.mark.data();
         cavity_.clear();
         checked_.clear();
         boundary_.clear();
-        mark[t0] = 1;
+        corner[4 * t0] |= kInCavity;
         cavity_.push_back(t0);
         for (std::size_t i = 0; i < cavity_.size(); ++i) {
             const std::uint32_t t = cavity_[i];
@@ -198,8 +205,8 @@ private:
                 const std::uint32_t u = across >> 2;
                 // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
                 // its owner ever marks it: its mark can be read before its ownership is known.
-                const std::uint8_t seen = mark[u];
-                if (seen == 1) continue;
+                const std::uint32_t seen = corner[4 * u] & ~kIndex;
+                if (seen == kInCavity) continue;
                 if (seen == 0) {
                     if (restricted_ && !owns(u)) {
                         // Owned by no partition: never marked (another partition may look at it);
@@ -209,16 +216,17 @@ private:
                             return false;
                         }
                     } else if (shared_.predicates.conflict(corner + 4 * u, p)) {
-                        mark[u] = 1;
+                        corner[4 * u] |= kInCavity;
                         cavity_.push_back(u);
                         continue;
                     } else {
-                        mark[u] = 2;
+                        corner[4 * u] |= kChecked;
                         checked_.push_back(u);
                     }
                 }
                 Boundary b;
                 std::memcpy(b.corner, corner + 4 * t, sizeof b.corner);
+                b.corner[0] &= kIndex;
                 b.corner[k] = p;
                 b.outside = across;
                 b.face = k;
@@ -329,7 +337,6 @@ private:
         }
         mesh.corner.resize(4 * tetrahedra);
         mesh.adjacent.resize(4 * tetrahedra);
-        shared_.mark.resize(tetrahedra, 0);
     }
 
     void resize_table(std::uint32_t side) {
@@ -383,10 +390,8 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     const std::size_t expected = 7 * m + 64;  // ~6.7 per point for uniform points
     detail::reserve_large(mesh.corner, 4 * expected);
     detail::reserve_large(mesh.adjacent, 4 * expected);
-    shared.mark.reserve(expected);
     mesh.corner.resize(20);
     mesh.adjacent.resize(20);
-    shared.mark.assign(5, 0);
     shared.vertex_id.assign(m, 0);
     for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
     // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
@@ -416,21 +421,24 @@ public:
         // The partitions' ranges of corners: the round's points cut into equal counts, the cuts moved
         // by a fraction of a range each pass (0, 1/2, 1/4), so that the points deferred near one
         // pass's cuts lie inside a range in the next.
-        const std::vector<std::uint32_t> all = pending;
+        // Every pass's cuts are taken from the whole round before the first pass (no copy of it kept).
         constexpr double kShift[kMaxPasses] = {0.0, 0.5, 0.25};
-        for (int pass = 0; pass < kMaxPasses && pending.size() >= 2 * kPartitionPoints; ++pass) {
-            // Larger partitions defer fewer points (their boundary layer is a smaller share):
-            // 2 ranges below 2^17 points, 4 below 2^20, then 8. Never the thread count.
-            const std::size_t parts = all.size() < (std::size_t{1} << 17) ? 2 : all.size() < (std::size_t{1} << 20) ? 4 : 8;
-            std::vector<std::uint32_t> bounds(1, 0);
+        const std::size_t all = pending.size();
+        // Larger partitions defer fewer points (their boundary layer is a smaller share): 2 ranges
+        // below 2^17 points, 4 below 2^20, then 8. Never the thread count.
+        const std::size_t parts = all < (std::size_t{1} << 17) ? 2 : all < (std::size_t{1} << 20) ? 4 : 8;
+        std::vector<std::uint32_t> bounds[kMaxPasses];
+        for (int pass = 0; pass < kMaxPasses; ++pass) {
+            bounds[pass].push_back(0);
             for (std::size_t i = 0; i < parts; ++i) {
                 const std::size_t at = static_cast<std::size_t>((static_cast<double>(i) + kShift[pass]) *
-                                                                static_cast<double>(all.size()) / static_cast<double>(parts));
-                if (at > 0 && all[at] > bounds.back()) bounds.push_back(all[at]);
+                                                                static_cast<double>(all) / static_cast<double>(parts));
+                if (at > 0 && pending[at] > bounds[pass].back()) bounds[pass].push_back(pending[at]);
             }
-            bounds.push_back(kGhost);
-            pending = pass_over(pending, bounds);
+            bounds[pass].push_back(kGhost);
         }
+        for (int pass = 0; pass < kMaxPasses && pending.size() >= 2 * kPartitionPoints; ++pass)
+            pending = pass_over(std::move(pending), bounds[pass]);
         serial_.own_all(last_, &free_);
         for (const std::uint32_t p : pending) {
             const bool inserted = serial_.insert(p);
@@ -442,8 +450,7 @@ public:
 private:
     /// One parallel pass over `pending` with the ranges [bounds[i], bounds[i + 1]); returns the
     /// deferred points, in curve order.
-    std::vector<std::uint32_t> pass_over(const std::vector<std::uint32_t>& pending,
-                                         const std::vector<std::uint32_t>& bounds) {
+    std::vector<std::uint32_t> pass_over(std::vector<std::uint32_t> pending, const std::vector<std::uint32_t>& bounds) {
         const std::size_t parts = bounds.size() - 1;
         std::vector<std::vector<std::uint32_t>> lists(parts);
         {
@@ -452,6 +459,7 @@ private:
                 while (p >= bounds[i + 1]) ++i;
                 lists[i].push_back(p);
             }
+            pending = std::vector<std::uint32_t>();  // the lists hold them now
         }
         // Starting tetrahedra (serially): the one holding a point of the partition's list that it
         // owns, trying positions 0, 1, 3, 7, 15, ... (the list's first points lie at the range's
@@ -527,7 +535,6 @@ private:
         mesh.corner.resize(4 * slots);
         mesh.adjacent.resize(4 * slots);
         for (std::size_t t = old; t < slots; ++t) mesh.corner[4 * t + 3] = kFree;
-        shared_.mark.resize(slots, 0);
     }
 
     static constexpr std::uint32_t kNoStart = 0xffffffffu;
@@ -544,6 +551,9 @@ private:
 
 Mesh tetrahedralize(const Points& points, unsigned threads,
                     const std::function<void(std::size_t, std::size_t)>& progress) {
+    // Point indices below 2^30 leave the top bits of a row's first corner to the cavity's marks;
+    // more points would make more than kMaxTetrahedra tetrahedra anyway (at least 3 per point).
+    if (points.size() >= (std::size_t{1} << 30)) throw std::length_error("more than 2^30 points");
     Shared shared(points);
     const std::array<std::size_t, 4> used = start_mesh(shared);
     Rounds rounds(shared, detail::resolve_threads(threads));
