@@ -38,10 +38,11 @@
 //
 // Output: one JSON line on stdout:
 //   {"impl", "input", "n", "threads", "first", "first_minor_faults", "runs", "warm", "tetrahedra",
-//    "flat", "flat_method", "fingerprint", "peak_rss_mb", "input_rss_mb"}
-// peak_rss_mb = getrusage(RUSAGE_SELF).ru_maxrss right after the runs (the whole process, input
-// and CGAL's Point_3 copy included); input_rss_mb the same before the first run. On failure the
-// line has "error" instead.
+//    "flat", "flat_method", "fingerprint", "peak_rss_mb", "peak_rss_all_runs_mb", "input_rss_mb"}
+// peak_rss_mb = getrusage(RUSAGE_SELF).ru_maxrss right after the first run (the first call's peak:
+// the whole process, input and CGAL's Point_3 copy included); peak_rss_all_runs_mb the same after
+// the warm runs too (the allocator's heap may have grown between calls); input_rss_mb the same
+// before the first run. On failure the line has "error" instead.
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CLI/CLI.hpp>
@@ -362,13 +363,17 @@ int main(int argc, char** argv) {
     const double input_rss = peak_rss_mb();
     std::vector<double> runs;
     long first_faults = 0;
+    double first_peak = 0;
     double total = 0;
     try {
         for (int k = 0; k < args.runs && (k == 0 || total < args.budget); ++k) {
             if (k > 0) impl.release();
             const long faults = usage_now().ru_minflt;
             runs.push_back(impl.run());
-            if (k == 0) first_faults = usage_now().ru_minflt - faults;
+            if (k == 0) {
+                first_faults = usage_now().ru_minflt - faults;
+                first_peak = peak_rss_mb();
+            }
             total += runs.back();
         }
     } catch (const std::exception& error) {
@@ -387,8 +392,8 @@ int main(int argc, char** argv) {
     std::string list;
     for (double seconds : runs) list += (list.empty() ? "" : ",") + number(seconds);
     std::printf("{\"impl\":%s,\"input\":%s,\"n\":%zu,\"threads\":%u,\"first\":%s,\"first_minor_faults\":%ld,\"runs\":[%s],"
-                "\"warm\":%s,%s,\"peak_rss_mb\":%.1f,\"input_rss_mb\":%.1f}\n",
+                "\"warm\":%s,%s,\"peak_rss_mb\":%.1f,\"peak_rss_all_runs_mb\":%.1f,\"input_rss_mb\":%.1f}\n",
                 json_string(args.impl).c_str(), json_string(args.name).c_str(), n, args.impl == "cgal" ? 1u : args.threads, number(runs.front()).c_str(),
-                first_faults, list.c_str(), warm.c_str(), examiner.fields(args.examine).c_str(), peak, input_rss);
+                first_faults, list.c_str(), warm.c_str(), examiner.fields(args.examine).c_str(), first_peak, peak, input_rss);
     return 0;
 }

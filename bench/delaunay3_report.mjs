@@ -155,7 +155,7 @@ const header = [
   'Each time: the first call in a fresh process (the headline), in parentheses the median of the later calls in',
   'the same process (warm). Ratios compare headlines. Commands run as a fresh process every time, so their',
   'figure is the median of those runs (wall time from spawn to exit). Peak memory: the maximum resident set',
-  'of the whole process (input included).',
+  'of the whole process (input included); for the library calls, as the first call left it (the first call\'s peak).',
   '',
 ];
 const body = [

@@ -257,6 +257,35 @@ TEST_CASE("delaunay3: duplicates are merged into their lowest index", "[delaunay
     for (const std::uint32_t v : d.tetrahedra) REQUIRE(v < 200);
 }
 
+TEST_CASE("delaunay3: many duplicates across the gathering's blocks of 2^15 points", "[delaunay3]") {
+    // 150 000 points drawn from 12^3 grid points and 500 random ones: runs of equal points far
+    // longer than a block, and a block boundary inside most of them. Each point's representative
+    // must be the lowest index of its copies, whatever the blocks.
+    std::mt19937_64 random(41);
+    std::vector<double> xyz;
+    const std::vector<double> loose = uniform(500, 43);
+    for (int i = 0; i < 150000; ++i) {
+        if (random() % 4 == 0) {
+            const std::size_t k = random() % 500;
+            xyz.insert(xyz.end(), loose.begin() + 3 * k, loose.begin() + 3 * k + 3);
+        } else {
+            xyz.insert(xyz.end(), {double(random() % 12), double(random() % 12), double(random() % 12)});
+        }
+    }
+    const Delaunay3 d = run(xyz);
+    std::map<std::array<double, 3>, std::uint32_t> lowest;
+    for (std::uint32_t i = 0; i < xyz.size() / 3; ++i) lowest.emplace(std::array<double, 3>{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}, i);
+    std::size_t wrong = 0;
+    for (std::uint32_t i = 0; i < xyz.size() / 3; ++i)
+        wrong += d.representative[i] != lowest.at({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+    CHECK(wrong == 0);
+    CHECK(d.duplicate_count == xyz.size() / 3 - lowest.size());
+    std::set<std::uint32_t> used(d.tetrahedra.begin(), d.tetrahedra.end());
+    for (const std::uint32_t v : used) REQUIRE(d.representative[v] == v);
+    CHECK(used.size() == lowest.size());  // every distinct point is a corner (none is inside a flat spot)
+    check_tetrahedralization(xyz, d);
+}
+
 TEST_CASE("delaunay3: clouds at 1e-150 and 1e150 and far from the origin", "[delaunay3]") {
     for (const auto& [scale, offset] : {std::pair{1e-150, 0.0}, std::pair{1e150, 0.0}, std::pair{1.0, 1e9}}) {
         const std::vector<double> xyz = uniform(500, 11, scale, offset);

@@ -168,46 +168,79 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box, unsigne
 }
 
 /// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
-/// and stores the distinct points contiguously in that order, scaled by 2^exponent.
+/// and stores the distinct points contiguously in that order, scaled by 2^exponent. On the
+/// threads in blocks that start at a new key (duplicates share a key, so each block decides its own
+/// alone): first each block sorts its runs of one key and counts its distinct points, then, at
+/// offsets from those counts, writes them; the same arrays for every thread count.
 void gather_distinct(PointSpan p, const Extent& box, unsigned threads, Delaunay3& out, Points& points) {
-    const std::vector<std::uint64_t> keyed = hilbert_order(p, box, threads);
+    std::vector<std::uint64_t> keyed = hilbert_order(p, box, threads);
     const std::size_t n = p.count;
-    out.representative.resize(n);
-    std::iota(out.representative.begin(), out.representative.end(), 0u);
-    points.xyz.resize(3 * n);
-    points.original.clear();
-    points.original.reserve(n);
-    std::vector<std::uint32_t> run;
-    std::size_t distinct = 0;
-    for (std::size_t begin = 0; begin < n;) {
-        std::size_t end = begin + 1;
-        while (end < n && (keyed[end] >> 32) == (keyed[begin] >> 32)) ++end;
-        // Within a run of one key, points sorted by (x, y, z, index) so that duplicates are adjacent
-        // and the lowest index comes first; a run of one point needs nothing.
-        run.clear();
-        for (std::size_t k = begin; k < end; ++k) run.push_back(static_cast<std::uint32_t>(keyed[k]));
-        if (run.size() > 1) {
-            std::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
-                if (p[a][0] != p[b][0]) return p[a][0] < p[b][0];
-                if (p[a][1] != p[b][1]) return p[a][1] < p[b][1];
-                if (p[a][2] != p[b][2]) return p[a][2] < p[b][2];
-                return a < b;
-            });
+    auto index = [&](std::size_t k) { return static_cast<std::uint32_t>(keyed[k]); };
+    auto same_point = [&](std::uint32_t a, std::uint32_t b) {
+        return p[a][0] == p[b][0] && p[a][1] == p[b][1] && p[a][2] == p[b][2];
+    };
+    constexpr std::size_t kBlock = std::size_t{1} << 15;
+    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    std::vector<std::size_t> first(blocks + 1, n);
+    for (std::size_t b = 0; b < blocks; ++b) {
+        std::size_t k = b * kBlock;
+        while (k > 0 && k < n && (keyed[k] >> 32) == (keyed[k - 1] >> 32)) ++k;
+        first[b] = k;
+    }
+    std::vector<std::size_t> distinct_before(blocks + 1, 0);
+    detail::parallel_for(threads, blocks, [&](std::size_t b) {
+        std::size_t distinct = 0;
+        for (std::size_t begin = first[b]; begin < first[b + 1];) {
+            std::size_t end = begin + 1;
+            while (end < n && (keyed[end] >> 32) == (keyed[begin] >> 32)) ++end;
+            // Within a run of one key, points sorted by (x, y, z, index) so that duplicates are
+            // adjacent and the lowest index comes first; a run of one point needs nothing.
+            if (end - begin > 1) {
+                std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin), keyed.begin() + static_cast<std::ptrdiff_t>(end),
+                          [&](std::uint64_t ka, std::uint64_t kb) {
+                              const auto a = static_cast<std::uint32_t>(ka), b2 = static_cast<std::uint32_t>(kb);
+                              if (p[a][0] != p[b2][0]) return p[a][0] < p[b2][0];
+                              if (p[a][1] != p[b2][1]) return p[a][1] < p[b2][1];
+                              if (p[a][2] != p[b2][2]) return p[a][2] < p[b2][2];
+                              return a < b2;
+                          });
+                for (std::size_t k = begin; k < end; ++k) distinct += k == begin || !same_point(index(k), index(k - 1));
+            } else {
+                ++distinct;
+            }
+            begin = end;
         }
-        for (std::size_t r = 0; r < run.size(); ++r) {
-            const std::uint32_t i = run[r];
-            if (r > 0 && p[i][0] == p[run[r - 1]][0] && p[i][1] == p[run[r - 1]][1] && p[i][2] == p[run[r - 1]][2]) {
-                out.representative[i] = points.original.back();
-                ++out.duplicate_count;
+        distinct_before[b + 1] = distinct;
+    });
+    for (std::size_t b = 0; b < blocks; ++b) distinct_before[b + 1] += distinct_before[b];
+    const std::size_t distinct = distinct_before[blocks];
+    out.representative.resize(n);
+    points.xyz.resize(3 * distinct);
+    points.original.resize(distinct);
+    // 2^exponent as a factor when it is a double (the product is then exactly ldexp's, rounding
+    // included); ldexp beyond.
+    const bool factor_ok = box.exponent >= -1022 && box.exponent <= 1023;
+    const double factor = factor_ok ? std::ldexp(1.0, box.exponent) : 1.0;
+    detail::parallel_for(threads, blocks, [&](std::size_t b) {
+        std::size_t d = distinct_before[b];
+        for (std::size_t k = first[b]; k < first[b + 1]; ++k) {
+            constexpr std::size_t kAhead = 8;  // the points are read in curve order: random places
+#if defined(__GNUC__) || defined(__clang__)
+            if (k + kAhead < n) __builtin_prefetch(p[index(k + kAhead)]);
+#endif
+            const std::uint32_t i = index(k);
+            const bool repeat = k > first[b] && (keyed[k] >> 32) == (keyed[k - 1] >> 32) && same_point(i, index(k - 1));
+            if (repeat) {
+                out.representative[i] = points.original[d - 1];
                 continue;
             }
-            for (int axis = 0; axis < 3; ++axis) points.xyz[3 * distinct + axis] = std::ldexp(p[i][axis], box.exponent);
-            points.original.push_back(i);
-            ++distinct;
+            out.representative[i] = i;
+            for (int axis = 0; axis < 3; ++axis)
+                points.xyz[3 * d + axis] = factor_ok ? p[i][axis] * factor : std::ldexp(p[i][axis], box.exponent);
+            points.original[d++] = i;
         }
-        begin = end;
-    }
-    points.xyz.resize(3 * distinct);
+    });
+    out.duplicate_count = n - distinct;
     double span = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
         const double lo = std::ldexp(box.lo[axis], box.exponent), hi = std::ldexp(box.hi[axis], box.exponent);
