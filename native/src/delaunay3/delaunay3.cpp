@@ -348,16 +348,24 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     const std::size_t blocks = (slots + 63) / 64;
     std::vector<std::uint64_t> kept(blocks, 0);
     std::vector<std::uint32_t> before(blocks + 1, 0);
-    std::vector<std::array<std::uint32_t, 3>> hull;
-    for (std::size_t t = 0; t < slots; ++t) {
-        const std::uint32_t* c = corner + 4 * t;
-        if (c[3] < delaunay3_detail::kFree) kept[t >> 6] |= std::uint64_t{1} << (t & 63);
-        if (c[3] == kGhost) {
-            std::array<std::uint32_t, 3> f = {original[c[0]], original[c[1]], original[c[2]]};
-            std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-            hull.push_back(f);
+    // On the threads in chunks of kRows slots (whole words of `kept`), each collecting its ghosts'
+    // hull faces (sorted together afterwards).
+    constexpr std::size_t kRows = std::size_t{1} << 16;
+    const std::size_t chunks = (slots + kRows - 1) / kRows;
+    std::vector<std::vector<std::array<std::uint32_t, 3>>> faces(chunks);
+    detail::parallel_for(threads, chunks, [&](std::size_t chunk) {
+        for (std::size_t t = chunk * kRows; t < std::min(slots, (chunk + 1) * kRows); ++t) {
+            const std::uint32_t* c = corner + 4 * t;
+            if (c[3] < delaunay3_detail::kFree) kept[t >> 6] |= std::uint64_t{1} << (t & 63);
+            if (c[3] == kGhost) {
+                std::array<std::uint32_t, 3> f = {original[c[0]], original[c[1]], original[c[2]]};
+                std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+                faces[chunk].push_back(f);
+            }
         }
-    }
+    });
+    std::vector<std::array<std::uint32_t, 3>> hull;
+    for (const auto& list : faces) hull.insert(hull.end(), list.begin(), list.end());
     for (std::size_t b = 0; b < blocks; ++b) before[b + 1] = before[b] + ones(kept[b]);
     const std::uint32_t finite = before[blocks];
     auto position = [&](std::uint32_t t) -> std::uint32_t {
@@ -370,8 +378,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
     // Each kept row rewritten where it is (on the threads: a row reads only itself and the shared
     // positions), then the rows moved down into place (position(t) <= t) in one pass.
-    constexpr std::size_t kRows = std::size_t{1} << 16;
-    detail::parallel_for(threads, (slots + kRows - 1) / kRows, [&](std::size_t block) {
+    detail::parallel_for(threads, chunks, [&](std::size_t block) {
         for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t) {
             if (position(static_cast<std::uint32_t>(t)) == kNone) continue;
             const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
