@@ -60,9 +60,10 @@ build_and_install() {
 installed_files() {
   local missing=0 file
   for file in include/hullkit/hull.hpp include/hullkit/delaunay.hpp include/hullkit/route.hpp \
-      "$libdir/libhullkit_core.a" "$libdir/libhullkit_delaunay.a" "$libdir/libhullkit_route.a" \
+      include/hullkit/delaunay3.hpp "$libdir/libhullkit_core.a" "$libdir/libhullkit_delaunay.a" "$libdir/libhullkit_route.a" \
       "$libdir/cmake/hullkit/hullkitConfig.cmake" "$libdir/cmake/hullkit/hullkitConfigVersion.cmake" \
-      "$libdir/cmake/hullkit/hullkitTargets.cmake" "$libdir/pkgconfig/hullkit.pc" bin/hullkit; do
+      "$libdir/cmake/hullkit/hullkitTargets.cmake" "$libdir/pkgconfig/hullkit.pc" bin/hullkit \
+      share/doc/hullkit/LICENSE; do
     [ -e "$prefix/$file" ] || { echo "missing: $file"; missing=1; }
   done
   # Nothing else is a program: no tests, no benchmarks.
@@ -121,7 +122,7 @@ fi
 libdir=$(cd "$prefix" && dirname "$(find . -name libhullkit_core.a | head -n 1)")
 libdir=${libdir#./}
 
-check "installed files: headers, 3 libraries, CMake package, hullkit.pc, bin/hullkit only" installed_files
+check "installed files: headers, 3 libraries, CMake package, hullkit.pc, LICENSE, bin/hullkit only" installed_files
 check "installed package names no source-tree path and no private dependency" package_self_contained
 check "installed hullkit --version and --help run" installed_cli
 check "consumer via find_package(hullkit CONFIG) on the install" consumer_find_package

@@ -3,6 +3,7 @@
 // hullkit::route targets (or `pkg-config hullkit`). scripts/consumer_test.sh builds and runs it;
 // it prints what it found and exits 1 on any difference from the expected answers.
 #include <hullkit/delaunay.hpp>
+#include <hullkit/delaunay3.hpp>
 #include <hullkit/hull.hpp>
 #include <hullkit/route.hpp>
 
@@ -62,6 +63,33 @@ void check_delaunay() {
     std::printf("delaunay: %zu triangles\n", triangulation.triangle_count());
 }
 
+// The unit cube's corners and its centre: 12 tetrahedra (two on each face, all meeting at the
+// centre), each positively oriented, their volumes summing to exactly 1.
+void check_delaunay3() {
+    std::vector<double> xyz;
+    for (int corner = 0; corner < 8; ++corner) xyz.insert(xyz.end(), {double(corner & 1), double(corner >> 1 & 1), double(corner >> 2 & 1)});
+    xyz.insert(xyz.end(), {0.5, 0.5, 0.5});
+    const hullkit::Delaunay3 mesh = hullkit::delaunay3(xyz);
+    expect(mesh.ok(), "delaunay3() failed: " + mesh.error);
+    expect(mesh.dimension == 3, "delaunay3 dimension " + std::to_string(mesh.dimension) + ", expected 3");
+    expect(mesh.tetrahedron_count() == 12,
+           "tetrahedralization has " + std::to_string(mesh.tetrahedron_count()) + " tetrahedra, expected 12");
+    double volume = 0;
+    for (std::size_t t = 0; t < mesh.tetrahedron_count(); ++t) {
+        const double* p[4];
+        for (int k = 0; k < 4; ++k) p[k] = &xyz[3 * mesh.tetrahedra[4 * t + k]];
+        double e[3][3];
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a) e[k][a] = p[k + 1][a] - p[0][a];
+        const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+        expect(det > 0, "tetrahedron " + std::to_string(t) + " is not positively oriented");
+        volume += det / 6;
+    }
+    expect(volume == 1.0, "tetrahedra's volume " + std::to_string(volume) + ", expected exactly 1");
+    std::printf("delaunay3: %zu tetrahedra, volume %.17g\n", mesh.tetrahedron_count(), volume);
+}
+
 // A tetrahedron moved along x from 0 to 10 through a wall at x = 5: the one leg hits it.
 void check_route() {
     hullkit::Scene scene;
@@ -92,6 +120,7 @@ void check_route() {
 int main() {
     check_hull();
     check_delaunay();
+    check_delaunay3();
     check_route();
     return failures == 0 ? 0 : 1;
 }
