@@ -199,6 +199,13 @@ public:
         maybe_flush();
     }
     void put(char c) { buffer_ += c; }
+    /// Text formatted elsewhere, written after what is buffered.
+    void put_block(const std::string& text) {
+        flush();
+        if (!text.empty() && std::fwrite(text.data(), 1, text.size(), file_) != text.size()) {
+            throw UsageError(path_ + ": cannot write: " + std::strerror(errno));
+        }
+    }
     void number(std::int64_t value) {
         char digits[24];
         buffer_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
@@ -233,37 +240,68 @@ private:
     std::string buffer_;
 };
 
+/// Appends a number's shortest text (integers exactly; doubles that read back to the same bits).
+template <class Number>
+void append(std::string& text, Number value) {
+    char digits[32];
+    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+}
+
+/// Rows 0 .. count-1, each appended to a string by row(i, text), formatted on `threads` threads
+/// (0: every hardware thread) in batches of consecutive rows and written in order: the same bytes
+/// for every thread count. The tetrahedra's text is several times their binary size, and one
+/// thread formatting it took about as long as the tetrahedralization on two.
+template <class Row>
+void put_rows(TextOut& out, std::size_t count, unsigned threads, const Row& row) {
+    constexpr std::size_t kRows = std::size_t{1} << 15;  // a batch: about 1 MB of text
+    const unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::string> pieces(count > kRows ? workers : 1);
+    const std::size_t stride = kRows * pieces.size();
+    for (std::size_t start = 0; start < count; start += stride) {
+        auto format = [&](std::size_t k) {
+            std::string& text = pieces[k];
+            text.clear();
+            const std::size_t end = std::min(count, start + (k + 1) * kRows);
+            for (std::size_t i = start + k * kRows; i < end; ++i) row(i, text);
+        };
+        std::vector<std::thread> helpers;
+        for (std::size_t k = 1; k < pieces.size() && start + k * kRows < count; ++k) helpers.emplace_back(format, k);
+        format(0);
+        for (std::thread& helper : helpers) helper.join();
+        for (std::size_t k = 0; k <= helpers.size(); ++k) out.put_block(pieces[k]);
+    }
+}
+
 /// JSON lists of index tuples: [[a,b,c],[...]].
 template <class Int>
-void json_tuples(TextOut& out, const std::vector<Int>& values, std::size_t arity) {
+void json_tuples(TextOut& out, const std::vector<Int>& values, std::size_t arity, unsigned threads) {
     out.put('[');
-    for (std::size_t i = 0; i < values.size(); i += arity) {
-        if (i) out.put(',');
-        out.put('[');
+    put_rows(out, values.size() / arity, threads, [&](std::size_t i, std::string& text) {
+        text += i ? ",[" : "[";
         for (std::size_t k = 0; k < arity; ++k) {
-            if (k) out.put(',');
-            out.number(static_cast<std::int64_t>(values[i + k]));
+            if (k) text += ',';
+            append(text, static_cast<std::int64_t>(values[arity * i + k]));
         }
-        out.put(']');
-    }
+        text += ']';
+    });
     out.put(']');
 }
 
-void write_json(TextOut& out, const hullkit::Delaunay3& d) {
+void write_json(TextOut& out, const hullkit::Delaunay3& d, unsigned threads) {
     out.put("{\"dimension\":");
     out.number(d.dimension);
     if (d.dimension == 3) {
         out.put(",\"tetrahedra\":");
-        json_tuples(out, d.tetrahedra, 4);
+        json_tuples(out, d.tetrahedra, 4, threads);
         out.put(",\"neighbors\":");
-        json_tuples(out, d.neighbors, 4);
+        json_tuples(out, d.neighbors, 4, threads);
         out.put(",\"hull\":");
-        json_tuples(out, d.hull, 3);
+        json_tuples(out, d.hull, 3, threads);
     } else if (d.dimension == 2) {
         out.put(",\"triangles\":");
-        json_tuples(out, d.triangles, 3);
+        json_tuples(out, d.triangles, 3, threads);
         out.put(",\"neighbors\":");
-        json_tuples(out, d.neighbors, 3);
+        json_tuples(out, d.neighbors, 3, threads);
         out.put(",\"normal\":[");
         for (int k = 0; k < 3; ++k) {
             if (k) out.put(',');
@@ -272,7 +310,7 @@ void write_json(TextOut& out, const hullkit::Delaunay3& d) {
         out.put(']');
     } else {
         out.put(",\"vertices\":");
-        json_tuples(out, d.vertices, 1);
+        json_tuples(out, d.vertices, 1, threads);
     }
     out.put(",\"duplicates\":[");
     bool first = true;
@@ -289,52 +327,49 @@ void write_json(TextOut& out, const hullkit::Delaunay3& d) {
     out.put("]}\n");
 }
 
-/// One point's coordinates, space-separated.
-void write_point(TextOut& out, const double* p) {
+/// One point's coordinates, space-separated, and a newline.
+void append_point(std::string& text, const double* p) {
     for (int k = 0; k < 3; ++k) {
-        if (k) out.put(' ');
-        out.real(p[k]);
+        if (k) text += ' ';
+        append(text, p[k]);
     }
+    text += '\n';
 }
 
 /// TetGen's .node: "N 3 0 0" then "i x y z", numbered from 1.
-void write_node(TextOut& out, const std::vector<double>& xyz) {
+void write_node(TextOut& out, const std::vector<double>& xyz, unsigned threads) {
     const std::size_t n = xyz.size() / 3;
     out.number(static_cast<std::int64_t>(n));
     out.put(" 3 0 0\n");
-    for (std::size_t i = 0; i < n; ++i) {
-        out.number(static_cast<std::int64_t>(i + 1));
-        out.put(' ');
-        write_point(out, &xyz[3 * i]);
-        out.put('\n');
-    }
+    put_rows(out, n, threads, [&](std::size_t i, std::string& text) {
+        append(text, static_cast<std::int64_t>(i + 1));
+        text += ' ';
+        append_point(text, &xyz[3 * i]);
+    });
 }
 
 /// TetGen's .ele: "T 4 0" then "t a b c d", numbered from 1 (tetrahedra and nodes alike).
-void write_ele(TextOut& out, const hullkit::Delaunay3& d) {
+void write_ele(TextOut& out, const hullkit::Delaunay3& d, unsigned threads) {
     out.number(static_cast<std::int64_t>(d.tetrahedron_count()));
     out.put(" 4 0\n");
-    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
-        out.number(static_cast<std::int64_t>(t + 1));
+    put_rows(out, d.tetrahedron_count(), threads, [&](std::size_t t, std::string& text) {
+        append(text, static_cast<std::int64_t>(t + 1));
         for (int k = 0; k < 4; ++k) {
-            out.put(' ');
-            out.number(std::int64_t{d.tetrahedra[4 * t + k]} + 1);
+            text += ' ';
+            append(text, std::int64_t{d.tetrahedra[4 * t + k]} + 1);
         }
-        out.put('\n');
-    }
+        text += '\n';
+    });
 }
 
 /// Legacy VTK, an unstructured grid: every input point, then the tetrahedra (cell type 10), or the
 /// triangles of coplanar input (type 5).
-void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Delaunay3& d) {
+void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Delaunay3& d, unsigned threads) {
     const std::size_t n = xyz.size() / 3;
     out.put("# vtk DataFile Version 3.0\nhullkit delaunay3\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS ");
     out.number(static_cast<std::int64_t>(n));
     out.put(" double\n");
-    for (std::size_t i = 0; i < n; ++i) {
-        write_point(out, &xyz[3 * i]);
-        out.put('\n');
-    }
+    put_rows(out, n, threads, [&](std::size_t i, std::string& text) { append_point(text, &xyz[3 * i]); });
     const bool solid = d.dimension == 3;
     const std::vector<std::uint32_t>& cells = solid ? d.tetrahedra : d.triangles;
     const std::size_t arity = solid ? 4 : 3;
@@ -344,14 +379,14 @@ void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Dela
     out.put(' ');
     out.number(static_cast<std::int64_t>(count * (arity + 1)));
     out.put('\n');
-    for (std::size_t c = 0; c < count; ++c) {
-        out.number(static_cast<std::int64_t>(arity));
+    put_rows(out, count, threads, [&](std::size_t c, std::string& text) {
+        append(text, static_cast<std::int64_t>(arity));
         for (std::size_t k = 0; k < arity; ++k) {
-            out.put(' ');
-            out.number(cells[arity * c + k]);
+            text += ' ';
+            append(text, static_cast<std::int64_t>(cells[arity * c + k]));
         }
-        out.put('\n');
-    }
+        text += '\n';
+    });
     out.put("CELL_TYPES ");
     out.number(static_cast<std::int64_t>(count));
     out.put('\n');
@@ -390,14 +425,14 @@ int delaunay3_main(const std::vector<std::string>& argv) {
     }
     if (args.format == Format::Ele) {
         TextOut node(node_path_of(args.output));
-        write_node(node, xyz);
+        write_node(node, xyz, args.threads);
         node.finish();
     }
     TextOut out(args.output);
     switch (args.format) {
-        case Format::Json: write_json(out, result); break;
-        case Format::Vtk: write_vtk(out, xyz, result); break;
-        case Format::Ele: write_ele(out, result); break;
+        case Format::Json: write_json(out, result, args.threads); break;
+        case Format::Vtk: write_vtk(out, xyz, result, args.threads); break;
+        case Format::Ele: write_ele(out, result, args.threads); break;
     }
     out.finish();
     if (args.stats) {

@@ -135,6 +135,55 @@ TEST_CASE("hullkit delaunay3: TetGen .ele and .node, VTK, and verification of th
     REQUIRE(vtk.find("CELL_TYPES " + std::to_string(count) + "\n") != std::string::npos);
 }
 
+TEST_CASE("hullkit delaunay3: outputs formatted on threads in batches are the same bytes for every thread count", "[delaunay3][cli][threads]") {
+    // 8000 points: about 50 000 tetrahedra, more than one batch of rows (2^15) per format.
+    TempDir dir("hk-d3");
+    const std::vector<double> xyz = write_cloud(dir.file("points.txt"), 8000, 7);
+    const hullkit::Delaunay3 d = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 8000));
+    REQUIRE(d.tetrahedron_count() > 40000);
+    for (const char* ext : {"ele", "json", "vtk"}) {
+        INFO(ext);
+        std::string first;
+        for (const char* threads : {"1", "2", "3"}) {
+            const std::string out = dir.file(std::string("t") + threads + "." + ext);
+            REQUIRE(run_cli(dir, {"delaunay3", dir.file("points.txt"), "-o", out, "--threads", threads}).exit_code == 0);
+            const std::string text = read_text(out);
+            if (first.empty()) first = text;
+            REQUIRE(text == first);
+        }
+        if (std::string(ext) == "json") REQUIRE(flatten(nlohmann::json::parse(first)["tetrahedra"]) == d.tetrahedra);
+        if (std::string(ext) == "ele") {
+            std::istringstream ele(first);
+            std::size_t count = 0, per = 0, attributes = 0;
+            ele >> count >> per >> attributes;
+            REQUIRE(count == d.tetrahedron_count());
+            std::vector<std::uint32_t> read(4 * count);
+            for (std::size_t t = 0; t < count; ++t) {
+                std::size_t number = 0;
+                ele >> number;
+                REQUIRE(number == t + 1);
+                for (int k = 0; k < 4; ++k) {
+                    ele >> read[4 * t + k];
+                    --read[4 * t + k];
+                }
+            }
+            REQUIRE(read == d.tetrahedra);
+            std::istringstream node(read_text(dir.file("t3.node")));
+            std::size_t nodes = 0, dim = 0, a = 0, b = 0;
+            node >> nodes >> dim >> a >> b;
+            REQUIRE(nodes == 8000);
+            std::size_t wrong = 0;
+            for (std::size_t i = 0; i < nodes; ++i) {
+                std::size_t number = 0;
+                double p[3];
+                node >> number >> p[0] >> p[1] >> p[2];
+                wrong += number != i + 1 || p[0] != xyz[3 * i] || p[1] != xyz[3 * i + 1] || p[2] != xyz[3 * i + 2];
+            }
+            REQUIRE(wrong == 0);
+        }
+    }
+}
+
 TEST_CASE("hullkit delaunay3: lower dimensions and duplicates in JSON", "[delaunay3][cli]") {
     TempDir dir("hk-d3");
     write_text(dir.file("plane.txt"), "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n1 0 0\n");
