@@ -267,6 +267,77 @@ class Delaunay3(_CoreViews):
         super().__init__(core, points)
         self.normal = _read_only(_np.array(core.normal, dtype=_np.float64))
 
+    def locate(self, queries, barycentric=False, nearest=False, threads=0):
+        """Exact point location of ``queries`` (array-like, shape (q, 3)). A dict:
+
+        * ``tetrahedron`` (q,) int32: the tetrahedron holding each query, -1 outside the hull (and
+          for every query when ``dimension`` is below 3); a query on a face, edge or vertex gets
+          the lowest-indexed tetrahedron around it, so the answer depends only on the point;
+        * with ``barycentric``: ``barycentric`` (q, 4), the weights of that tetrahedron's corners
+          (in its corner order) that give the query; exactly 0 on the face opposite a corner and
+          1 at a corner, NaN outside the hull;
+        * with ``nearest``: ``nearest`` (q,) int32, the nearest input point (exact distances; ties:
+          the lowest index).
+
+        Queries are sorted along a Hilbert curve and spread over ``threads`` (0: every core); the
+        answers are the same for any value. Raises HullkitError for a NaN or infinite query
+        coordinate, or one too far from the points' scale to be decided exactly (``error.point``
+        names the query).
+
+        Examples
+        --------
+        >>> import hullkit
+        >>> cube = [[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+        >>> d = hullkit.delaunay3(cube)
+        >>> found = d.locate([[0.25, 0.25, 0.25], [2, 0, 0]], barycentric=True, nearest=True)
+        >>> int(found["tetrahedron"][1]), found["nearest"].tolist()
+        (-1, [0, 4])
+        >>> t = found["tetrahedron"][0]
+        >>> w = found["barycentric"][0]
+        >>> [round(float(c), 12) for c in w @ d.points[d.tetrahedra[t]]]
+        [0.25, 0.25, 0.25]
+        """
+        array = as_points(queries, 3, "queries")
+        with _translated():
+            tetrahedron, weights, near = self._core.locate(array, bool(barycentric), bool(nearest), _threads(threads))
+        out = {"tetrahedron": tetrahedron}
+        if barycentric:
+            out["barycentric"] = weights
+        if nearest:
+            out["nearest"] = near
+        return out
+
+    def voronoi(self):
+        """The Voronoi diagram, dual to this tetrahedralization. A dict of arrays (numbers are
+        indices into the others):
+
+        * ``vertices`` (v, 3): the circumcentres of the Delaunay cells (tetrahedra whose
+          circumspheres coincide exactly, as a grid's, share one); ``tetrahedron_vertex`` (m,):
+          each tetrahedron's vertex;
+        * ``face_points`` (f, 2): the two points p < q each face separates; its corners are
+          ``face_vertices[face_offsets[k]:face_offsets[k + 1]]``, counter-clockwise seen from q's
+          side; ``face_bounded`` (f,) 1 or 0 (an unbounded face lists the chain between its rays);
+        * ``cell_faces[cell_offsets[i]:cell_offsets[i + 1]]``: point i's faces; ``volume`` (n,):
+          its cell's volume, inf when unbounded (a hull point), NaN for a duplicate point.
+
+        Which vertices and faces exist is decided exactly; coordinates and volumes are rounded.
+        Below dimension 3 every cell is unbounded (no vertices or faces).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import hullkit
+        >>> grid = np.array([[x, y, z] for x in range(3) for y in range(3) for z in range(3)], dtype=float)
+        >>> v = hullkit.delaunay3(grid).voronoi()
+        >>> float(v["volume"][13]), int(np.isinf(v["volume"]).sum())  # the centre's cell: a unit cube
+        (1.0, 26)
+        """
+        with _translated():
+            arrays = self._core.voronoi()
+        names = ("vertices", "tetrahedron_vertex", "face_points", "face_offsets", "face_vertices",
+                 "face_bounded", "cell_offsets", "cell_faces", "volume")
+        return dict(zip(names, arrays))
+
     def __repr__(self):
         return (f"hullkit.Delaunay3(points={len(self.points)}, tetrahedra={len(self.tetrahedra)}, "
                 f"dimension={self.dimension})")

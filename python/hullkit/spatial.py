@@ -32,8 +32,8 @@ Delaunay (3D, on ``hullkit.delaunay3``): ``simplices`` (m, 4) positively oriente
 Cospherical points (grids) get tetrahedra that are never flat. Coplanar points (``dimension`` 2)
 give no simplices and ``convex_hull`` their planar Delaunay triangles; collinear points or one
 point no simplices and an empty ``convex_hull`` (``vertex_neighbor_vertices`` links the points
-along the line). ``find_simplex`` in 3D raises NotImplementedError: it comes with 3D point
-location.
+along the line). ``find_simplex`` is exact (hullkit.Delaunay3.locate): a point on a shared
+face, edge or vertex gets the lowest-indexed simplex around it.
 
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
 point). Options scipy has and hullkit does not (qhull_options, incremental, furthest_site,
@@ -144,7 +144,7 @@ class Delaunay:
 
     Attributes (scipy's): points, simplices, neighbors, convex_hull, vertex_neighbor_vertices,
     vertex_to_simplex, transform, coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and
-    dimension. Method: find_simplex (2D).
+    dimension. Method: find_simplex.
 
     Examples
     --------
@@ -225,17 +225,19 @@ class Delaunay:
         self._chain = _np.stack([vertices[:-1], vertices[1:]], axis=1) if d.dimension == 1 else self.convex_hull
 
     def find_simplex(self, xi, bruteforce=False, tol=None):
-        """The simplex containing each point of ``xi`` (shape (..., 2)), -1 outside the hull;
-        exact (a point on an edge gets one of the two simplices). ``bruteforce`` and ``tol`` are
-        accepted for scipy's signature and change nothing: the location is exact. In 3D:
-        NotImplementedError (it comes with 3D point location)."""
-        if self.ndim == 3:
-            raise NotImplementedError("hullkit.spatial.Delaunay.find_simplex is not implemented in 3D yet: "
-                                      "it comes with 3D point location")
+        """The simplex containing each point of ``xi`` (shape (..., ndim)), -1 outside the hull;
+        exact. In 2D a point on an edge gets one of the two simplices; in 3D a point on a face,
+        edge or vertex gets the lowest-indexed simplex around it (hullkit.Delaunay3.locate), and
+        without simplices (flat input) every point gets -1. ``bruteforce`` and ``tol`` are
+        accepted for scipy's signature and change nothing: the location is exact."""
+        dims = self.ndim
         array = _np.asarray(xi, dtype=_np.float64)
-        if array.shape[-1:] != (2,):
-            raise HullkitError(f"xi must have shape (..., 2), got {array.shape}")
-        flat = as_points(array.reshape(-1, 2), 2, "xi")
+        if array.shape[-1:] != (dims,):
+            raise HullkitError(f"xi must have shape (..., {dims}), got {array.shape}")
+        flat = as_points(array.reshape(-1, dims), dims, "xi")
+        if dims == 3:
+            found = self._tetrahedralization.locate(flat)["tetrahedron"]
+            return found.reshape(array.shape[:-1])
         with _translated():
             found = self._triangulation._core.locate(flat)
         return found.astype(_np.int32).reshape(array.shape[:-1])

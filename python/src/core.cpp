@@ -481,7 +481,44 @@ public:
 
     const hullkit::Delaunay3& result() const { return result_; }
 
+    /// hullkit::delaunay3_locate on (q, 3) queries: (tetrahedron int32 (q,), barycentric (q, 4) or
+    /// None, nearest int32 (q,) or None). The GIL is released while the core works.
+    py::tuple locate(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
+        const std::size_t n = rows(queries, 3, "queries");
+        hullkit::Delaunay3QueryOptions options;
+        options.barycentric = barycentric;
+        options.nearest = nearest;
+        options.threads = threads;
+        hullkit::Delaunay3Queries found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay3_locate(span(), result_, hullkit::PointSpan(queries.data(), n), options);
+        }
+        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        py::object weights = py::none(), near = py::none();
+        if (barycentric) weights = owned_points(std::move(found.barycentric), 4);
+        if (nearest) near = owned(std::move(found.nearest));
+        return py::make_tuple(owned(std::move(found.tetrahedron)), weights, near);
+    }
+
+    /// hullkit::delaunay3_voronoi's arrays, in its field order: vertices (v, 3), tetrahedron_vertex,
+    /// face_points (f, 2), face_offsets, face_vertices, face_bounded, cell_offsets, cell_faces, volume.
+    py::tuple voronoi() const {
+        hullkit::Voronoi3 v;
+        {
+            py::gil_scoped_release unlocked;
+            v = hullkit::delaunay3_voronoi(span(), result_);
+        }
+        const auto faces = static_cast<py::ssize_t>(v.face_count());
+        return py::make_tuple(owned_points(std::move(v.vertices)), owned(std::move(v.tetrahedron_vertex)),
+                              owned(std::move(v.face_points), {faces, 2}), owned(std::move(v.face_offsets)),
+                              owned(std::move(v.face_vertices)), owned(std::move(v.face_bounded)),
+                              owned(std::move(v.cell_offsets)), owned(std::move(v.cell_faces)), owned(std::move(v.volume)));
+    }
+
 private:
+    hullkit::PointSpan span() const { return hullkit::PointSpan(points_.data(), static_cast<std::size_t>(points_.shape(0))); }
+
     Points points_;
     hullkit::Delaunay3 result_;
 };
@@ -758,7 +795,10 @@ PYBIND11_MODULE(_core, m) {
                                    const double* n = t.result().normal;
                                    return py::make_tuple(n[0], n[1], n[2]);
                                })
-        .def_property_readonly("duplicate_count", [](const Tetrahedralization& t) { return t.result().duplicate_count; });
+        .def_property_readonly("duplicate_count", [](const Tetrahedralization& t) { return t.result().duplicate_count; })
+        .def("locate", &Tetrahedralization::locate, py::arg("queries"), py::arg("barycentric") = false,
+             py::arg("nearest") = false, py::arg("threads") = 0u)
+        .def("voronoi", &Tetrahedralization::voronoi);
 
     py::class_<Checker>(m, "RouteChecker")
         .def(py::init<const std::string&, const std::string&, const std::string&, const std::map<std::string, std::string>&>(),

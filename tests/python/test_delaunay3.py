@@ -29,7 +29,8 @@ def grid(nx, ny, nz):
 
 
 def test_docstring_examples_run():
-    for function in (hullkit.delaunay3, hullkit.verify_delaunay3, hullkit.spatial.Delaunay):
+    for function in (hullkit.delaunay3, hullkit.verify_delaunay3, hullkit.spatial.Delaunay,
+                     hullkit.Delaunay3.locate, hullkit.Delaunay3.voronoi):
         finder = doctest.DocTestFinder(recurse=False)
         runner = doctest.DocTestRunner()
         for test in finder.find(function, function.__name__, globs={}):
@@ -275,3 +276,94 @@ def test_large_input_threads_give_identical_arrays():
     assert 6 * len(points) < len(one.tetrahedra) < 7 * len(points)
     assert int((one.neighbors < 0).sum()) == len(one.hull)  # a face slot without neighbour per hull face
     assert hullkit.verify_delaunay3(points, one.tetrahedra)["ok"]
+
+
+def test_locate_vertices_centroids_outside_and_nearest():
+    rng = np.random.default_rng(21)
+    points = rng.random((3000, 3))
+    d = hullkit.delaunay3(points)
+    # An input point is a vertex: found in the lowest-indexed tetrahedron around it, which has it
+    # as a corner, with weight exactly 1 there and 0 elsewhere; its nearest point is itself.
+    found = d.locate(points, barycentric=True, nearest=True, threads=2)
+    t, w = found["tetrahedron"], found["barycentric"]
+    assert t.dtype == np.int32 and t.shape == (3000,) and w.shape == (3000, 4)
+    corners = d.tetrahedra[t]
+    at = corners == np.arange(3000)[:, None]
+    assert at.sum(axis=1).tolist() == [1] * 3000
+    assert (w[at] == 1).all() and (w[~at] == 0).all()
+    around = [[] for _ in range(3000)]
+    for k, tet in enumerate(d.tetrahedra.tolist()):
+        for v in tet:
+            around[v].append(k)
+    assert t.tolist() == [min(ks) for ks in around]
+    assert found["nearest"].tolist() == list(range(3000))
+    # Centroids: strictly inside their own tetrahedron, weights 1/4 up to rounding; as scipy finds.
+    centroids = points[d.tetrahedra].mean(axis=1)
+    inside = d.locate(centroids, barycentric=True)
+    np.testing.assert_array_equal(inside["tetrahedron"], np.arange(len(d.tetrahedra)))
+    np.testing.assert_allclose(inside["barycentric"], 0.25, atol=1e-9)
+    theirs = scipy.spatial.Delaunay(points)
+    ours_sets = [tuple(sorted(tet)) for tet in d.tetrahedra[inside["tetrahedron"]].tolist()]
+    theirs_sets = [tuple(sorted(tet)) for tet in theirs.simplices[theirs.find_simplex(centroids)].tolist()]
+    assert ours_sets == theirs_sets
+    # Random queries: nearest by brute force (exact squared distances of these doubles agree with
+    # the ordering here except in ties, which random points do not have), outside ones -1 and NaN.
+    queries = rng.random((500, 3)) * 1.4 - 0.2
+    q = d.locate(queries, barycentric=True, nearest=True, threads=1)
+    brute = np.argmin(((queries[:, None, :] - points[None, :, :]) ** 2).sum(axis=2), axis=1)
+    np.testing.assert_array_equal(q["nearest"], brute)
+    outside = q["tetrahedron"] < 0
+    np.testing.assert_array_equal(outside, theirs.find_simplex(queries) < 0)
+    assert np.isnan(q["barycentric"][outside]).all()
+    got = np.einsum("qk,qkd->qd", q["barycentric"][~outside], points[d.tetrahedra[q["tetrahedron"][~outside]]])
+    np.testing.assert_allclose(got, queries[~outside], atol=1e-12)
+    # The same answers on any number of threads; only the asked arrays come back.
+    again = d.locate(queries, barycentric=True, nearest=True, threads=3)
+    for key in ("tetrahedron", "barycentric", "nearest"):
+        np.testing.assert_array_equal(q[key], again[key])
+    assert set(d.locate(queries).keys()) == {"tetrahedron"}
+
+
+def test_locate_errors_and_flat_input():
+    d = hullkit.delaunay3(grid(3, 3, 3))
+    with pytest.raises(hullkit.HullkitError, match="query 1") as caught:
+        d.locate([[0.5, 0.5, 0.5], [np.nan, 0, 0]])
+    assert caught.value.point == 1
+    with pytest.raises(hullkit.HullkitError, match="shape"):
+        d.locate([[0.5, 0.5]])
+    flat = hullkit.delaunay3([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]])
+    assert flat.dimension == 2
+    assert flat.locate([[0.2, 0.2, 0.0]])["tetrahedron"].tolist() == [-1]
+    assert hullkit.spatial.Delaunay([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]).find_simplex([[0.2, 0.2, 0]]).tolist() == [-1]
+
+
+def test_voronoi_grid_cells_and_scipy_volumes():
+    # A 4x4x4 grid: the 8 inner points' cells are unit cubes (one vertex per grid cube, shared by
+    # its cospherical tetrahedra), the 56 on the hull unbounded.
+    v = hullkit.delaunay3(grid(4, 4, 4)).voronoi()
+    inner = [i for i, (x, y, z) in enumerate(grid(4, 4, 4).tolist()) if 0 < x < 3 and 0 < y < 3 and 0 < z < 3]
+    assert v["volume"][inner].tolist() == [1.0] * 8
+    assert np.isinf(v["volume"]).sum() == 56
+    assert v["vertices"].shape == (27, 3)
+    np.testing.assert_array_equal(np.sort(v["vertices"], axis=0), np.sort(grid(3, 3, 3) + 0.5, axis=0))
+    # Random points: each bounded cell's volume is the volume of the hull of scipy's Voronoi region.
+    rng = np.random.default_rng(8)
+    points = rng.random((400, 3))
+    ours = hullkit.delaunay3(points).voronoi()
+    theirs = scipy.spatial.Voronoi(points)
+    bounded = 0
+    for i in range(400):
+        region = theirs.regions[theirs.point_region[i]]
+        if -1 in region or not region:
+            assert np.isinf(ours["volume"][i])
+            continue
+        bounded += 1
+        expected = scipy.spatial.ConvexHull(theirs.vertices[region]).volume
+        assert ours["volume"][i] == pytest.approx(expected, rel=1e-9)
+    assert bounded > 100
+    # Faces: each separates two points joined by a Delaunay edge; a cell's faces name the point.
+    fp = ours["face_points"]
+    assert fp.shape[1] == 2 and (fp[:, 0] < fp[:, 1]).all()
+    offsets, faces = ours["cell_offsets"], ours["cell_faces"]
+    for i in range(400):
+        assert all(i in fp[f].tolist() for f in faces[offsets[i]:offsets[i + 1]])

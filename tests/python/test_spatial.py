@@ -227,8 +227,17 @@ def test_delaunay_3d_matches_scipy():
     assert ours.transform.shape == theirs.transform.shape == (ours.nsimplex, 4, 3)
     np.testing.assert_allclose(barycentric_by_vertex(ours, np.arange(ours.nsimplex), x),
                                barycentric_by_vertex(theirs, match, x), rtol=0, atol=1e-6)
-    with pytest.raises(NotImplementedError, match="point location"):
-        ours.find_simplex([[0.5, 0.5, 0.5]])
+    # find_simplex: each tetrahedron's centroid (strictly inside it) is found in that very
+    # tetrahedron, as scipy finds it in its own; points far outside in none; shapes kept.
+    centroids = points[ours.simplices].mean(axis=1)
+    found = ours.find_simplex(centroids)
+    assert found.dtype == np.int32
+    np.testing.assert_array_equal(found, np.arange(ours.nsimplex))
+    np.testing.assert_array_equal(match[found], theirs.find_simplex(centroids))
+    far = np.array([[[10.0, 0, 0], [0, -10.0, 0]], [[0, 0, 1e9], [3.0, 3.0, 3.0]]])
+    assert ours.find_simplex(far).tolist() == [[-1, -1], [-1, -1]]
+    with pytest.raises(hullkit.HullkitError, match="shape"):
+        ours.find_simplex([[0.5, 0.5]])
 
 
 def test_delaunay_3d_grid_has_no_flat_simplices():

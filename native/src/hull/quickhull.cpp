@@ -304,7 +304,7 @@ std::vector<CoplanarPair> coplanar_pairs(const Surface& surface) {
 }
 
 bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>& ids, LargeArray<double>& xyz,
-                   Surface& surface, std::string& error, unsigned threads) {
+                   Surface& surface, std::string& error, unsigned threads, LargeArray<double>* storage) {
     {
         LargeArray<std::uint64_t> keyed = candidates(points, simplex, threads);
         ids = spatial_order(points, keyed);
@@ -322,6 +322,7 @@ bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>&
             if (ids[k] == simplex.p[corner]) local.p[corner] = static_cast<Index>(k);
         }
     }
+    if (storage) *storage = LargeArray<double>();  // `points` is not read again: the copy is
     Quickhull quickhull(PointSpan(xyz.data(), ids.size()), ids);
     return quickhull.run(local, surface, error);
 }

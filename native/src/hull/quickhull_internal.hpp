@@ -100,8 +100,11 @@ std::vector<CoplanarPair> coplanar_pairs(const Surface& surface);
 /// Quickhull of a cloud with volume: its candidates (interior points culled, repeats dropped)
 /// copied in spatial order into *xyz, ids[k] being the index in `points` of copy k, and the hull
 /// as a surface over the copy.
+/// `storage`, when given, is the array `points` views: it is released once the candidates are
+/// copied, before the hull is built (a caller's own copy of the points need not live beside the
+/// candidates' copy and the surface; on a sphere both are every point).
 bool run_quickhull(PointSpan points, const Simplex& simplex, std::vector<Index>& ids, LargeArray<double>& xyz,
-                   Surface& surface, std::string& error, unsigned threads = 1);
+                   Surface& surface, std::string& error, unsigned threads = 1, LargeArray<double>* storage = nullptr);
 
 // ---- quickhull_candidates.cpp ----
 

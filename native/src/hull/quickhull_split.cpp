@@ -232,7 +232,7 @@ bool member_surface(PointSpan points, const std::vector<Index>& members, Surface
     std::vector<Index> ids;
     LargeArray<double> copy;
     std::string error;
-    if (!run_quickhull(local, simplex, ids, copy, surface, error)) return false;
+    if (!run_quickhull(local, simplex, ids, copy, surface, error, 1, &xyz)) return false;
     for (Index& v : surface.triangles) v = members[ids[v]];
     return true;
 }
