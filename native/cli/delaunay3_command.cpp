@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -25,8 +26,8 @@ namespace hullkit_cli {
 namespace {
 
 const char* const kDelaunay3Usage =
-    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT] [--threads N]
-                         [--stats] [--quiet]
+    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT] [--voronoi FILE]
+                         [--threads N] [--stats] [--quiet]
 
 Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
 input if INPUT is missing or '-'): the lower convex hull of the points lifted to
@@ -54,6 +55,15 @@ Options:
                         in ParaView);
                       without --format, an output FILE ending in .json, .ele
                       or .vtk selects that format
+  --voronoi FILE      also write the Voronoi diagram to FILE ('-': standard
+                        output, when -o names a file) as JSON: {"vertices":
+                        [[x,y,z],...] (the circumcentres; cospherical
+                        tetrahedra share one), "tetrahedron_vertex": [...],
+                        "faces": [[p, q, bounded, [v,...]],...] (between
+                        points p < q, counter-clockwise seen from q),
+                        "cells": [[face,...],...] (per point), "volume":
+                        [...] (null when unbounded: a hull point, or for a
+                        duplicate point)}
   --threads N         a whole number from 0 to 1024: 0 (default) every
                       hardware thread, 1 this thread only; the output is the
                       same for every N
@@ -112,6 +122,7 @@ struct Delaunay3Args {
     std::string input = "-";
     std::string output;
     Format format = Format::Json;
+    std::string voronoi;  ///< --voronoi FILE: the Voronoi cells as JSON there
     unsigned threads = 0;
     bool stats = false;
     bool quiet = false;
@@ -127,6 +138,7 @@ bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
     app.add_option("input", args->input);
     app.add_option("-o,--output", args->output)->multi_option_policy(last);
     app.add_option("--format", format_name)->multi_option_policy(last);
+    app.add_option("--voronoi", args->voronoi)->multi_option_policy(last);
     add_whole_number_option(app, "--threads", &args->threads, 0, 1024);
     app.add_flag("--stats", args->stats);
     app.add_flag("--quiet", args->quiet);
@@ -147,6 +159,11 @@ bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
         throw UsageError("--format ele writes FILE.ele and FILE.node: give -o FILE.ele");
     }
     if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    if (app.count("--voronoi") && args->voronoi.empty()) throw UsageError("option --voronoi needs a file name");
+    const bool output_to_stdout = args->output.empty() || args->output == "-";
+    if (args->voronoi == "-" && output_to_stdout) {
+        throw UsageError("--voronoi - and the tetrahedra would both go to standard output: give -o FILE or --voronoi FILE");
+    }
     return true;
 }
 
@@ -393,6 +410,57 @@ void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Dela
     for (std::size_t c = 0; c < count; ++c) out.put(solid ? "10\n" : "5\n");
 }
 
+/// The Voronoi diagram as JSON: {"vertices": [[x,y,z],...], "tetrahedron_vertex": [...],
+/// "faces": [[p, q, bounded, [v, ...]], ...], "cells": [[f, ...], ...], "volume": [...]}; a volume
+/// is null for an unbounded cell (a hull point) and for a duplicate point (its representative's
+/// cell is the one).
+void write_voronoi(TextOut& out, const hullkit::Voronoi3& v, unsigned threads) {
+    out.put("{\"vertices\":[");
+    put_rows(out, v.vertices.size() / 3, threads, [&](std::size_t i, std::string& text) {
+        text += i ? ",[" : "[";
+        for (int k = 0; k < 3; ++k) {
+            if (k) text += ',';
+            append(text, v.vertices[3 * i + k]);
+        }
+        text += ']';
+    });
+    out.put("],\"tetrahedron_vertex\":[");
+    put_rows(out, v.tetrahedron_vertex.size(), threads, [&](std::size_t t, std::string& text) {
+        if (t) text += ',';
+        append(text, static_cast<std::int64_t>(v.tetrahedron_vertex[t]));
+    });
+    out.put("],\"faces\":[");
+    put_rows(out, v.face_count(), threads, [&](std::size_t f, std::string& text) {
+        text += f ? ",[" : "[";
+        append(text, static_cast<std::int64_t>(v.face_points[2 * f]));
+        text += ',';
+        append(text, static_cast<std::int64_t>(v.face_points[2 * f + 1]));
+        text += v.face_bounded[f] ? ",true,[" : ",false,[";
+        for (std::uint32_t k = v.face_offsets[f]; k < v.face_offsets[f + 1]; ++k) {
+            if (k > v.face_offsets[f]) text += ',';
+            append(text, static_cast<std::int64_t>(v.face_vertices[k]));
+        }
+        text += "]]";
+    });
+    out.put("],\"cells\":[");
+    const std::size_t points = v.volume.size();
+    put_rows(out, points, threads, [&](std::size_t i, std::string& text) {
+        text += i ? ",[" : "[";
+        for (std::uint32_t k = v.cell_offsets[i]; k < v.cell_offsets[i + 1]; ++k) {
+            if (k > v.cell_offsets[i]) text += ',';
+            append(text, static_cast<std::int64_t>(v.cell_faces[k]));
+        }
+        text += ']';
+    });
+    out.put("],\"volume\":[");
+    put_rows(out, points, threads, [&](std::size_t i, std::string& text) {
+        if (i) text += ',';
+        if (std::isfinite(v.volume[i])) append(text, v.volume[i]);
+        else text += "null";
+    });
+    out.put("]}\n");
+}
+
 /// "FILE.ele" -> "FILE.node" (any other name gets ".node" appended).
 std::string node_path_of(const std::string& ele) {
     const std::size_t dot = ele.find_last_of("./");
@@ -435,6 +503,12 @@ int delaunay3_main(const std::vector<std::string>& argv) {
         case Format::Ele: write_ele(out, result, args.threads); break;
     }
     out.finish();
+    if (!args.voronoi.empty()) {
+        const hullkit::Voronoi3 cells = hullkit::delaunay3_voronoi(hullkit::PointSpan(xyz.data(), xyz.size() / 3), result);
+        TextOut file(args.voronoi);
+        write_voronoi(file, cells, args.threads);
+        file.finish();
+    }
     if (args.stats) {
         const unsigned threads = args.threads ? args.threads : std::max(1u, std::thread::hardware_concurrency());
         std::fprintf(stderr,

@@ -184,6 +184,61 @@ TEST_CASE("hullkit delaunay3: outputs formatted on threads in batches are the sa
     }
 }
 
+TEST_CASE("hullkit delaunay3 --voronoi: the library's Voronoi diagram as JSON", "[delaunay3][cli]") {
+    TempDir dir("hk-d3");
+    // A 4x4x4 grid: the 8 inner cells are unit cubes, the 56 on the hull unbounded (null).
+    std::string grid;
+    std::vector<double> xyz;
+    for (int x = 0; x < 4; ++x)
+        for (int y = 0; y < 4; ++y)
+            for (int z = 0; z < 4; ++z) {
+                grid += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+                xyz.insert(xyz.end(), {double(x), double(y), double(z)});
+            }
+    write_text(dir.file("grid.txt"), grid);
+    const RunResult r = run_cli(dir, {"delaunay3", dir.file("grid.txt"), "-o", dir.file("grid.json"), "--voronoi", "-"});
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json v = nlohmann::json::parse(r.out);
+    const hullkit::Delaunay3 d = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 64));
+    const hullkit::Voronoi3 expected = hullkit::delaunay3_voronoi(hullkit::PointSpan(xyz.data(), 64), d);
+    REQUIRE(v["vertices"].size() == 27);
+    for (std::size_t i = 0; i < 27; ++i)
+        for (int k = 0; k < 3; ++k) REQUIRE(v["vertices"][i][k].get<double>() == expected.vertices[3 * i + k]);
+    REQUIRE(v["tetrahedron_vertex"].get<std::vector<std::uint32_t>>() == expected.tetrahedron_vertex);
+    REQUIRE(v["faces"].size() == expected.face_count());
+    for (std::size_t f = 0; f < expected.face_count(); ++f) {
+        const nlohmann::json& face = v["faces"][f];
+        REQUIRE(face[0] == expected.face_points[2 * f]);
+        REQUIRE(face[1] == expected.face_points[2 * f + 1]);
+        REQUIRE(face[2].get<bool>() == (expected.face_bounded[f] != 0));
+        const std::vector<std::uint32_t> corners(expected.face_vertices.begin() + expected.face_offsets[f],
+                                                 expected.face_vertices.begin() + expected.face_offsets[f + 1]);
+        REQUIRE(face[3].get<std::vector<std::uint32_t>>() == corners);
+    }
+    std::size_t cubes = 0, unbounded = 0;
+    for (std::size_t i = 0; i < 64; ++i) {
+        const std::vector<std::uint32_t> faces(expected.cell_faces.begin() + expected.cell_offsets[i],
+                                               expected.cell_faces.begin() + expected.cell_offsets[i + 1]);
+        REQUIRE(v["cells"][i].get<std::vector<std::uint32_t>>() == faces);
+        if (v["volume"][i].is_null()) {
+            ++unbounded;
+        } else {
+            REQUIRE(v["volume"][i].get<double>() == 1.0);
+            ++cubes;
+        }
+    }
+    REQUIRE(cubes == 8);
+    REQUIRE(unbounded == 56);
+    // Both to standard output would mix them; an empty name is no file.
+    const RunResult both = run_cli(dir, {"delaunay3", dir.file("grid.txt"), "--voronoi", "-"});
+    REQUIRE(both.exit_code == 2);
+    REQUIRE(both.err.find("--voronoi - and the tetrahedra would both go to standard output") != std::string::npos);
+    REQUIRE(run_cli(dir, {"delaunay3", dir.file("grid.txt"), "--voronoi", ""}).exit_code == 2);
+    // A file, with the tetrahedra on standard output.
+    REQUIRE(run_cli(dir, {"delaunay3", dir.file("grid.txt"), "--voronoi", dir.file("cells.json")}).exit_code == 0);
+    REQUIRE(nlohmann::json::parse(read_text(dir.file("cells.json"))) == v);
+}
+
 TEST_CASE("hullkit delaunay3: lower dimensions and duplicates in JSON", "[delaunay3][cli]") {
     TempDir dir("hk-d3");
     write_text(dir.file("plane.txt"), "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n1 0 0\n");
