@@ -195,6 +195,13 @@ std::vector<double> read_cloud(const std::string& path, unsigned threads, bool q
     return xyz;
 }
 
+/// Appends a number's shortest text (integers exactly; doubles that read back to the same bits).
+template <class Number>
+void append(std::string& text, Number value) {
+    char digits[32];
+    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+}
+
 /// Text written straight to a file (or standard output for "" and "-") through a buffer of about
 /// a megabyte: a million points' tetrahedra are hundreds of megabytes of text, never held whole.
 /// Numbers by std::to_chars (doubles: the shortest text that reads back the same).
@@ -224,13 +231,11 @@ public:
         }
     }
     void number(std::int64_t value) {
-        char digits[24];
-        buffer_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+        append(buffer_, value);
         maybe_flush();
     }
     void real(double value) {
-        char digits[32];
-        buffer_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+        append(buffer_, value);
         maybe_flush();
     }
     /// Writes what is left and closes the file; a full disk or a closed pipe is an error naming it.
@@ -256,13 +261,6 @@ private:
     std::FILE* file_ = nullptr;
     std::string buffer_;
 };
-
-/// Appends a number's shortest text (integers exactly; doubles that read back to the same bits).
-template <class Number>
-void append(std::string& text, Number value) {
-    char digits[32];
-    text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
-}
 
 /// Rows 0 .. count-1, each appended to a string by row(i, text), formatted on `threads` threads
 /// (0: every hardware thread) in batches of consecutive rows and written in order: the same bytes
