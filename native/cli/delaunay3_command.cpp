@@ -26,8 +26,8 @@ namespace hullkit_cli {
 namespace {
 
 const char* const kDelaunay3Usage =
-    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT] [--voronoi FILE]
-                         [--threads N] [--stats] [--quiet]
+    R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT]
+                         [--voronoi FILE] [--threads N] [--stats] [--quiet]
 
 Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
 input if INPUT is missing or '-'): the lower convex hull of the points lifted to
@@ -55,15 +55,16 @@ Options:
                         in ParaView);
                       without --format, an output FILE ending in .json, .ele
                       or .vtk selects that format
-  --voronoi FILE      also write the Voronoi diagram to FILE ('-': standard
-                        output, when -o names a file) as JSON: {"vertices":
-                        [[x,y,z],...] (the circumcentres; cospherical
-                        tetrahedra share one), "tetrahedron_vertex": [...],
-                        "faces": [[p, q, bounded, [v,...]],...] (between
-                        points p < q, counter-clockwise seen from q),
-                        "cells": [[face,...],...] (per point), "volume":
-                        [...] (null when unbounded: a hull point, or for a
-                        duplicate point)}
+  --voronoi FILE      also write the Voronoi diagram to FILE (default: none;
+                        '-': standard output, when -o names a file) as
+                        JSON: {"vertices": [[x,y,z],...] (the circumcentres;
+                        cospherical tetrahedra share one),
+                        "tetrahedron_vertex": [...], "faces": [[p, q,
+                        bounded, [v,...]],...] (between points p < q,
+                        counter-clockwise seen from q), "cells":
+                        [[face,...],...] (per point), "volume": [...] (null
+                        when unbounded: a hull point, or for a duplicate
+                        point)}
   --threads N         a whole number from 0 to 1024: 0 (default) every
                       hardware thread, 1 this thread only; the output is the
                       same for every N
