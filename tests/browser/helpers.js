@@ -132,7 +132,7 @@ export async function openBrowser({ folder, prefix = '/' } = {}) {
   const watch = (page) => {
     page.on('console', (msg) => { if (msg.type() === 'error') errors.push(`console.error: ${msg.text()}`); });
     page.on('pageerror', (err) => errors.push(`pageerror: ${err.message}`));
-    page.on('requestfailed', (req) => errors.push(`request failed: ${req.url()}`));
+    page.on('requestfailed', (req) => errors.push(`request failed: ${req.url()} (${req.failure()?.errorText ?? 'no reason given'})`));
     page.on('request', (req) => {
       const url = req.url();
       if (!url.startsWith(origin) && !url.startsWith('data:') && !url.startsWith('blob:')) errors.push(`outside request: ${url}`);
