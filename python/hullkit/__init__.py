@@ -202,6 +202,45 @@ class Delaunay(_CoreViews):
         with _translated():
             return int(self._core.find(as_points([[x, y]], 2, "query"), int(start))[0])
 
+    def locate(self, queries, barycentric=False, nearest=False, threads=0):
+        """Exact point location of ``queries`` (array-like, shape (q, 2)). A dict:
+
+        * ``triangle`` (q,) int32: the triangle holding each query (an index into ``triangles``
+          taken three at a time), -1 outside the hull (and for every query when ``dimension`` is
+          below 2); a query on an edge or vertex gets the lowest-indexed triangle around it, so
+          the answer depends only on the point;
+        * with ``barycentric``: ``barycentric`` (q, 3), the weights of that triangle's corners (in
+          its corner order) that give the query; exactly 0 on the edge opposite a corner and 1 at
+          a corner, NaN outside the hull;
+        * with ``nearest``: ``nearest`` (q,) int32, the nearest input point (exact distances;
+          ties: the lowest index), also for collinear points.
+
+        Queries are sorted along a Hilbert curve and spread over ``threads`` (0: every core); the
+        answers are the same for any value. Raises HullkitError for a NaN or infinite query
+        coordinate, or one too far from the points' scale to be decided exactly (``error.point``
+        names the query).
+
+        Examples
+        --------
+        >>> import hullkit
+        >>> d = hullkit.delaunay([[0, 0], [1, 0], [0, 1], [1, 1]])
+        >>> found = d.locate([[0.25, 0.5], [2, 0], [1, 1]], barycentric=True, nearest=True)
+        >>> found["triangle"].tolist(), found["nearest"].tolist()
+        ([0, -1, 0], [0, 1, 3])
+        >>> t, w = found["triangle"][0], found["barycentric"][0]
+        >>> (w @ d.points[d.triangles[3 * t: 3 * t + 3]]).tolist()
+        [0.25, 0.5]
+        """
+        array = as_points(queries, 2, "queries")
+        with _translated():
+            triangle, weights, near = self._core.locate(array, bool(barycentric), bool(nearest), _threads(threads))
+        out = {"triangle": triangle}
+        if barycentric:
+            out["barycentric"] = weights
+        if nearest:
+            out["nearest"] = near
+        return out
+
     def voronoi(self, bounds=None):
         """Voronoi cells clipped to ``bounds`` (xmin, ymin, xmax, ymax; default the points'
         bounding box): a list, per input point, of its cell's corners as an (k, 2) array,

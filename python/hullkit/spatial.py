@@ -226,9 +226,9 @@ class Delaunay:
 
     def find_simplex(self, xi, bruteforce=False, tol=None):
         """The simplex containing each point of ``xi`` (shape (..., ndim)), -1 outside the hull;
-        exact. In 2D a point on an edge gets one of the two simplices; in 3D a point on a face,
-        edge or vertex gets the lowest-indexed simplex around it (hullkit.Delaunay3.locate), and
-        without simplices (flat input) every point gets -1. ``bruteforce`` and ``tol`` are
+        exact. A point on an edge, face or vertex gets the lowest-indexed simplex around it
+        (hullkit.Delaunay.locate, hullkit.Delaunay3.locate), and without simplices (flat input)
+        every point gets -1. ``bruteforce`` and ``tol`` are
         accepted for scipy's signature and change nothing: the location is exact."""
         dims = self.ndim
         array = _np.asarray(xi, dtype=_np.float64)
@@ -238,9 +238,7 @@ class Delaunay:
         if dims == 3:
             found = self._tetrahedralization.locate(flat)["tetrahedron"]
             return found.reshape(array.shape[:-1])
-        with _translated():
-            found = self._triangulation._core.locate(flat)
-        return found.astype(_np.int32).reshape(array.shape[:-1])
+        return self._triangulation.locate(flat)["triangle"].reshape(array.shape[:-1])
 
     @property
     def vertex_neighbor_vertices(self):

@@ -343,71 +343,24 @@ public:
         return py::make_tuple(simplices, neighbors);
     }
 
-    /// The triangle containing each query (closed: on a shared edge, one of its two), or -1 outside
-    /// the hull, by a visibility walk with exact orient2d; points and queries are scaled together
-    /// by a power of two (exact) into the predicates' range.
-    py::array_t<std::int64_t> locate(const Points& queries) const {
+    /// hullkit::delaunay_locate on (q, 2) queries: (triangle int32 (q,), barycentric (q, 3) or None,
+    /// nearest int32 (q,) or None). The GIL is released while the core works.
+    py::tuple locate(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
         const std::size_t n = rows(queries, 2, "queries");
-        std::vector<std::int64_t> found(n, -1);
-        const std::vector<std::uint32_t>& tri = result_.triangles;
-        const std::vector<std::int32_t>& twin = result_.halfedges;
-        if (result_.dimension < 2 || n == 0) return owned(std::move(found));
-        const hullkit::PointSpan2 p = span();
-        double largest = 0.0, smallest = INFINITY;
-        auto scan = [&](const double* xy, std::size_t count) {
-            for (std::size_t i = 0; i < 2 * count; ++i) {
-                const double a = std::fabs(xy[i]);
-                if (!(a <= 1.7976931348623157e308)) throw CoreError("query " + std::to_string(i / 2) + " has a non-finite coordinate", static_cast<std::int64_t>(i / 2));
-                largest = std::max(largest, a);
-                if (a != 0.0) smallest = std::min(smallest, a);
-            }
-        };
-        scan(p.xy, p.count);
-        scan(queries.data(), n);
-        int exponent = 0;
-        if (!hullkit::predicates_scale_exponent(largest, smallest, &exponent))
-            throw CoreError("the queries and the points span too many orders of magnitude for exact predicates", -1);
-        std::vector<double> scaled_points, scaled_queries;
-        const double* xy = p.xy;
-        const double* q = queries.data();
-        if (exponent != 0) {
-            scaled_points.resize(2 * p.count);
-            scaled_queries.resize(2 * n);
-            for (std::size_t i = 0; i < scaled_points.size(); ++i) scaled_points[i] = std::ldexp(p.xy[i], exponent);
-            for (std::size_t i = 0; i < scaled_queries.size(); ++i) scaled_queries[i] = std::ldexp(q[i], exponent);
-            xy = scaled_points.data();
-            q = scaled_queries.data();
-        }
+        hullkit::DelaunayQueryOptions options;
+        options.barycentric = barycentric;
+        options.nearest = nearest;
+        options.threads = threads;
+        hullkit::DelaunayQueries found;
         {
             py::gil_scoped_release unlocked;
-            const std::size_t triangles = tri.size() / 3;
-            std::size_t t = 0;  // each walk starts where the last ended: nearby queries walk little
-            for (std::size_t i = 0; i < n; ++i) {
-                const double qx = q[2 * i], qy = q[2 * i + 1];
-                std::int64_t answer = -1;
-                for (std::size_t steps = 0; steps <= triangles + 2; ++steps) {
-                    // Triangles are clockwise (y up): the inside is right of each edge; a query
-                    // strictly left of one is beyond it.
-                    std::int64_t beyond = -1;
-                    for (std::size_t k = 0; k < 3 && beyond < 0; ++k) {
-                        const std::size_t e = 3 * t + (k + steps % 3) % 3;
-                        const std::size_t f = e % 3 == 2 ? e - 2 : e + 1;
-                        const double* a = xy + 2 * tri[e];
-                        const double* b = xy + 2 * tri[f];
-                        if (hullkit::orient2d(a[0], a[1], b[0], b[1], qx, qy) > 0) beyond = static_cast<std::int64_t>(e);
-                    }
-                    if (beyond < 0) {
-                        answer = static_cast<std::int64_t>(t);
-                        break;
-                    }
-                    const std::int32_t across = twin[static_cast<std::size_t>(beyond)];
-                    if (across < 0) break;  // beyond a hull edge: outside the hull
-                    t = static_cast<std::size_t>(across) / 3;
-                }
-                found[i] = answer;
-            }
+            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
         }
-        return owned(std::move(found));
+        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        py::object weights = py::none(), near = py::none();
+        if (barycentric) weights = owned_points(std::move(found.barycentric), 3);
+        if (nearest) near = owned(std::move(found.nearest));
+        return py::make_tuple(owned(std::move(found.triangle)), weights, near);
     }
 
     py::tuple voronoi(double xmin, double ymin, double xmax, double ymax) const {
@@ -772,7 +725,8 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("polygon_vertices", result_view<Triangulation>(&Delaunay::polygon_vertices))
         .def_property_readonly("duplicate_count", [](const Triangulation& t) { return t.result().duplicate_count; })
         .def("find", &Triangulation::find)
-        .def("locate", &Triangulation::locate)
+        .def("locate", &Triangulation::locate, py::arg("queries"), py::arg("barycentric") = false,
+             py::arg("nearest") = false, py::arg("threads") = 0u)
         .def("scipy_arrays", &Triangulation::scipy_arrays)
         .def("voronoi", &Triangulation::voronoi);
 

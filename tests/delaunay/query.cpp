@@ -1,6 +1,7 @@
 // delaunay_find against brute force (GMP distances) and Voronoi cells against their definition;
 // verify_delaunay rejecting broken triangulations.
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "delaunay_checks.hpp"
@@ -9,6 +10,12 @@ using delaunay_test::q;
 using hullkit::Delaunay;
 
 namespace {
+
+/// The exact sign of orient2d(a, b, c) in rational arithmetic (independent of the predicates).
+int exact_orient(const double* a, const double* b, double cx, double cy) {
+    const mpq_class det = (q(b[0]) - q(a[0])) * (q(cy) - q(a[1])) - (q(b[1]) - q(a[1])) * (q(cx) - q(a[0]));
+    return sgn(det);
+}
 
 /// The nearest input point by brute force with exact rational distances, ties to the lowest index.
 std::int64_t brute_nearest(const std::vector<double>& xy, double x, double y) {
@@ -61,6 +68,120 @@ TEST_CASE("delaunay_find: nearest point matches brute force, ties to the lowest 
     REQUIRE(hullkit::delaunay_find(one, hullkit::delaunay(one), 0, 0) == 0);
     const std::vector<double> none;
     REQUIRE(hullkit::delaunay_find(none, hullkit::delaunay(none), 0, 0) == -1);
+}
+
+TEST_CASE("delaunay_locate: the lowest-indexed triangle holding each query, barycentric weights and nearest points, any thread count", "[query]") {
+    const std::vector<double> xy = grid_with_random(31);
+    const Delaunay d = hullkit::delaunay(xy);
+    REQUIRE(d.dimension == 2);
+    const std::size_t triangles = d.triangle_count();
+    std::mt19937_64 rng(32);
+    std::uniform_real_distribution<double> u(-2, 12);
+    std::vector<double> queries;
+    for (int i = 0; i < 6000; ++i) {
+        // A third at exact vertices, edge midpoints and cell centres of the grid (on edges, at
+        // corners: held by several triangles), a third at input points, a third anywhere.
+        if (i % 3 == 0) queries.insert(queries.end(), {0.5 * std::floor(2 * u(rng)), 0.5 * std::floor(2 * u(rng))});
+        else if (i % 3 == 1) {
+            const std::size_t k = rng() % (xy.size() / 2);
+            queries.insert(queries.end(), {xy[2 * k], xy[2 * k + 1]});
+        } else queries.insert(queries.end(), {u(rng), u(rng)});
+    }
+    const std::size_t m = queries.size() / 2;
+    hullkit::DelaunayQueryOptions options;
+    options.barycentric = options.nearest = true;
+    options.threads = 1;
+    const hullkit::DelaunayQueries one = hullkit::delaunay_locate(xy, d, queries, options);
+    REQUIRE(one.ok());
+    REQUIRE(one.triangle.size() == m);
+    std::size_t wrong_triangle = 0, wrong_weights = 0, wrong_nearest = 0, on_boundary = 0, outside = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const double x = queries[2 * i], y = queries[2 * i + 1];
+        // Brute force over every triangle with the exact orientation test: clockwise triangles
+        // (y up) hold q when it is on no edge's outer (left) side.
+        std::int32_t expected = -1;
+        int holders = 0;
+        for (std::size_t t = 0; t < triangles; ++t) {
+            bool holds = true;
+            for (int k = 0; k < 3 && holds; ++k) {
+                const double* a = &xy[2 * d.triangles[3 * t + k]];
+                const double* b = &xy[2 * d.triangles[3 * t + (k + 1) % 3]];
+                holds = exact_orient(a, b, x, y) <= 0;
+            }
+            if (holds) {
+                ++holders;
+                if (expected < 0) expected = static_cast<std::int32_t>(t);
+            }
+        }
+        on_boundary += holders > 1;
+        outside += expected < 0;
+        wrong_triangle += one.triangle[i] != expected;
+        wrong_nearest += one.nearest[i] != brute_nearest(xy, x, y);
+        const double* w = &one.barycentric[3 * i];
+        if (expected < 0) {
+            wrong_weights += !(std::isnan(w[0]) && std::isnan(w[1]) && std::isnan(w[2]));
+            continue;
+        }
+        double rx = 0, ry = 0;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t c = d.triangles[3 * static_cast<std::size_t>(expected) + k];
+            rx += w[k] * xy[2 * c], ry += w[k] * xy[2 * c + 1];
+            // At a corner: exactly 1 there and 0 elsewhere.
+            if (xy[2 * c] == x && xy[2 * c + 1] == y) wrong_weights += w[k] != 1.0;
+        }
+        wrong_weights += std::fabs(rx - x) > 1e-12 || std::fabs(ry - y) > 1e-12 || std::fabs(w[0] + w[1] + w[2] - 1) > 1e-12;
+        // On the edge opposite a corner: that corner's weight exactly 0.
+        for (int k = 0; k < 3; ++k) {
+            const double* a = &xy[2 * d.triangles[3 * static_cast<std::size_t>(expected) + (k + 1) % 3]];
+            const double* b = &xy[2 * d.triangles[3 * static_cast<std::size_t>(expected) + (k + 2) % 3]];
+            if (exact_orient(a, b, x, y) == 0) wrong_weights += w[k] != 0.0;
+        }
+    }
+    INFO("on shared edges or vertices: " << on_boundary << ", outside: " << outside);
+    REQUIRE(on_boundary > 500);
+    REQUIRE(outside > 300);
+    REQUIRE(wrong_triangle == 0);
+    REQUIRE(wrong_weights == 0);
+    REQUIRE(wrong_nearest == 0);
+    // Past one chunk of the threads' work, any thread count gives the same bits.
+    for (unsigned threads : {2u, 3u, 8u}) {
+        options.threads = threads;
+        const hullkit::DelaunayQueries again = hullkit::delaunay_locate(xy, d, queries, options);
+        REQUIRE(again.triangle == one.triangle);
+        REQUIRE(again.nearest == one.nearest);
+        REQUIRE(std::memcmp(again.barycentric.data(), one.barycentric.data(), 8 * again.barycentric.size()) == 0);
+    }
+}
+
+TEST_CASE("delaunay_locate: collinear, one point, none; errors name the query", "[query]") {
+    hullkit::DelaunayQueryOptions options;
+    options.nearest = options.barycentric = true;
+    const std::vector<double> line = {0, 0, 3, 3, 1, 1, 2, 2, 1, 1};
+    const std::vector<double> queries = {2.9, 2.0, -5, 0, 1, 1, 1.5, 1.5};
+    const hullkit::DelaunayQueries found = hullkit::delaunay_locate(line, hullkit::delaunay(line), queries, options);
+    REQUIRE(found.ok());
+    REQUIRE(found.triangle == std::vector<std::int32_t>{-1, -1, -1, -1});
+    REQUIRE(std::isnan(found.barycentric[0]));
+    for (std::size_t i = 0; i < 4; ++i) REQUIRE(found.nearest[i] == brute_nearest(line, queries[2 * i], queries[2 * i + 1]));
+    const std::vector<double> one = {4, 4, 4, 4};
+    REQUIRE(hullkit::delaunay_locate(one, hullkit::delaunay(one), queries, options).nearest == std::vector<std::int32_t>{0, 0, 0, 0});
+    const std::vector<double> none;
+    REQUIRE(hullkit::delaunay_locate(none, hullkit::delaunay(none), queries, options).nearest == std::vector<std::int32_t>{-1, -1, -1, -1});
+    const std::vector<double> square = {0, 0, 1, 0, 1, 1, 0, 1};
+    const Delaunay d = hullkit::delaunay(square);
+    const std::vector<double> bad = {0.5, 0.5, 0.25, std::nan("")};
+    const hullkit::DelaunayQueries failed = hullkit::delaunay_locate(square, d, bad, options);
+    REQUIRE_FALSE(failed.ok());
+    REQUIRE(failed.error_query == 1);
+    REQUIRE(failed.error == "query 1 has a non-finite y coordinate (nan)");
+    REQUIRE(failed.triangle.empty());
+    const std::vector<double> far = {0.5, 1e300};
+    REQUIRE(hullkit::delaunay_locate(square, d, far, options).error_query == 0);
+    options.nearest = false;  // orient2d's range is wider than the distance comparisons'
+    const std::vector<double> farther = {0.5, 1e90};
+    REQUIRE(hullkit::delaunay_locate(square, d, farther, options).triangle == std::vector<std::int32_t>{-1});
+    const std::vector<double> other = {0, 0, 1, 0, 1, 1};
+    REQUIRE_FALSE(hullkit::delaunay_locate(other, d, queries, options).ok());
 }
 
 TEST_CASE("delaunay_voronoi: cells are the points nearest to their site", "[query]") {

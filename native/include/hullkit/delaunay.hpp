@@ -134,6 +134,41 @@ private:
     std::int64_t last_ = -1;
 };
 
+/// Point location in a triangulation (dimension 2), exact: which triangle holds each query, its
+/// barycentric coordinates there, and the nearest input point.
+///
+/// A query on an edge or a vertex is held by every triangle around it: the one with the lowest
+/// index is reported, so the answer depends only on the query (not on where a walk began, nor on
+/// the threads). Every decision is an exact orient2d or compare_distance on the coordinates scaled
+/// as delaunay() scales them; a query coordinate that is not finite, or that leaves the predicates'
+/// exact range after that scaling, is an error naming the query.
+struct DelaunayQueryOptions {
+    bool barycentric = false;  ///< also the barycentric coordinates (3 per query)
+    bool nearest = false;      ///< also the nearest input point
+    /// Threads: 0 every hardware thread, 1 the calling thread; the answers are the same.
+    unsigned threads = 0;
+};
+struct DelaunayQueries {
+    /// Per query: the triangle holding it (an index into triangles / 3), -1 outside the hull (and
+    /// for every query when the points span less than a plane).
+    std::vector<std::int32_t> triangle;
+    /// With `barycentric`: 3 per query, the weights of the triangle's corners (in its corner order)
+    /// that give the query point; they sum to 1 up to rounding, are exactly 0 for a corner whose
+    /// opposite edge holds the query and exactly 1 at a corner; NaN outside the hull.
+    std::vector<double> barycentric;
+    /// With `nearest`: per query, the nearest input point (exact distances; ties: the lowest index).
+    std::vector<std::int32_t> nearest;
+    std::string error;  ///< empty on success; on failure the arrays are empty
+    std::int64_t error_query = -1;
+
+    bool ok() const { return error.empty(); }
+};
+/// Locates every query (a flat x y array) in `triangulation`, the delaunay() result for `points`.
+/// Queries are sorted along a Hilbert curve and each walk starts where the previous one ended, so
+/// many queries cost little more than one short walk each; they are spread over the threads.
+DelaunayQueries delaunay_locate(PointSpan2 points, const Delaunay& triangulation, PointSpan2 queries,
+                                const DelaunayQueryOptions& options = {});
+
 /// Voronoi cells clipped to the rectangle [xmin, xmax] x [ymin, ymax]: cell i is the polygon
 /// cell_xy[2*cell_offsets[i]] ... (x y pairs) up to cell_offsets[i + 1], counter-clockwise with y
 /// up; empty for duplicates and for points whose cell misses the rectangle. Each cell is the

@@ -540,6 +540,8 @@ void fill_polygons(const Faces& faces, const std::vector<std::uint32_t>& origina
 
 namespace delaunay_detail {
 
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) { return hilbert_index(x, y); }
+
 Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triangles,
                                  std::vector<std::int32_t> twin) {
     const std::size_t count = triangles.size() / 3;

@@ -62,6 +62,10 @@ Mesh incremental_mesh(const Input& input,
 /// The Delaunay faces of an incremental mesh (finite triangles, then merge_cocircular_triangles).
 Faces mesh_faces(PointSpan2 points, Mesh mesh);
 
+/// Index along a Hilbert curve on a 2^16 x 2^16 grid (x, y < 2^16): the order delaunay() inserts
+/// points in, also used to sort queries (delaunay_locate).
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
+
 /// Both algorithms return the Delaunay faces: the lower faces of the lifted hull, each a maximal set
 /// of cocircular points whose circle is empty, as a counter-clockwise cycle.
 Faces incremental_faces(const Input& input);

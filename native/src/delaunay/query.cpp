@@ -1,9 +1,13 @@
 // Queries on a finished triangulation: nearest input point by walking (delaunay_find,
-// DelaunayLocator) and Voronoi cells clipped to a rectangle (delaunay_voronoi).
+// DelaunayLocator), point location with barycentric coordinates (delaunay_locate) and Voronoi cells
+// clipped to a rectangle (delaunay_voronoi).
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "delaunay_internal.hpp"
+#include "hull/parallel.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/predicates.hpp"
 
@@ -111,6 +115,109 @@ std::uint32_t start_point(const Delaunay& d, std::int64_t start) {
     return d.hull.front();
 }
 
+/// Triangle location by a visibility walk over the (clockwise, y up) triangles, on coordinates
+/// scaled by 2^exponent (exact).
+class TriangleWalker {
+public:
+    TriangleWalker(PointSpan2 p, const Delaunay& d, int exponent) : p_(p), d_(d), scale_(std::ldexp(1.0, exponent)) {}
+
+    /// orient2d of triangle t's edge k (corner k to corner k + 1) and q: > 0 q is beyond the edge
+    /// (outside the triangle's side), 0 on its line.
+    int side(std::size_t t, int k, const double* q) const {
+        const double* a = p_[d_.triangles[3 * t + k]];
+        const double* b = p_[d_.triangles[3 * t + (k + 1) % 3]];
+        return orient2d(a[0] * scale_, a[1] * scale_, b[0] * scale_, b[1] * scale_, q[0], q[1]);
+    }
+
+    /// The triangle holding q (the lowest index of those holding it), or -1 outside the hull;
+    /// `*last` is where the walk ended. The first edge tried rotates pseudo-randomly, which makes
+    /// the walk end on any triangulation.
+    std::int32_t find(const double* q, std::int32_t start, std::int32_t* last) {
+        std::size_t t = static_cast<std::size_t>(start);
+        std::int32_t entered = -1;  // the half-edge we came in by: q is not beyond it
+        for (;;) {
+            random_ ^= random_ << 13, random_ ^= random_ >> 17, random_ ^= random_ << 5;
+            const int first = static_cast<int>(random_ % 3u);
+            int exit = -1;
+            for (int i = 0; i < 3 && exit < 0; ++i) {
+                const int k = (first + i) % 3;
+                if (static_cast<std::int32_t>(3 * t + k) != entered && side(t, k, q) > 0) exit = k;
+            }
+            *last = static_cast<std::int32_t>(t);
+            if (exit < 0) return lowest_holding(static_cast<std::int32_t>(t), q);
+            const std::int32_t across = d_.halfedges[3 * t + static_cast<std::size_t>(exit)];
+            if (across < 0) return -1;  // beyond a hull edge: outside the (convex) hull
+            entered = across;
+            t = static_cast<std::size_t>(across) / 3;
+        }
+    }
+
+    /// Of the triangles holding q, t among them, the lowest index: q on an edge is held by the
+    /// triangle across it too, and a search across such edges meets every triangle around the
+    /// edge or vertex that holds q.
+    std::int32_t lowest_holding(std::int32_t t, const double* q) {
+        seen_.assign(1, t);
+        std::int32_t best = t;
+        for (std::size_t i = 0; i < seen_.size(); ++i) {
+            const std::size_t u = static_cast<std::size_t>(seen_[i]);
+            best = std::min(best, seen_[i]);
+            for (int k = 0; k < 3; ++k) {
+                if (side(u, k, q) != 0) continue;
+                const std::int32_t across = d_.halfedges[3 * u + static_cast<std::size_t>(k)];
+                if (across < 0) continue;
+                const std::int32_t v = across / 3;
+                if (std::find(seen_.begin(), seen_.end(), v) != seen_.end()) continue;
+                bool holds = true;
+                for (int j = 0; j < 3 && holds; ++j) holds = side(static_cast<std::size_t>(v), j, q) <= 0;
+                if (holds) seen_.push_back(v);
+            }
+        }
+        return best;
+    }
+
+    /// Barycentric coordinates of q in triangle t (rounded; exactly 0 for a corner whose opposite
+    /// edge holds q, exactly 1 at a corner: the same products with q in the corner's place).
+    void barycentric(std::int32_t t, const double* q, double* out) const {
+        double w[3][2];
+        for (int i = 0; i < 3; ++i) {
+            const double* c = p_[d_.triangles[3 * static_cast<std::size_t>(t) + i]];
+            w[i][0] = c[0] * scale_, w[i][1] = c[1] * scale_;
+        }
+        const double whole = area2(w[0], w[1], w[2]);
+        for (int k = 0; k < 3; ++k) {
+            // Corner k's weight is the area opposite it with q in its place; the edge opposite
+            // corner k runs from corner k + 1 to k + 2.
+            if (side(static_cast<std::size_t>(t), (k + 1) % 3, q) == 0) {
+                out[k] = 0.0;
+                continue;
+            }
+            const double* r[3] = {w[0], w[1], w[2]};
+            r[k] = q;
+            out[k] = area2(r[0], r[1], r[2]) / whole;
+        }
+    }
+
+private:
+    static double area2(const double* a, const double* b, const double* c) {
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+
+    PointSpan2 p_;
+    const Delaunay& d_;
+    double scale_;
+    std::vector<std::int32_t> seen_;
+    std::uint32_t random_ = 0x2545f491u;
+};
+
+DelaunayQueries locate_failure(std::string message, std::int64_t query) {
+    DelaunayQueries out;
+    out.error = std::move(message);
+    out.error_query = query;
+    return out;
+}
+
+constexpr std::size_t kLocateChunk = 4096;  ///< queries per task on the threads
+
 }  // namespace
 
 DelaunayLocator::DelaunayLocator(PointSpan2 points, const Delaunay& triangulation)
@@ -130,6 +237,89 @@ std::int64_t delaunay_find(PointSpan2 points, const Delaunay& triangulation, dou
                            std::uint32_t start) {
     DelaunayLocator locator(points, triangulation);
     return locator.find(x, y, start);
+}
+
+DelaunayQueries delaunay_locate(PointSpan2 p, const Delaunay& d, PointSpan2 queries, const DelaunayQueryOptions& options) {
+    if (!d.ok()) return locate_failure("the triangulation failed: " + d.error, -1);
+    const std::size_t n = p.count, m = queries.count;
+    if (d.representative.size() != n) {
+        return locate_failure("the triangulation is of " + std::to_string(d.representative.size()) +
+                                  " points, not of these " + std::to_string(n),
+                              -1);
+    }
+    const int exponent = scale_exponent(p);
+    const double scale = std::ldexp(1.0, exponent);
+    // Nearest points compare squared distances (incircle's range); location needs orient2d's only.
+    const double top = options.nearest ? kIncircleMaxMagnitude : kPredicateMaxMagnitude;
+    const double bottom = options.nearest ? kIncircleMinMagnitude : kPredicateMinMagnitude;
+    std::vector<double> scaled(2 * m);
+    double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    double hi[2] = {-lo[0], -lo[1]};
+    for (std::size_t i = 0; i < m; ++i) {
+        for (int k = 0; k < 2; ++k) {
+            const double v = queries[i][k], s = v * scale, magnitude = std::fabs(s);
+            if (!(std::fabs(v) <= std::numeric_limits<double>::max())) {
+                return locate_failure("query " + std::to_string(i) + " has a non-finite " + "xy"[k] + " coordinate (" +
+                                          (std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf") + ")",
+                                      static_cast<std::int64_t>(i));
+            }
+            if (magnitude != 0.0 && (magnitude > top || magnitude < bottom)) {
+                return locate_failure("query " + std::to_string(i) + ": its " + "xy"[k] +
+                                          " coordinate is too far from the points' scale to be decided exactly",
+                                      static_cast<std::int64_t>(i));
+            }
+            scaled[2 * i + k] = s;
+            lo[k] = std::min(lo[k], s), hi[k] = std::max(hi[k], s);
+        }
+    }
+    DelaunayQueries out;
+    out.triangle.assign(m, -1);
+    if (options.barycentric) out.barycentric.assign(3 * m, std::numeric_limits<double>::quiet_NaN());
+    if (options.nearest) out.nearest.assign(m, -1);
+    const bool planar = d.dimension == 2 && !d.triangles.empty();
+    const bool points = options.nearest && !d.hull.empty();
+    if (m == 0 || (!planar && !points)) return out;
+    std::vector<std::int32_t> outgoing;
+    if (points) outgoing = outgoing_edges(n, d);
+
+    // Queries along a Hilbert curve over their bounding box, so that consecutive walks are short.
+    std::vector<std::uint64_t> order(m);
+    detail::parallel_for(options.threads, (m + kLocateChunk - 1) / kLocateChunk, [&](std::size_t chunk) {
+        const double sx = hi[0] > lo[0] ? 65535.0 / (hi[0] - lo[0]) : 0.0;
+        const double sy = hi[1] > lo[1] ? 65535.0 / (hi[1] - lo[1]) : 0.0;
+        for (std::size_t i = chunk * kLocateChunk; i < std::min(m, (chunk + 1) * kLocateChunk); ++i) {
+            // Clamped, and NaN (an infinite scale on a tiny box) sent to 0: the order only affects speed.
+            double fx = (scaled[2 * i] - lo[0]) * sx, fy = (scaled[2 * i + 1] - lo[1]) * sy;
+            fx = fx > 0.0 ? std::min(fx, 65535.0) : 0.0;
+            fy = fy > 0.0 ? std::min(fy, 65535.0) : 0.0;
+            const std::uint32_t key = delaunay_detail::hilbert_key(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
+            order[i] = std::uint64_t{key} << 32 | i;
+        }
+    });
+    std::sort(order.begin(), order.end());
+
+    detail::parallel_for(options.threads, (m + kLocateChunk - 1) / kLocateChunk, [&](std::size_t chunk) {
+        TriangleWalker walker(p, d, exponent);
+        std::int32_t start = 0, last = 0;
+        std::uint32_t from = d.hull.empty() ? 0 : d.hull.front();
+        for (std::size_t k = chunk * kLocateChunk; k < std::min(m, (chunk + 1) * kLocateChunk); ++k) {
+            const std::size_t i = static_cast<std::uint32_t>(order[k]);
+            const double* q = &scaled[2 * i];
+            if (planar) {
+                const std::int32_t t = walker.find(q, start, &last);
+                start = t >= 0 ? t : last;
+                out.triangle[i] = t;
+                if (options.barycentric && t >= 0) walker.barycentric(t, q, &out.barycentric[3 * i]);
+                from = d.triangles[3 * static_cast<std::size_t>(start)];
+            }
+            if (points) {
+                const std::int64_t near = walk_to_nearest(p, d, outgoing, from, queries[i][0], queries[i][1], exponent);
+                out.nearest[i] = static_cast<std::int32_t>(near);
+                if (!planar) from = static_cast<std::uint32_t>(near);
+            }
+        }
+    });
+    return out;
 }
 
 VoronoiCells delaunay_voronoi(PointSpan2 p, const Delaunay& d, double xmin, double ymin, double xmax,
