@@ -17,7 +17,7 @@
 #   fuzz_hull      hull() on bytes read as doubles, checked by verify() and against gift wrapping
 #   fuzz_delaunay  delaunay() on bytes read as doubles or small integers, checked by
 #                  verify_delaunay(), against gift wrapping and merge_cocircular, and by
-#                  nearest-point queries
+#                  nearest-point queries and point location (delaunay_locate)
 #   fuzz_delaunay3 delaunay3() on bytes read as doubles or small integers, checked by
 #                  verify_delaunay3() (ties included), neighbours and hull faces, the reversed input,
 #                  and point location and nearest points at the input points

@@ -1,7 +1,12 @@
-// hullkit.delaunay, find and voronoi: the JS side of native/include/hullkit/delaunay.hpp.
+// hullkit.delaunay, find, locate and voronoi: the JS side of native/include/hullkit/delaunay.hpp.
 // Points go in as a Float64Array x0 y0 x1 y1 ...; every result array is a fresh typed array the
-// caller owns (copied out of the WebAssembly heap), laid out as delaunator's.
-import { HullkitError, checkOptions, copyIn, takeTrace, toFloat64, toUint32 } from './internal.js';
+// caller owns (copied out of the WebAssembly heap), laid out as delaunator's. The queries take the
+// triangulation back: its arrays are checked and copied into the heap, and the core answers from
+// them (nothing is triangulated again).
+import {
+  HullkitError, checkCorners, checkOptions, checkRepresentative, copyIn, flatCoordinates, locateInHeap, locateOptions, takeTrace, toFloat64,
+  toInt32, toUint32,
+} from './internal.js';
 
 /** The algorithm names `delaunay` accepts, the default first. */
 export const DELAUNAY_ALGORITHMS = ['incremental', 'giftwrap'];
@@ -48,34 +53,16 @@ export function delaunay(core, xy, options = {}) {
 }
 
 /**
- * Checks a triangulation a caller hands back (from `delaunay`, possibly edited or rebuilt) against
- * `count` points, so that no index sends the C++ walk outside its arrays. O(n); returns the arrays
- * as typed arrays.
+ * Checks a triangulation a caller hands back (from `delaunay`, possibly edited or rebuilt, or a
+ * delaunator object) against `count` points, so that no index sends the C++ walks outside their
+ * arrays or round a ring of triangles forever: indices in range, duplicates never used, three
+ * distinct corners per triangle, and each half-edge paired with its reverse. O(n); returns the
+ * arrays as typed arrays. The geometry is not checked: answers for a triangulation of other points
+ * are meaningless.
  */
 function checkTriangulation(triangulation, count, where) {
-  if (triangulation === null || typeof triangulation !== 'object') {
+  if (triangulation === null || typeof triangulation !== 'object' || ArrayBuffer.isView(triangulation)) {
     throw new TypeError(`${where}: the triangulation must be the object delaunay() returned`);
-  }
-  const triangles = toUint32(triangulation.triangles ?? [], `${where}: triangles`);
-  const hull = toUint32(triangulation.hull ?? [], `${where}: hull`);
-  let halfedges = triangulation.halfedges ?? [];
-  if (!(halfedges instanceof Int32Array)) {
-    if (typeof halfedges.length !== 'number') throw new TypeError(`${where}: halfedges must be an Int32Array`);
-    halfedges = Int32Array.from(halfedges);
-  }
-  if (triangles.length % 3 !== 0) {
-    throw new HullkitError(`${where}: ${triangles.length} triangle indices is not a whole number of triangles`);
-  }
-  if (halfedges.length !== triangles.length) {
-    throw new HullkitError(`${where}: ${halfedges.length} halfedges for ${triangles.length} triangle indices`);
-  }
-  for (let i = 0; i < triangles.length; i++) {
-    if (triangles[i] >= count) throw new HullkitError(`${where}: triangles[${i}] = ${triangles[i]} but there are ${count} points`);
-    const h = halfedges[i];
-    if (h < -1 || h >= halfedges.length) throw new HullkitError(`${where}: halfedges[${i}] = ${h} is out of range`);
-  }
-  for (let i = 0; i < hull.length; i++) {
-    if (hull[i] >= count) throw new HullkitError(`${where}: hull[${i}] = ${hull[i]} but there are ${count} points`);
   }
   let representative;
   if (triangulation.representative === undefined) {
@@ -83,17 +70,40 @@ function checkTriangulation(triangulation, count, where) {
     representative = new Uint32Array(count);
     for (let i = 0; i < count; i++) representative[i] = i;
   } else {
-    representative = toUint32(triangulation.representative, `${where}: representative`);
-    if (representative.length !== count) {
-      throw new HullkitError(`${where}: representative has ${representative.length} entries for ${count} points`);
-    }
-    for (let i = 0; i < count; i++) {
-      if (representative[i] > i) throw new HullkitError(`${where}: representative[${i}] = ${representative[i]} is not a lower index`);
-    }
+    representative = checkRepresentative(triangulation.representative, count, where);
   }
+  const triangles = checkCorners(toUint32(triangulation.triangles ?? [], `${where}: triangles`), representative, 'triangles', where);
+  const hull = checkCorners(toUint32(triangulation.hull ?? [], `${where}: hull`), representative, 'hull', where);
+  const halfedges = toInt32(triangulation.halfedges ?? [], `${where}: halfedges`);
+  if (triangles.length % 3 !== 0) {
+    throw new HullkitError(`${where}: ${triangles.length} triangle indices is not a whole number of triangles`);
+  }
+  if (halfedges.length !== triangles.length) {
+    throw new HullkitError(`${where}: ${halfedges.length} halfedges for ${triangles.length} triangle indices`);
+  }
+  checkHalfedges(triangles, halfedges, where);
   const dimension = triangulation.dimension ?? (triangles.length ? 2 : 1);
   if (![2, 1, 0, -1].includes(dimension)) throw new HullkitError(`${where}: dimension ${dimension} is not one of 2, 1, 0, -1`);
   return { dimension, triangles, halfedges, hull, representative };
+}
+
+const next = (e) => (e % 3 === 2 ? e - 2 : e + 1);
+
+/** Each triangle has three distinct corners; each half-edge's opposite runs the same edge back and names it in return. */
+function checkHalfedges(triangles, halfedges, where) {
+  for (let e = 0; e < triangles.length; e += 3) {
+    const a = triangles[e], b = triangles[e + 1], c = triangles[e + 2];
+    if (a === b || b === c || a === c) throw new HullkitError(`${where}: triangle ${e / 3} (${a} ${b} ${c}) repeats a corner`);
+  }
+  for (let e = 0; e < halfedges.length; e++) {
+    const h = halfedges[e];
+    if (h === -1) continue;
+    if (h < -1 || h >= halfedges.length || h === e) throw new HullkitError(`${where}: halfedges[${e}] = ${h} is out of range`);
+    if (halfedges[h] !== e || triangles[h] !== triangles[next(e)] || triangles[next(h)] !== triangles[e]) {
+      throw new HullkitError(`${where}: halfedges[${e}] = ${h}, but half-edges ${e} (${triangles[e]} → ${triangles[next(e)]}) and ${h} ` +
+        'are not one edge run both ways, each naming the other');
+    }
+  }
 }
 
 /**
@@ -130,6 +140,20 @@ export function delaunayFind(core, xy, triangulation, x, y, start = 0) {
     throw new HullkitError(`find: start must be a point index from 0 to ${count - 1}, got ${String(start)}`);
   }
   return withTriangulationInHeap(core, points, triangulation, 'find', (...heap) => core.delaunayFindFromHeap(...heap, x, y, start));
+}
+
+/**
+ * Locates each query point (x y per query) in the triangulation of `xy` (see hullkit.d.ts):
+ * locate3's counterpart in the plane.
+ * @param core the loaded WebAssembly module
+ */
+export function delaunayLocate(core, xy, triangulation, queries, options = {}) {
+  const where = 'locate';
+  const points = toFloat64(xy, where, 2);
+  const at = flatCoordinates(queries, where, 2, 'queries');
+  const flags = locateOptions(options, where);
+  return locateInHeap(core, { where, cell: 'triangle', dimension: 2, queries: at, flags },
+    (run) => withTriangulationInHeap(core, points, triangulation, where, run), (...args) => core.delaunayLocateFromHeap(...args));
 }
 
 /** Voronoi cells clipped to bounds [xmin, ymin, xmax, ymax] (see hullkit.d.ts). */

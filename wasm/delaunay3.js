@@ -3,32 +3,15 @@
 // result array is a fresh typed array the caller owns (copied out of the WebAssembly heap after the
 // call). The queries take the object delaunay3() returned back: its arrays are checked and copied
 // into the heap, and the core answers from them (nothing is tetrahedralized again).
-import { HullkitError, checkOptions, copyIn, toFloat64, toUint32 } from './internal.js';
+import {
+  HullkitError, checkCorners, checkOptions, checkRepresentative, copyIn, flatCoordinates, locateInHeap, locateOptions, toInt32, toUint32,
+} from './internal.js';
 
 const DELAUNAY3_OPTIONS = ['progress'];
 const VERIFY_OPTIONS = ['perturbed'];
-const LOCATE_OPTIONS = ['barycentric', 'nearest'];
 
-/**
- * The points as a Float64Array (see toFloat64), refusing a plain array whose entries are not
- * numbers: Float64Array.from would turn [x, y, z] or {x, y, z} entries into NaN, and the core would
- * then blame "point 0" for a non-finite coordinate instead of the layout.
- */
-function points3(xyz, where) {
-  if (Array.isArray(xyz)) {
-    for (let i = 0; i < xyz.length; i++) {
-      const v = xyz[i];
-      if (typeof v === 'number') continue;
-      const got = Array.isArray(v) || ArrayBuffer.isView(v)
-        ? 'an array of arrays — flatten it (xyz.flat())'
-        : v !== null && typeof v === 'object'
-          ? 'an array of objects — flatten it (points.flatMap((p) => [p.x, p.y, p.z]))'
-          : `entry ${i} is ${v === null ? 'null' : typeof v} (${String(v)})`;
-      throw new TypeError(`${where}: xyz must be a Float64Array or an array of numbers (x y z per point); got ${got}`);
-    }
-  }
-  return toFloat64(xyz, where, 3);
-}
+/** The points as a Float64Array, x y z per point (see flatCoordinates: a flat layout only). */
+const points3 = (xyz, where) => flatCoordinates(xyz, where, 3);
 
 /**
  * The caller's progress callback made safe to call from C++: its first exception is kept (and
@@ -111,15 +94,6 @@ export function verifyDelaunay3(core, xyz, tetrahedra, options = {}) {
 
 // ---------------------------------------------------------------- queries on a tetrahedralization
 
-/** A typed array of `Type` from `values` (used as it is when it already is one), or a TypeError. */
-function typed(values, Type, where) {
-  if (values instanceof Type) return values;
-  if (values == null || typeof values.length !== 'number' || typeof values === 'string') {
-    throw new TypeError(`${where} must be a ${Type.name} or an array of integers`);
-  }
-  return Type.from(values);
-}
-
 /**
  * The arrays of `triangulation` (what delaunay3() returned for `count` points) checked so that no
  * index sends the core outside its arrays or round a ring of faces forever: indices in range,
@@ -135,27 +109,13 @@ function checkTetrahedralization(triangulation, count, where) {
   if (![3, 2, 1, 0, -1].includes(dimension)) {
     throw new HullkitError(`${where}: dimension ${String(dimension)} is not one of 3, 2, 1, 0, -1 (pass the object delaunay3() returned)`);
   }
-  const representative = toUint32(triangulation.representative ?? [], `${where}: representative`);
-  if (representative.length !== count) {
-    throw new HullkitError(`${where}: representative has ${representative.length} entries for ${count} points (the triangulation is of other points)`);
-  }
-  for (let i = 0; i < count; i++) {
-    const r = representative[i];
-    if (r > i || representative[r] !== r) throw new HullkitError(`${where}: representative[${i}] = ${r} is not a lower point that stands for itself`);
-  }
+  const representative = checkRepresentative(triangulation.representative ?? [], count, where);
   const empty = new Uint32Array(0);
   const out = { dimension, tetrahedra: empty, neighbors: new Int32Array(0), triangles: empty, vertices: empty, representative };
-  const corners = (array, name) => {
-    for (let i = 0; i < array.length; i++) {
-      const v = array[i];
-      if (v >= count) throw new HullkitError(`${where}: ${name}[${i}] = ${v} but there are ${count} points`);
-      if (representative[v] !== v) throw new HullkitError(`${where}: ${name}[${i}] = ${v} is a duplicate of point ${representative[v]}`);
-    }
-    return array;
-  };
+  const corners = (array, name) => checkCorners(array, representative, name, where);
   if (dimension === 3) {
     const tetrahedra = corners(toUint32(triangulation.tetrahedra ?? [], `${where}: tetrahedra`), 'tetrahedra');
-    const neighbors = typed(triangulation.neighbors ?? [], Int32Array, `${where}: neighbors`);
+    const neighbors = toInt32(triangulation.neighbors ?? [], `${where}: neighbors`);
     if (tetrahedra.length % 4 !== 0) throw new HullkitError(`${where}: ${tetrahedra.length} tetrahedron indices is not a whole number of tetrahedra`);
     if (neighbors.length !== tetrahedra.length) throw new HullkitError(`${where}: ${neighbors.length} neighbours for ${tetrahedra.length / 4} tetrahedra (4 each)`);
     checkNeighbours(tetrahedra, neighbors, where);
@@ -163,7 +123,7 @@ function checkTetrahedralization(triangulation, count, where) {
   } else if (dimension === 2) {
     const triangles = corners(toUint32(triangulation.triangles ?? [], `${where}: triangles`), 'triangles');
     if (triangles.length % 3 !== 0) throw new HullkitError(`${where}: ${triangles.length} triangle indices is not a whole number of triangles`);
-    const neighbors = typed(triangulation.neighbors ?? [], Int32Array, `${where}: neighbors`);
+    const neighbors = toInt32(triangulation.neighbors ?? [], `${where}: neighbors`);
     if (neighbors.length !== triangles.length) throw new HullkitError(`${where}: ${neighbors.length} neighbours for ${triangles.length / 3} triangles (3 each)`);
     for (let i = 0; i < neighbors.length; i++) {
       if (neighbors[i] < -1 || neighbors[i] >= triangles.length / 3) throw new HullkitError(`${where}: neighbors[${i}] = ${neighbors[i]} is out of range`);
@@ -233,12 +193,6 @@ function withTetrahedralizationInHeap(core, points, t, where, call) {
   }
 }
 
-function flag(options, name, where) {
-  const value = options[name] ?? false;
-  if (typeof value !== 'boolean') throw new HullkitError(`${where}: ${name} must be true or false, got ${String(value)}`);
-  return value;
-}
-
 /**
  * Locates each query point (x y z per query) in the tetrahedralization of `xyz` (see hullkit.d.ts).
  * @param core the loaded WebAssembly module
@@ -246,28 +200,11 @@ function flag(options, name, where) {
 export function locate3(core, xyz, triangulation, queries, options = {}) {
   const where = 'locate3';
   const points = points3(xyz, where);
-  const at = points3(queries, `${where}: queries`);
-  const checked = checkOptions(options, LOCATE_OPTIONS, where);
-  const barycentric = flag(checked, 'barycentric', where);
-  const nearest = flag(checked, 'nearest', where);
+  const at = flatCoordinates(queries, where, 3, 'queries');
+  const flags = locateOptions(options, where);
   const t = checkTetrahedralization(triangulation, points.length / 3, where);
-  const result = withTetrahedralizationInHeap(core, points, t, where, (address, count, heap) => {
-    const q = copyIn(core, at, where);
-    try {
-      return core.delaunay3LocateFromHeap(address, count, heap, q, at.length / 3, barycentric, nearest);
-    } finally {
-      core._free(q);
-    }
-  });
-  try {
-    if (result.error) throw new HullkitError(`${where}: ${result.error}`, { queryIndex: result.errorQuery() });
-    const out = { tetrahedron: result.tetrahedronView().slice() };
-    if (barycentric) out.barycentric = result.barycentricView().slice();
-    if (nearest) out.nearest = result.nearestView().slice();
-    return out;
-  } finally {
-    result.delete();
-  }
+  return locateInHeap(core, { where, cell: 'tetrahedron', dimension: 3, queries: at, flags },
+    (run) => withTetrahedralizationInHeap(core, points, t, where, run), (...args) => core.delaunay3LocateFromHeap(...args));
 }
 
 /**

@@ -1,4 +1,5 @@
-// embind registrations for Delaunay triangulation only: the friendly API lives in delaunay.js.
+// embind registrations for Delaunay triangulation and its queries (nearest point, point location,
+// Voronoi cells): the friendly API lives in delaunay.js. No geometry here.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -32,7 +33,7 @@ hullkit::Delaunay delaunay_from_heap(std::uintptr_t xy, std::uint32_t count, con
 
 /// A Delaunay rebuilt from the arrays a JS caller holds (triangles, halfedges, hull and the
 /// `count` representatives in malloc'ed blocks, already checked by the JS layer to be in range),
-/// for find and voronoi.
+/// for find, locate and voronoi.
 hullkit::Delaunay triangulation_from_heap(std::uint32_t count, int dimension, std::uintptr_t triangles,
                                           std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull,
                                           std::uint32_t hull_count, std::uintptr_t representative) {
@@ -65,6 +66,22 @@ hullkit::VoronoiCells voronoi_from_heap(std::uintptr_t xy, std::uint32_t count, 
     return hullkit::delaunay_voronoi(hullkit::PointSpan2(doubles_at(xy), count), triangulation, xmin, ymin, xmax, ymax);
 }
 
+/// Point location (delaunay_locate) for `query_count` x y pairs in a malloc'ed block at `queries`;
+/// the triangulation as find's. The flags were checked by the JS layer.
+hullkit::DelaunayQueries locate_from_heap(std::uintptr_t xy, std::uint32_t count, int dimension, std::uintptr_t triangles,
+                                          std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull,
+                                          std::uint32_t hull_count, std::uintptr_t representative, std::uintptr_t queries,
+                                          std::uint32_t query_count, bool barycentric, bool nearest) {
+    const hullkit::Delaunay triangulation = triangulation_from_heap(count, dimension, triangles, corner_count, halfedges,
+                                                                    hull, hull_count, representative);
+    hullkit::DelaunayQueryOptions options;
+    options.barycentric = barycentric;
+    options.nearest = nearest;
+    options.threads = 1;  // no threads in the wasm build; the answers are the same
+    return hullkit::delaunay_locate(hullkit::PointSpan2(doubles_at(xy), count), triangulation,
+                                    hullkit::PointSpan2(doubles_at(queries), query_count), options);
+}
+
 // Views into the results' own vectors; the JS layer copies them out before deleting the result.
 using hullkit_wasm::view_of;
 val triangles_view(const hullkit::Delaunay& d) { return view_of(d.triangles); }
@@ -78,6 +95,10 @@ double delaunay_error_point(const hullkit::Delaunay& d) { return static_cast<dou
 double duplicate_count(const hullkit::Delaunay& d) { return static_cast<double>(d.duplicate_count); }
 val cell_offsets_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_offsets); }
 val cell_xy_view(const hullkit::VoronoiCells& cells) { return view_of(cells.cell_xy); }
+val triangle_view(const hullkit::DelaunayQueries& q) { return view_of(q.triangle); }
+val barycentric_view(const hullkit::DelaunayQueries& q) { return view_of(q.barycentric); }
+val nearest_view(const hullkit::DelaunayQueries& q) { return view_of(q.nearest); }
+double error_query(const hullkit::DelaunayQueries& q) { return static_cast<double>(q.error_query); }
 
 // The recorded gift wrap on the lifted points (class GiftwrapTrace is registered in bindings.cpp).
 hullkit::GiftwrapTrace delaunay_giftwrap_trace_from_heap(std::uintptr_t xy, std::uint32_t count) {
@@ -105,5 +126,12 @@ EMSCRIPTEN_BINDINGS(hullkit_delaunay) {
         .function("cellXYView", &cell_xy_view);
     emscripten::function("delaunayFromHeap", &delaunay_from_heap);
     emscripten::function("delaunayFindFromHeap", &find_from_heap);
+    emscripten::class_<hullkit::DelaunayQueries>("DelaunayQueries")
+        .property("error", &hullkit::DelaunayQueries::error)
+        .function("errorQuery", &error_query)
+        .function("triangleView", &triangle_view)
+        .function("barycentricView", &barycentric_view)
+        .function("nearestView", &nearest_view);
+    emscripten::function("delaunayLocateFromHeap", &locate_from_heap);
     emscripten::function("delaunayVoronoiFromHeap", &voronoi_from_heap);
 }

@@ -222,9 +222,47 @@ export interface Hullkit {
    * `xy` and `triangulation` are copied into the WebAssembly heap on each call (O(n)).
    *
    * @throws {HullkitError} for a non-finite x or y, a `start` that is not a point index, or a
-   *   triangulation whose arrays do not fit `xy` (an index out of range, mismatched lengths).
+   *   triangulation whose arrays do not fit `xy` (an index out of range, mismatched lengths,
+   *   half-edges that do not pair up).
    */
   find(xy: Points2, triangulation: DelaunayTriangulation, x: number, y: number, start?: number): number;
+  /**
+   * Exact point location in a triangulation: for each query point (x y per query), the triangle of
+   * `triangulation` holding it (an index into `triangles` / 3), or -1 outside the convex hull; with
+   * `{barycentric: true}` its barycentric coordinates there, with `{nearest: true}` the nearest
+   * input point. A point on an edge or a vertex is held by every triangle around it: the one with
+   * the lowest index is reported, so the answer depends only on the point. Every decision is made
+   * by exact predicates (orient2d, and an exact comparison of squared distances), never by a
+   * rounded area. Queries are sorted along a Hilbert curve and each walk starts where the previous
+   * one ended, so many queries cost little more than one walk each: pass them in one call.
+   *
+   * `triangulation` is what {@link Hullkit.delaunay} returned for the same `xy` (or a delaunator
+   * object, as {@link Hullkit.find} takes): its arrays go back into the core, which answers from
+   * them (nothing is triangulated again). They are checked for consistency (indices in range,
+   * half-edges paired with their reverse), not for geometry: answers for a triangulation of other
+   * points are meaningless. Collinear points have no triangles (`triangle` is all -1) but a
+   * nearest point. The 2D counterpart of {@link Hullkit.locate3}.
+   *
+   * @example
+   * const t = hullkit.delaunay(xy);
+   * const { triangle, barycentric } = hullkit.locate(xy, t, [0.1, 0.2], { barycentric: true });
+   * // triangle[0] >= 0: the point 0.1 0.2 is Σ barycentric[k] · corner k, the corners being
+   * // t.triangles[3 * triangle[0] + k]; exactly 1 and two 0s when it is one of the corners
+   *
+   * @throws {HullkitError} for a non-finite query coordinate or one too far from the points' scale
+   *   to be decided exactly ("locate: query 1 has a non-finite y coordinate (nan)", `queryIndex`
+   *   1), an odd number of query coordinates, a triangulation whose arrays do not fit the points
+   *   (the message says which entry; a `representative` of another length: a triangulation of
+   *   other points), an unknown option or a non-boolean flag.
+   * @throws {TypeError} for queries that are not a Float64Array or an array of numbers (an array of
+   *   [x, y] points is refused: flatten it), or a triangulation that is not an object.
+   */
+  locate(
+    xy: Points2,
+    triangulation: DelaunayTriangulation,
+    queries: Float64Array | ArrayLike<number>,
+    options?: LocateOptions,
+  ): LocateResult;
   /**
    * The Voronoi cells of the points, clipped to the rectangle `bounds` = [xmin, ymin, xmax, ymax],
    * built from the circumcentres of `triangulation`'s triangles.
@@ -466,8 +504,8 @@ export interface DelaunayOptions {
 }
 
 /**
- * What {@link Hullkit.find} and {@link Hullkit.voronoi} need of a triangulation: a
- * {@link DelaunayResult}, or a delaunator object (then no duplicates are assumed).
+ * What {@link Hullkit.find}, {@link Hullkit.locate} and {@link Hullkit.voronoi} need of a
+ * triangulation: a {@link DelaunayResult}, or a delaunator object (then no duplicates are assumed).
  */
 export interface DelaunayTriangulation {
   triangles: Uint32Array | ArrayLike<number>;
@@ -511,6 +549,33 @@ export interface DelaunayResult {
    */
   polygonOffsets?: Uint32Array;
   polygonVertices?: Uint32Array;
+}
+
+export interface LocateOptions {
+  /** Also the barycentric coordinates of each query in its triangle (default false). */
+  barycentric?: boolean;
+  /** Also the nearest input point to each query (default false). */
+  nearest?: boolean;
+}
+
+export interface LocateResult {
+  /**
+   * Per query: the triangle holding it, an index into `triangles` / 3 (the lowest index when it
+   * lies on a shared edge or vertex), or -1 outside the convex hull (and always -1 when the points
+   * do not span the plane).
+   */
+  triangle: Int32Array;
+  /**
+   * With `barycentric`: 3 per query, the weights of the triangle's corners (in its corner order)
+   * that give the query point: they sum to 1 up to rounding, are exactly 0 for a corner whose
+   * opposite edge holds the point and exactly 1 at a corner; NaN outside the hull.
+   */
+  barycentric?: Float64Array;
+  /**
+   * With `nearest`: per query, the nearest input point (exact distances; ties go to the lowest
+   * index, so never a duplicate); -1 only when there are no points.
+   */
+  nearest?: Int32Array;
 }
 
 export interface VoronoiCells {
@@ -876,7 +941,7 @@ export class HullkitError extends Error {
   name: 'HullkitError';
   /** Index of the point to blame, when there is one. */
   pointIndex?: number;
-  /** locate3: index of the query to blame (a non-finite or out-of-range coordinate). */
+  /** locate and locate3: index of the query to blame (a non-finite or out-of-range coordinate). */
   queryIndex?: number;
   /** readPoints / readPoints2d / readMesh: the 1-based line the reader names, when it names one. */
   line?: number;

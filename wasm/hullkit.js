@@ -2,7 +2,7 @@
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
-import { delaunay, delaunayFind, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
+import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
 import { checkRoute, RouteChecker } from './route.js';
 
@@ -41,6 +41,7 @@ export default async function createHullkit() {
     writeGlb: (xyz, result) => writeGlb(core, xyz, result),
     delaunay: (xy, options) => delaunay(core, xy, options),
     find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
+    locate: (xy, triangulation, queries, options) => delaunayLocate(core, xy, triangulation, queries, options),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
     delaunay3: (xyz, options) => delaunay3(core, xyz, options),

@@ -32,6 +32,15 @@ export function toUint32(values, where) {
   return Uint32Array.from(values);
 }
 
+/** An Int32Array (used as it is) from an array-like of integers, or a TypeError. */
+export function toInt32(values, where) {
+  if (values instanceof Int32Array) return values;
+  if (values == null || typeof values.length !== 'number' || typeof values === 'string') {
+    throw new TypeError(`${where} must be an Int32Array or an array of integers`);
+  }
+  return Int32Array.from(values);
+}
+
 /** A value as it may appear in a message: its type, and short values themselves. */
 function described(value) {
   if (value === null) return 'null';
@@ -118,6 +127,31 @@ function flattenPoints(points, where, axes, what) {
   return out;
 }
 
+/**
+ * Flat coordinates, `dimension` per point, as a Float64Array (see toFloat64), refusing a plain
+ * array whose entries are not numbers: Float64Array.from would turn [x, y, z] or {x, y, z} entries
+ * into NaN, and the core would then blame "point 0" (or "query 0") for a non-finite coordinate
+ * instead of the layout. `what` is 'points' (the argument named xyz or xy) or 'queries'.
+ */
+export function flatCoordinates(values, where, dimension, what = 'points') {
+  const axes = dimension === 2 ? ['x', 'y'] : ['x', 'y', 'z'];
+  const name = what === 'queries' ? 'queries' : axes.join('');
+  if (Array.isArray(values)) {
+    for (let i = 0; i < values.length; i++) {
+      const v = values[i];
+      if (typeof v === 'number') continue;
+      const got = Array.isArray(v) || ArrayBuffer.isView(v)
+        ? `an array of arrays — flatten it (${name}.flat())`
+        : v !== null && typeof v === 'object'
+          ? `an array of objects — flatten it (points.flatMap((p) => [${axes.map((a) => `p.${a}`).join(', ')}]))`
+          : `entry ${i} is ${v === null ? 'null' : typeof v} (${String(v)})`;
+      throw new TypeError(`${where}: ${name} must be a Float64Array or an array of numbers ` +
+        `(${axes.join(' ')} per ${what === 'queries' ? 'query' : 'point'}); got ${got}`);
+    }
+  }
+  return toFloat64(values, what === 'queries' ? `${where}: queries` : where, dimension);
+}
+
 export function checkOptions(options, known, where) {
   if (options === undefined || options === null) return {};
   if (typeof options !== 'object') throw new TypeError(`${where}: options must be an object`);
@@ -155,5 +189,79 @@ export function takeTrace(trace, kindNames, where) {
     };
   } finally {
     trace.delete();
+  }
+}
+
+// ---------------------------------------------------------------- triangulations handed back
+
+/**
+ * A triangulation's `representative` checked against `count` points: one entry per point, each
+ * the point itself or a lower one that stands for itself. Another length means a triangulation of
+ * other points.
+ */
+export function checkRepresentative(values, count, where) {
+  const representative = toUint32(values, `${where}: representative`);
+  if (representative.length !== count) {
+    throw new HullkitError(`${where}: representative has ${representative.length} entries for ${count} points (the triangulation is of other points)`);
+  }
+  for (let i = 0; i < count; i++) {
+    const r = representative[i];
+    if (r > i || representative[r] !== r) throw new HullkitError(`${where}: representative[${i}] = ${r} is not a lower point that stands for itself`);
+  }
+  return representative;
+}
+
+/** `corners` (point indices, the array called `name`) in range and never a duplicate point. */
+export function checkCorners(corners, representative, name, where) {
+  const count = representative.length;
+  for (let i = 0; i < corners.length; i++) {
+    const v = corners[i];
+    if (v >= count) throw new HullkitError(`${where}: ${name}[${i}] = ${v} but there are ${count} points`);
+    if (representative[v] !== v) throw new HullkitError(`${where}: ${name}[${i}] = ${v} is a duplicate of point ${representative[v]}`);
+  }
+  return corners;
+}
+
+// ---------------------------------------------------------------- point location (locate, locate3)
+
+const LOCATE_OPTIONS = ['barycentric', 'nearest'];
+
+/** The options of locate and locate3: {barycentric, nearest}, each true or false (default false). */
+export function locateOptions(options, where) {
+  const checked = checkOptions(options, LOCATE_OPTIONS, where);
+  const flags = {};
+  for (const name of LOCATE_OPTIONS) {
+    const value = checked[name] ?? false;
+    if (typeof value !== 'boolean') throw new HullkitError(`${where}: ${name} must be true or false, got ${String(value)}`);
+    flags[name] = value;
+  }
+  return flags;
+}
+
+/**
+ * The part locate and locate3 share once their arguments are checked. `inHeap(run)` returns
+ * `run(...heap)` called with the points and the triangulation in the WebAssembly heap (and frees
+ * them after); the queries (a flat Float64Array, `dimension` per query) join them for the core's
+ * `locateFromHeap(...heap, queriesAddress, queryCount, barycentric, nearest)`. Its result is
+ * deleted once taken: an error is thrown as a HullkitError with the query to blame in `queryIndex`;
+ * otherwise the arrays are copied out as {[cell]: Int32Array, barycentric?, nearest?}.
+ */
+export function locateInHeap(core, { where, cell, dimension, queries, flags }, inHeap, locateFromHeap) {
+  const result = inHeap((...heap) => {
+    const address = copyIn(core, queries, where);
+    try {
+      return locateFromHeap(...heap, address, queries.length / dimension, flags.barycentric, flags.nearest);
+    } finally {
+      core._free(address);
+    }
+  });
+  try {
+    if (result.error) throw new HullkitError(`${where}: ${result.error}`, { queryIndex: result.errorQuery() });
+    const out = { [cell]: result[`${cell}View`]().slice() };
+    if (flags.barycentric) out.barycentric = result.barycentricView().slice();
+    if (flags.nearest) out.nearest = result.nearestView().slice();
+    return out;
+  } finally {
+    result.delete();
   }
 }

@@ -1,7 +1,7 @@
 """scipy.interpolate's triangulation interpolators on hullkit's exact point location: switching
 is a change of import.
 
-    from hullkit.interpolate import LinearNDInterpolator, NearestNDInterpolator, griddata
+    from hullkit.interpolate import LinearNDInterpolator, CloughTocher2DInterpolator, griddata
     # instead of: from scipy.interpolate import ...
 
 Signatures, argument forms (points as an (n, ndim) array or a ``hullkit.spatial.Delaunay``;
@@ -26,17 +26,28 @@ What differs, and why:
 * A ``scipy.spatial.Delaunay`` passed instead of points is not reused: its points are
   triangulated again, exactly (the simplices differ from Qhull's only where Qhull's are not
   Delaunay, or on cocircular ties).
-* ``griddata(method="cubic")`` (Clough-Tocher) is not available yet: a clear error says so.
+* ``CloughTocher2DInterpolator`` (and ``griddata(method="cubic")``) builds the same surface as
+  scipy's: cubic Clough-Tocher patches on the gradients that minimise the edges' curvature.
+  In general position the values agree with scipy's to about 1e-14.
+* Repeated points: the triangulation keeps the first of each set of equal points, and its value
+  is used (scipy keeps one too, without saying which).
 
 Objects pickle by their inputs and are rebuilt (the same triangulation: it depends only on the
 points).
 """
+import warnings as _warnings
+
 import numpy as _np
 
-from . import HullkitError, _threads, delaunay, delaunay3
+from . import HullkitError, _threads, _translated, delaunay, delaunay3
 from . import spatial as _spatial
 
-__all__ = ["LinearNDInterpolator", "NearestNDInterpolator", "griddata"]
+__all__ = ["LinearNDInterpolator", "NearestNDInterpolator", "CloughTocher2DInterpolator", "griddata",
+           "estimate_gradients_2d_global", "GradientEstimationWarning"]
+
+
+class GradientEstimationWarning(Warning):
+    """The gradient estimation reached ``maxiter`` sweeps before ``tol`` (as scipy's)."""
 
 
 def _query_points(args, ndim):
@@ -86,25 +97,36 @@ class _Base:
     triangulation, the values, and scipy's call conventions."""
 
     _keep_dtype = False
+    _dimensions = (2, 3)
 
     def __init__(self, points, values, fill_value, rescale, threads):
-        self._inputs = (points, values, fill_value, rescale, threads)
+        # Pickled by its inputs; a triangulation passed in by its points (the same triangulation).
+        given = points.points if isinstance(points, _spatial.Delaunay) else points
+        self._inputs = (given, values, fill_value, rescale, threads)
         if isinstance(points, _spatial.Delaunay):
             tri, array = points, points.points
-            if rescale:
-                raise HullkitError("rescale=True cannot be used with a Delaunay triangulation passed in "
-                                   "(it was made without rescaling); pass the points instead")
+            if rescale:  # scipy's words, which users' code may match
+                raise HullkitError("Rescaling is not supported when passing a Delaunay triangulation as "
+                                   "``points``. (It was made without rescaling: pass its points instead.)")
         else:
             source = points
             if hasattr(points, "simplices") and hasattr(points, "points"):  # scipy's Delaunay
                 source = points.points
+            elif isinstance(points, tuple):  # one array per coordinate, as scipy accepts
+                try:
+                    source = _np.stack(_np.broadcast_arrays(*[_np.asarray(c, dtype=_np.float64) for c in points]), axis=-1)
+                except ValueError as error:
+                    raise HullkitError(f"the points' coordinate arrays do not broadcast together: {error}") from None
+                source = source.reshape(-1, source.shape[-1]) if source.ndim > 1 else source
             try:
                 array = _np.ascontiguousarray(source, dtype=_np.float64)
             except (TypeError, ValueError) as error:
                 raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
-            if array.ndim != 2 or array.shape[1] not in (2, 3):
-                raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}"
-                                   + (" (hullkit interpolates in 2 and 3 dimensions)" if array.ndim == 2 else ""))
+            if array.ndim != 2 or array.shape[1] not in self._dimensions:
+                shapes = " or ".join(f"(n, {k})" for k in self._dimensions)
+                raise HullkitError(f"points must have shape {shapes}, got {array.shape}"
+                                   + (f" ({type(self).__name__} works in {' and '.join(map(str, self._dimensions))} "
+                                      "dimensions)" if array.ndim == 2 else ""))
             tri = None
         self.points = array
         self.ndim = array.shape[1]
@@ -133,7 +155,7 @@ class _Base:
         return self._core
 
     def __reduce__(self):
-        return (_rebuild, (type(self), self._inputs))
+        return (_rebuild, (type(self), self._inputs, getattr(self, "_options", {})))
 
     def __call__(self, *args, **options):
         xi, shape = _query_points(args, self.ndim)
@@ -148,11 +170,11 @@ class _Base:
         return out
 
 
-def _rebuild(cls, inputs):
+def _rebuild(cls, inputs, options):
     points, values, fill_value, rescale, threads = inputs
     if cls is NearestNDInterpolator:
         return cls(points, values, rescale=rescale, threads=threads)
-    return cls(points, values, fill_value=fill_value, rescale=rescale, threads=threads)
+    return cls(points, values, fill_value=fill_value, rescale=rescale, threads=threads, **options)
 
 
 class LinearNDInterpolator(_Base):
@@ -213,9 +235,16 @@ class NearestNDInterpolator(_Base):
 
     _keep_dtype = True
 
+    # cKDTree's construction options: they shape scipy's tree, never its answers, and hullkit has
+    # no tree, so they are accepted and have no effect. (boxsize, a periodic space, would change
+    # the answers: refused.)
+    _tree_options = frozenset({"leafsize", "compact_nodes", "copy_data", "balanced_tree"})
+
     def __init__(self, x, y, rescale=False, tree_options=None, *, threads=0):
-        if tree_options:
-            raise HullkitError(f"tree_options are not used by hullkit (no k-d tree): {sorted(tree_options)}")
+        unknown = sorted(set(tree_options or {}) - self._tree_options)
+        if unknown:
+            raise HullkitError(f"tree_options not supported by hullkit (it has no k-d tree): {unknown}; "
+                               f"{sorted(self._tree_options)} are accepted and change nothing")
         super().__init__(x, y, _np.nan, rescale, threads)
 
     def _evaluate(self, xi, distance_upper_bound=_np.inf, workers=None, **options):
@@ -236,10 +265,173 @@ class NearestNDInterpolator(_Base):
         return out
 
 
+def _gradients(core, values, tol, maxiter):
+    """Gradients (n, k, 2) of (n, k) real or complex values over a 2D hullkit.Delaunay (the real
+    and imaginary parts separately: the estimate is linear in the values)."""
+    complex_values = _np.iscomplexobj(values)
+    columns = _np.ascontiguousarray(_np.concatenate([values.real, values.imag], axis=1) if complex_values else values,
+                                    dtype=_np.float64)
+    if not _np.isfinite(tol) or tol < 0:
+        raise HullkitError(f"tol must be a finite number >= 0, got {tol!r}")
+    if int(maxiter) < 1:
+        raise HullkitError(f"maxiter must be at least 1, got {maxiter!r}")
+    with _translated():
+        grad, sweeps, converged = core._core.gradients(columns, float(tol), int(maxiter))
+    if not converged:
+        _warnings.warn(f"Gradient estimation did not converge in {int(maxiter)} sweeps (tol={tol}); the "
+                       "gradients may be inaccurate", GradientEstimationWarning, stacklevel=3)
+    if complex_values:
+        k = values.shape[1]
+        grad = grad[:, :k] + 1j * grad[:, k:]
+    return grad
+
+
+def estimate_gradients_2d_global(tri, y, maxiter=400, tol=1e-6):
+    """Gradients at the points of a 2D triangulation for a smooth (C1) interpolant of the values
+    ``y`` (shape (npoints, ...), real or complex), as scipy.interpolate's: the gradients that
+    minimise the curvature of the cubics along the Delaunay edges, by sweeps over the points
+    until no gradient moves by more than ``tol`` times the larger of 1 and its largest component
+    (a GradientEstimationWarning after ``maxiter`` sweeps). Exact for linear data up to rounding.
+    ``tri``: a hullkit.spatial.Delaunay (a scipy one is triangulated again from its points).
+    Returns shape ``y.shape + (2,)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hullkit.spatial import Delaunay
+    >>> from hullkit.interpolate import estimate_gradients_2d_global
+    >>> points = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [0.4, 0.6]])
+    >>> g = estimate_gradients_2d_global(Delaunay(points), 3 * points[:, 0] - points[:, 1], tol=1e-12)
+    >>> np.round(g, 9).tolist()[0]
+    [3.0, -1.0]
+    """
+    if not isinstance(tri, _spatial.Delaunay):
+        tri = _spatial.Delaunay(tri.points if hasattr(tri, "points") else tri)
+    if tri.ndim != 2:
+        raise HullkitError(f"estimate_gradients_2d_global needs a 2D triangulation, got {tri.ndim}D points")
+    array = _np.asarray(y)
+    if array.ndim == 0 or array.shape[0] != tri.npoints:
+        raise HullkitError(f"y must have {tri.npoints} rows (one per point), got shape {array.shape}")
+    flat = array.reshape(tri.npoints, -1)
+    if not _np.iscomplexobj(flat):
+        flat = flat.astype(_np.float64)
+    grad = _gradients(tri._triangulation, flat, tol, maxiter)
+    return grad.reshape(array.shape + (2,))
+
+
+class CloughTocher2DInterpolator(_Base):
+    """Piecewise cubic, C1-smooth interpolation in 2D, as scipy.interpolate.CloughTocher2DInterpolator:
+    each triangle of the exact Delaunay triangulation is split at its centroid into three cubic
+    Bezier patches (Clough-Tocher) that meet the values and the gradients ``grad``
+    (estimate_gradients_2d_global, computed at construction; change them before a call to use
+    others). Across an edge inside the hull, the derivative along the line joining the two
+    triangles' centroids varies linearly along the edge (the same line from both sides, so
+    neighbouring patches join smoothly); on a hull edge, the derivative from the edge's midpoint
+    toward the centroid does. Both rules are affine invariant. Exact at the input points and for
+    linear data (up to rounding); ``fill_value`` outside the hull.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hullkit.interpolate import CloughTocher2DInterpolator
+    >>> rng = np.random.default_rng(1)
+    >>> points = np.vstack([[[0, 0], [1, 0], [0, 1], [1, 1]], rng.random((200, 2))])
+    >>> f = CloughTocher2DInterpolator(points, points[:, 0] ** 2 + points[:, 1])
+    >>> bool(abs(f(0.5, 0.5) - 0.75) < 1e-3), float(f(points[7])[0]) == points[7, 0] ** 2 + points[7, 1]
+    (True, True)
+    """
+
+    _dimensions = (2,)
+
+    def __init__(self, points, values, fill_value=_np.nan, tol=1e-6, maxiter=400, rescale=False, *, threads=0):
+        super().__init__(points, values, fill_value, rescale, threads)
+        self._options = {"tol": tol, "maxiter": maxiter}
+        self.tol, self.maxiter = tol, maxiter
+        self.grad = _gradients(self._triangulation(), self.values, tol, maxiter)
+
+    def _evaluate(self, xi):
+        core = self._triangulation()
+        found = core.locate(xi, barycentric=True, nearest=core.dimension < 2, threads=self.threads)
+        out = self._filled(len(xi))
+        if core.dimension < 2:  # no triangles: exact at the input points, fill elsewhere
+            near = found["nearest"]
+            hit = (near >= 0) & _np.all(self._scaled_points[_np.maximum(near, 0)] == xi, axis=1)
+            out[hit] = self.values[near[hit]]
+            return out
+        inside = _np.flatnonzero(found["triangle"] >= 0)
+        t = found["triangle"][inside].astype(_np.int64)
+        out[inside] = _clough_tocher(self._scaled_points, self.values, _np.asarray(self.grad), core, t,
+                                     found["barycentric"][inside])
+        return out
+
+
+def _clough_tocher(points, values, grad, core, t, b):
+    """The Clough-Tocher patches' values at barycentric coordinates ``b`` (q, 3) in triangles
+    ``t`` (the core's corner order), for values (n, k) and gradients (n, k, 2)."""
+    triangles = core.triangles.reshape(-1, 3)
+    corners = triangles[t]
+    across = core.halfedges.reshape(-1, 3)[t]  # edge e runs from corner e to corner e + 1
+    interior = across >= 0
+    P = points[corners]                                  # (q, 3, 2)
+    F = values[corners]                                  # (q, 3, k)
+    G = grad[corners]                                    # (q, 3, k, 2)
+    C = (P[:, 0] + P[:, 1] + P[:, 2]) / 3
+
+    def along(i, vector):  # G_i . vector, (q, k)
+        return G[:, i, :, 0] * vector[:, None, 0] + G[:, i, :, 1] * vector[:, None, 1]
+
+    toward_centre = [F[:, i] + along(i, C - P[:, i]) / 3 for i in range(3)]
+    # Per edge, by the corner m opposite it (from corner i = m + 1 to j = m + 2): its two Bezier
+    # ordinates next to the corners, and the ordinate T[m] off it that makes the cross-edge
+    # derivative linear along the edge.
+    near_i, near_j, T = [], [], []
+    for m in range(3):
+        i, j = (m + 1) % 3, (m + 2) % 3
+        edge = P[:, j] - P[:, i]
+        c_i = F[:, i] + along(i, edge) / 3
+        c_j = F[:, j] - along(j, edge) / 3
+        # The direction across: inside the hull, toward the neighbour's centroid (one line for both
+        # triangles); on the hull, from the edge's midpoint toward the centroid. As a combination
+        # alpha P_i + beta P_j + gamma C with alpha + beta + gamma = 0.
+        a, bb = P[:, i] - C, P[:, j] - C
+        neighbour = points[triangles[_np.maximum(across[:, i], 0) // 3]]
+        d = _np.where(interior[:, i, None], (neighbour[:, 0] + neighbour[:, 1] + neighbour[:, 2]) / 3 - C,
+                      C - (P[:, i] + P[:, j]) / 2)
+        det = a[:, 0] * bb[:, 1] - a[:, 1] * bb[:, 0]
+        alpha = ((d[:, 0] * bb[:, 1] - d[:, 1] * bb[:, 0]) / det)[:, None]
+        beta = ((a[:, 0] * d[:, 1] - a[:, 1] * d[:, 0]) / det)[:, None]
+        gamma = -alpha - beta
+        k0 = alpha * F[:, i] + beta * c_i + gamma * toward_centre[i]
+        k2 = alpha * c_j + beta * F[:, j] + gamma * toward_centre[j]
+        T.append(((k0 + k2) / 2 - alpha * c_i - beta * c_j) / gamma)
+        near_i.append(c_i)
+        near_j.append(c_j)
+    D = [(toward_centre[i] + T[(i + 1) % 3] + T[(i + 2) % 3]) / 3 for i in range(3)]
+    S = (D[0] + D[1] + D[2]) / 3
+    # The sub-triangle (P_i, P_j, C) holding the point lies opposite the corner m of least weight.
+    m = _np.argmin(b, axis=1)
+    rows = _np.arange(len(t))
+    i, j = (m + 1) % 3, (m + 2) % 3
+    u = (b[rows, i] - b[rows, m])[:, None]
+    v = (b[rows, j] - b[rows, m])[:, None]
+    w = (3 * b[rows, m])[:, None]
+
+    def pick(per_corner, index):  # per_corner: three (q, k) arrays; index: (q,) corner per row
+        stacked = _np.stack(per_corner, axis=1)
+        return stacked[rows, index]
+
+    Fi, Fj = pick([F[:, 0], F[:, 1], F[:, 2]], i), pick([F[:, 0], F[:, 1], F[:, 2]], j)
+    return (u ** 3 * Fi + v ** 3 * Fj + w ** 3 * S
+            + 3 * u * u * v * pick(near_i, m) + 3 * u * v * v * pick(near_j, m)
+            + 3 * u * u * w * pick(toward_centre, i) + 3 * v * v * w * pick(toward_centre, j)
+            + 3 * u * w * w * pick(D, i) + 3 * v * w * w * pick(D, j)
+            + 6 * u * v * w * pick(T, m))
+
+
 def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=False, *, threads=0):
     """Interpolates scattered data at ``xi``, as scipy.interpolate.griddata, in 2D and 3D:
-    ``method`` "linear" (LinearNDInterpolator) or "nearest" (NearestNDInterpolator; ``fill_value``
-    is not used, as in scipy). "cubic" (Clough-Tocher) is not available yet.
+    ``method`` "linear" (LinearNDInterpolator), "nearest" (NearestNDInterpolator; ``fill_value``
+    is not used, as in scipy) or, in 2D, "cubic" (CloughTocher2DInterpolator).
 
     Examples
     --------
@@ -250,11 +442,13 @@ def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=Fa
     >>> griddata(points, points.sum(axis=1), (gx, gy)).tolist()
     [[0.0, 1.0, 2.0], [1.0, 2.0, 3.0], [2.0, 3.0, 4.0]]
     """
+    if _np.ndim(points) == 1 or (isinstance(points, tuple) and len(points) == 1) or _np.shape(points)[-1:] == (1,):
+        raise HullkitError("griddata in 1 dimension is not supported by hullkit (no triangulation to make): "
+                           "use numpy.interp or scipy.interpolate.interp1d")
     if method == "linear":
         return LinearNDInterpolator(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(xi)
     if method == "nearest":
         return NearestNDInterpolator(points, values, rescale=rescale, threads=threads)(xi)
     if method == "cubic":
-        raise HullkitError("griddata(method='cubic') (Clough-Tocher) is not available in hullkit yet; "
-                           "use method='linear' or 'nearest', or scipy for cubic")
-    raise HullkitError(f"unknown interpolation method {method!r}: 'linear' or 'nearest' ('cubic' is not available yet)")
+        return CloughTocher2DInterpolator(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(xi)
+    raise HullkitError(f"unknown interpolation method {method!r}: 'linear', 'nearest' or 'cubic'")

@@ -363,6 +363,24 @@ public:
         return py::make_tuple(owned(std::move(found.triangle)), weights, near);
     }
 
+    /// hullkit::delaunay_gradients on (n, k) values: (gradients (n, k, 2), sweeps, converged).
+    py::tuple gradients(const Points& values, double tolerance, unsigned max_iterations) const {
+        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
+            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
+        const auto columns = static_cast<std::size_t>(values.shape(1));
+        hullkit::GradientOptions options;
+        options.tolerance = tolerance;
+        options.max_iterations = max_iterations;
+        hullkit::DelaunayGradients found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay_gradients(span(), result_, values.data(), columns, options);
+        }
+        if (!found.ok()) throw CoreError(found.error, -1);
+        const py::ssize_t n = points_.shape(0), k = static_cast<py::ssize_t>(columns);
+        return py::make_tuple(owned(std::move(found.gradients), {n, k, 2}), found.iterations, found.converged);
+    }
+
     py::tuple voronoi(double xmin, double ymin, double xmax, double ymax) const {
         if (!(xmin < xmax) || !(ymin < ymax)) throw std::invalid_argument("voronoi bounds need xmin < xmax and ymin < ymax");
         hullkit::VoronoiCells cells = hullkit::delaunay_voronoi(span(), result_, xmin, ymin, xmax, ymax);
@@ -728,6 +746,7 @@ PYBIND11_MODULE(_core, m) {
         .def("locate", &Triangulation::locate, py::arg("queries"), py::arg("barycentric") = false,
              py::arg("nearest") = false, py::arg("threads") = 0u)
         .def("scipy_arrays", &Triangulation::scipy_arrays)
+        .def("gradients", &Triangulation::gradients)
         .def("voronoi", &Triangulation::voronoi);
 
     using hullkit::Delaunay3;

@@ -184,6 +184,75 @@ TEST_CASE("delaunay_locate: collinear, one point, none; errors name the query", 
     REQUIRE_FALSE(hullkit::delaunay_locate(other, d, queries, options).ok());
 }
 
+TEST_CASE("delaunay_locate: a folded triangulation from outside cannot make a walk loop forever", "[query]") {
+    // Two copies of one clockwise triangle whose half-edges send a walk toward (5, 5), beyond the
+    // hypotenuse (edge 1), from one copy to the other and back, by a different edge each time.
+    const std::vector<double> xy = {0, 0, 0, 1, 1, 0};
+    Delaunay folded;
+    folded.dimension = 2;
+    folded.triangles = {0, 1, 2, 0, 1, 2};
+    folded.halfedges = {-1, 5, -1, -1, 2, 1};
+    folded.hull = {0, 1, 2};
+    folded.representative = {0, 1, 2};
+    const std::vector<double> queries = {5, 5, 0.25, 0.25};
+    const hullkit::DelaunayQueries found = hullkit::delaunay_locate(xy, folded, queries);
+    REQUIRE(found.ok());
+    REQUIRE(found.triangle == std::vector<std::int32_t>{-1, 0});
+}
+
+TEST_CASE("delaunay_gradients: exact for linear values, close for smooth ones, repeated points share, errors", "[query]") {
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<double> xy;
+    for (int i = 0; i < 3000; ++i) xy.insert(xy.end(), {u(rng), u(rng)});
+    xy.insert(xy.end(), {xy[10], xy[11]});  // point 3000 repeats point 5
+    const std::size_t n = xy.size() / 2;
+    const Delaunay d = hullkit::delaunay(xy);
+    // Two columns: a plane, and a smooth function.
+    std::vector<double> values(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = xy[2 * i], y = xy[2 * i + 1];
+        values[2 * i] = 3 + 3 * x + 14.15 * y;
+        values[2 * i + 1] = std::sin(2 * x) * std::cos(3 * y);
+    }
+    values[2 * (n - 1)] = 1e300;  // a repeated point's value is not used
+    hullkit::GradientOptions options;
+    options.tolerance = 1e-13;
+    options.max_iterations = 5000;
+    const hullkit::DelaunayGradients g = hullkit::delaunay_gradients(xy, d, values.data(), 2, options);
+    REQUIRE(g.ok());
+    REQUIRE(g.converged);
+    INFO("sweeps: " << g.iterations);
+    double plane = 0, smooth = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = xy[2 * i], y = xy[2 * i + 1];
+        plane = std::max({plane, std::fabs(g.gradients[4 * i] - 3), std::fabs(g.gradients[4 * i + 1] - 14.15)});
+        if (x > 0.1 && x < 0.9 && y > 0.1 && y < 0.9) {  // away from the boundary's one-sided estimates
+            smooth = std::max({smooth, std::fabs(g.gradients[4 * i + 2] - 2 * std::cos(2 * x) * std::cos(3 * y)),
+                               std::fabs(g.gradients[4 * i + 3] + 3 * std::sin(2 * x) * std::sin(3 * y))});
+        }
+    }
+    CHECK(plane < 1e-9);
+    CHECK(smooth < 0.1);
+    REQUIRE(g.gradients[4 * (n - 1)] == g.gradients[4 * 5]);
+    REQUIRE(g.gradients[4 * (n - 1) + 3] == g.gradients[4 * 5 + 3]);
+    // The default tolerance stops early, with the plane still close.
+    const hullkit::DelaunayGradients quick = hullkit::delaunay_gradients(xy, d, values.data(), 2);
+    REQUIRE(quick.converged);
+    REQUIRE(quick.iterations < g.iterations);
+    REQUIRE(std::fabs(quick.gradients[0] - 3) < 1e-3);
+    options.max_iterations = 2;
+    REQUIRE_FALSE(hullkit::delaunay_gradients(xy, d, values.data(), 2, options).converged);
+    values[3] = std::nan("");
+    const hullkit::DelaunayGradients bad = hullkit::delaunay_gradients(xy, d, values.data(), 2);
+    REQUIRE(bad.error == "the value of point 1 (column 1) is not finite");
+    const std::vector<double> line = {0, 0, 1, 1, 2, 2};
+    const std::vector<double> line_values = {1, 2, 3};
+    const hullkit::DelaunayGradients flat = hullkit::delaunay_gradients(line, hullkit::delaunay(line), line_values.data(), 1);
+    REQUIRE(flat.ok());
+    REQUIRE(flat.gradients == std::vector<double>(6, 0.0));
+}
+
 TEST_CASE("delaunay_voronoi: cells are the points nearest to their site", "[query]") {
     const std::vector<double> xy = grid_with_random(31);
     const Delaunay d = hullkit::delaunay(xy);

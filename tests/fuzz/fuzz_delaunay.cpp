@@ -10,6 +10,8 @@
 //  - delaunay_find from varying starts answers a query at an input point with its representative
 //    (at any scale), and, inside incircle's exact range, a query elsewhere with the nearest point
 //    (exact compare_distance, lowest index on ties);
+//  - delaunay_locate finds the lowest-indexed triangle holding each query (brute force), weights
+//    exactly 1 at a corner, input points nearest to themselves, the same on 1 and 3 threads;
 //  - an error is one line, with no triangulation.
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
 #include <algorithm>
@@ -146,6 +148,40 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (hullkit::compare_distance(xy[2 * i], xy[2 * i + 1], xy[2 * best], xy[2 * best + 1], qx, qy) < 0) best = i;
         }
         if (hullkit::delaunay_find(points, tri, qx, qy, static_cast<std::uint32_t>(k)) != static_cast<std::int64_t>(best)) std::abort();
+    }
+    // delaunay_locate on the input points and the mixed queries: the lowest-indexed triangle
+    // holding each (brute force, exact orient2d on the raw coordinates), weights exactly 1 at a
+    // corner, the nearest point a query at an input point is its representative; the same
+    // answers on 1 and 3 threads.
+    std::vector<double> queries(xy);
+    for (std::size_t k = 0; k < n; ++k) queries.insert(queries.end(), {xy[2 * k], xy[2 * (n - 1 - k) + 1]});
+    hullkit::DelaunayQueryOptions options;
+    options.barycentric = options.nearest = true;
+    options.threads = 1;
+    const hullkit::DelaunayQueries found = hullkit::delaunay_locate(points, tri, queries, options);
+    options.threads = 3;
+    const hullkit::DelaunayQueries again = hullkit::delaunay_locate(points, tri, queries, options);
+    if (!found.ok() || again.triangle != found.triangle || again.nearest != found.nearest) std::abort();
+    if (std::memcmp(again.barycentric.data(), found.barycentric.data(), 8 * found.barycentric.size()) != 0) std::abort();
+    for (std::size_t i = 0; i < queries.size() / 2; ++i) {
+        const double qx = queries[2 * i], qy = queries[2 * i + 1];
+        std::int32_t lowest = -1;
+        for (std::size_t t = 0; t < tri.triangle_count() && lowest < 0; ++t) {
+            bool holds = true;
+            for (int k = 0; k < 3 && holds; ++k) {
+                const double* a = &xy[2 * tri.triangles[3 * t + k]];
+                const double* b = &xy[2 * tri.triangles[3 * t + (k + 1) % 3]];
+                holds = hullkit::orient2d(a[0], a[1], b[0], b[1], qx, qy) <= 0;
+            }
+            if (holds) lowest = static_cast<std::int32_t>(t);
+        }
+        if (found.triangle[i] != lowest) std::abort();
+        if (i < n && found.nearest[i] != static_cast<std::int32_t>(tri.representative[i])) std::abort();
+        if (i < n && lowest >= 0) {
+            int ones = 0;
+            for (int k = 0; k < 3; ++k) ones += found.barycentric[3 * i + k] == 1.0 && tri.representative[i] == tri.triangles[3 * lowest + k];
+            if (ones != 1) std::abort();
+        }
     }
     return 0;
 }

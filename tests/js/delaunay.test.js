@@ -317,7 +317,8 @@ test('find: bad arguments throw', () => {
   assert.throws(() => hullkit.find(xy, t, NaN, 0), /x must be a finite number/);
   assert.throws(() => hullkit.find(xy, t, 0, 0, 20), /start must be a point index from 0 to 19/);
   assert.throws(() => hullkit.find(xy, t, 0, 0, 1.5), /start must be a point index/);
-  assert.throws(() => hullkit.find(xy.subarray(0, 10), t, 0, 0), /triangles\[\d+\] = \d+ but there are 5 points/);
+  assert.throws(() => hullkit.find(xy.subarray(0, 10), t, 0, 0), /representative has 20 entries for 5 points \(the triangulation is of other points\)/);
+  assert.throws(() => hullkit.find(xy.subarray(0, 10), { ...t, representative: undefined }, 0, 0), /triangles\[\d+\] = \d+ but there are 5 points/);
   assert.throws(() => hullkit.find(xy, { ...t, halfedges: t.halfedges.subarray(3) }, 0, 0), /halfedges for/);
   assert.throws(() => hullkit.find(xy, null, 0, 0), TypeError);
 });

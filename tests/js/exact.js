@@ -16,8 +16,11 @@ function decompose(value) {
   return { negative: bits >> 63n === 1n, mantissa, exponent };
 }
 
-/** Exact integer coordinates (BigInt triples), all scaled by one power of two, for flat x y z data. */
-export function exactPoints(xyz) {
+/**
+ * Exact integer coordinates (BigInt triples), all scaled by one power of two, for flat x y z data
+ * (pairs for flat x y data with `dimension` 2).
+ */
+export function exactPoints(xyz, dimension = 3) {
   const parts = Array.from(xyz, decompose);
   const lowest = Math.min(...parts.filter((p) => p.mantissa !== 0n).map((p) => p.exponent), 0);
   const scaled = parts.map(({ negative, mantissa, exponent }) => {
@@ -25,11 +28,16 @@ export function exactPoints(xyz) {
     return negative ? -value : value;
   });
   const points = [];
-  for (let i = 0; i < scaled.length; i += 3) points.push(scaled.slice(i, i + 3));
+  for (let i = 0; i < scaled.length; i += dimension) points.push(scaled.slice(i, i + dimension));
   return points;
 }
 
 const sign = (value) => (value > 0n ? 1 : value < 0n ? -1 : 0);
+
+/** Sign of (b-a) x (c-a) for BigInt points (x y): > 0 when a, b, c turn counter-clockwise (y up). */
+export function orient2d(a, b, c) {
+  return sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
 
 /** ((b-a) x (c-a)) . (d-a) for BigInt points: six times the signed volume of a, b, c, d. */
 export function orient3dDeterminant(a, b, c, d) {

@@ -4,7 +4,8 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, MeshData,
+  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions,
+  LocateResult, MeshData,
   RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells,
 } from 'hullkit';
 
@@ -87,6 +88,17 @@ check(nearest === 3, 'find');
 const cells: VoronoiCells = hullkit.voronoi(xy, delaunay, [-1, -1, 2, 2]);
 check(cells.cellOffsets.length === xy.length / 2 + 1, 'voronoi');
 check(hullkit.delaunay(xy, { algorithm: 'giftwrap', mergeCocircular: true }).polygonOffsets !== undefined, 'polygons');
+// Point location in it: (0.5, 0.4) is the point 4 itself (a corner: weights 1, 0, 0), (0, 0.5) is on
+// the hull edge from 0 to 2 (as near to 0 as to 2), (2, 2) is outside.
+const locateOptions: LocateOptions = { barycentric: true, nearest: true };
+const where: LocateResult = hullkit.locate(xy, delaunay, [0.5, 0.4, 0, 0.5, 2, 2], locateOptions);
+const inTriangle: Int32Array = where.triangle;
+const corner = inTriangle[0] ?? -1;
+check(inTriangle.length === 3 && corner >= 0 && (inTriangle[1] ?? -1) >= 0 && inTriangle[2] === -1, 'locate: inside, on the hull, outside');
+const w: Float64Array | undefined = where.barycentric;
+check(w !== undefined && [w[0], w[1], w[2]].filter((x) => x === 1).length === 1 && delaunay.triangles[3 * corner + [w[0], w[1], w[2]].indexOf(1)] === 4, 'locate: exactly 1 at the corner');
+check(where.nearest?.[0] === 4 && where.nearest[1] === 0 && where.nearest[2] === 3, 'locate: nearest (ties: the lowest index)');
+check(hullkit.locate(xy, delaunay, new Float64Array([0.2, 0.2])).nearest === undefined, 'locate: nearest on request');
 
 // 3D Delaunay: the tetrahedra around the cube's corners and centre, the neighbour across a face, verify
 const cubeAndCentre = new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5]);

@@ -18,6 +18,10 @@ const wrongType: Float64Array = hullkit.hull(xyz).triangles; // error
 hullkit.readMesh('cube.obj'); // error
 hullkit.delaunay(xyz, { algorithm: 'quickhull' }); // error
 hullkit.voronoi(xyz, { triangles: new Uint32Array(3) }, [0, 0, 1, 1]); // error
+hullkit.locate(xyz, hullkit.delaunay(xyz).triangles, xyz); // error
+hullkit.locate(xyz, hullkit.delaunay(xyz), [[0, 0]]); // error
+hullkit.locate(xyz, hullkit.delaunay(xyz), xyz, { threads: 1 }); // error
+const inside: Uint32Array = hullkit.locate(xyz, hullkit.delaunay(xyz), xyz).triangle; // error
 hullkit.delaunay3([[0, 0, 0]]); // error
 hullkit.delaunay3(xyz, { threads: 2 }); // error
 const flat: Uint32Array = hullkit.delaunay3(xyz).neighbors; // error

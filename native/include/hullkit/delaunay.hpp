@@ -169,6 +169,35 @@ struct DelaunayQueries {
 DelaunayQueries delaunay_locate(PointSpan2 points, const Delaunay& triangulation, PointSpan2 queries,
                                 const DelaunayQueryOptions& options = {});
 
+/// Gradients at the points that make a smooth surface through their values over a triangulation
+/// (for Clough-Tocher interpolation): the gradients that minimise the total squared second
+/// derivative of the cubics along the Delaunay edges (each edge's cubic fixed by the values and
+/// the gradients' components along it, its curvature weighted by 1 / length^3). Found by
+/// Gauss-Seidel sweeps over the points in index order, each point's gradient solved exactly from
+/// its neighbours' (a 2 x 2 system), starting from zero, until no gradient moves in a sweep by
+/// more than `tolerance` times the larger of 1 and its largest component (an absolute tolerance
+/// for small gradients, a relative one for large; or `max_iterations` sweeps). Linear
+/// values give their exact gradient (up to rounding). Plain floating point: no decision depends on
+/// it. The same bits every time (one thread, a fixed order).
+struct GradientOptions {
+    double tolerance = 1e-6;
+    unsigned max_iterations = 400;
+};
+struct DelaunayGradients {
+    /// Per point, per column: d/dx, d/dy (point count x columns x 2). A repeated point gets its
+    /// representative's; every gradient is 0 when the points span less than a plane.
+    std::vector<double> gradients;
+    unsigned iterations = 0;  ///< the most sweeps any column took
+    bool converged = true;    ///< false when a column reached max_iterations first
+    std::string error;
+    bool ok() const { return error.empty(); }
+};
+/// `values`: point count x `columns`, row-major (the value of a repeated point is not used: its
+/// representative's is). Fails (error set) when the triangulation is not of these points or a
+/// value of a distinct point is not finite.
+DelaunayGradients delaunay_gradients(PointSpan2 points, const Delaunay& triangulation, const double* values,
+                                     std::size_t columns, const GradientOptions& options = {});
+
 /// Voronoi cells clipped to the rectangle [xmin, xmax] x [ymin, ymax]: cell i is the polygon
 /// cell_xy[2*cell_offsets[i]] ... (x y pairs) up to cell_offsets[i + 1], counter-clockwise with y
 /// up; empty for duplicates and for points whose cell misses the rectangle. Each cell is the

@@ -134,22 +134,44 @@ public:
     /// the walk end on any triangulation.
     std::int32_t find(const double* q, std::int32_t start, std::int32_t* last) {
         std::size_t t = static_cast<std::size_t>(start);
-        std::int32_t entered = -1;  // the half-edge we came in by: q is not beyond it
-        for (;;) {
+        std::int32_t entered = -1;  // the half-edge we came in by: q is strictly inside it
+        const std::size_t count = d_.triangles.size() / 3;
+        sides_of_ = -1;
+        for (std::size_t steps = 0;; ++steps) {
+            // A walk ends on any valid triangulation; one handed in from outside (the JS face takes
+            // delaunator's) might be folded: then, rather than walk forever, test every triangle.
+            if (steps > 4 * count + 64) return scan(q);
             random_ ^= random_ << 13, random_ ^= random_ >> 17, random_ ^= random_ << 5;
             const int first = static_cast<int>(random_ % 3u);
             int exit = -1;
             for (int i = 0; i < 3 && exit < 0; ++i) {
                 const int k = (first + i) % 3;
-                if (static_cast<std::int32_t>(3 * t + k) != entered && side(t, k, q) > 0) exit = k;
+                // q was strictly beyond the edge we came in by, so strictly inside it from here.
+                sides_[k] = static_cast<std::int32_t>(3 * t + k) == entered ? -1 : side(t, k, q);
+                if (sides_[k] > 0) exit = k;
             }
             *last = static_cast<std::int32_t>(t);
-            if (exit < 0) return lowest_holding(static_cast<std::int32_t>(t), q);
+            if (exit < 0) {
+                sides_of_ = static_cast<std::int32_t>(t);  // kept for lowest_holding and barycentric
+                return lowest_holding(static_cast<std::int32_t>(t), q);
+            }
             const std::int32_t across = d_.halfedges[3 * t + static_cast<std::size_t>(exit)];
             if (across < 0) return -1;  // beyond a hull edge: outside the (convex) hull
             entered = across;
             t = static_cast<std::size_t>(across) / 3;
         }
+    }
+
+    /// side(t, k, q), from what the walk that ended in t computed when it can.
+    int known_side(std::int32_t t, int k, const double* q) const {
+        return t == sides_of_ ? sides_[k] : side(static_cast<std::size_t>(t), k, q);
+    }
+
+    /// The lowest-indexed triangle holding q, by testing them all; -1 for none.
+    std::int32_t scan(const double* q) const {
+        for (std::size_t t = 0; t < d_.triangles.size() / 3; ++t)
+            if (side(t, 0, q) <= 0 && side(t, 1, q) <= 0 && side(t, 2, q) <= 0) return static_cast<std::int32_t>(t);
+        return -1;
     }
 
     /// Of the triangles holding q, t among them, the lowest index: q on an edge is held by the
@@ -162,7 +184,7 @@ public:
             const std::size_t u = static_cast<std::size_t>(seen_[i]);
             best = std::min(best, seen_[i]);
             for (int k = 0; k < 3; ++k) {
-                if (side(u, k, q) != 0) continue;
+                if (known_side(seen_[i], k, q) != 0) continue;
                 const std::int32_t across = d_.halfedges[3 * u + static_cast<std::size_t>(k)];
                 if (across < 0) continue;
                 const std::int32_t v = across / 3;
@@ -187,7 +209,7 @@ public:
         for (int k = 0; k < 3; ++k) {
             // Corner k's weight is the area opposite it with q in its place; the edge opposite
             // corner k runs from corner k + 1 to k + 2.
-            if (side(static_cast<std::size_t>(t), (k + 1) % 3, q) == 0) {
+            if (known_side(t, (k + 1) % 3, q) == 0) {
                 out[k] = 0.0;
                 continue;
             }
@@ -207,6 +229,8 @@ private:
     double scale_;
     std::vector<std::int32_t> seen_;
     std::uint32_t random_ = 0x2545f491u;
+    int sides_[3] = {2, 2, 2};  ///< side(sides_of_, k, q) for the query being walked
+    std::int32_t sides_of_ = -1;
 };
 
 DelaunayQueries locate_failure(std::string message, std::int64_t query) {
@@ -319,6 +343,88 @@ DelaunayQueries delaunay_locate(PointSpan2 p, const Delaunay& d, PointSpan2 quer
             }
         }
     });
+    return out;
+}
+
+DelaunayGradients delaunay_gradients(PointSpan2 p, const Delaunay& d, const double* values, std::size_t columns,
+                                     const GradientOptions& options) {
+    DelaunayGradients out;
+    const std::size_t n = p.count;
+    if (!d.ok() || d.representative.size() != n) {
+        out.error = d.ok() ? "the triangulation is of " + std::to_string(d.representative.size()) + " points, not of these " +
+                                 std::to_string(n)
+                           : "the triangulation failed: " + d.error;
+        return out;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (d.representative[i] != i) continue;
+        for (std::size_t c = 0; c < columns; ++c) {
+            if (!std::isfinite(values[i * columns + c])) {
+                out.error = "the value of point " + std::to_string(i) + (columns > 1 ? " (column " + std::to_string(c) + ")" : "") +
+                            " is not finite";
+                return out;
+            }
+        }
+    }
+    out.gradients.assign(n * columns * 2, 0.0);
+    if (d.dimension < 2 || columns == 0) return out;
+    // Each point's neighbours once (CSR), and the inverse of its 2 x 2 system's matrix, which does
+    // not depend on the values: sum over edges e of e e^T / |e|^3.
+    const std::vector<std::int32_t> outgoing = outgoing_edges(n, d);
+    std::vector<std::uint32_t> offsets(n + 1, 0), neighbours;
+    neighbours.reserve(d.triangles.size() + d.hull.size());
+    std::vector<double> inverse(3 * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        double a = 0, b = 0, c = 0;
+        if (d.representative[i] == i) {
+            for_each_neighbour(d, outgoing, static_cast<std::uint32_t>(i), [&](std::uint32_t v) {
+                neighbours.push_back(v);
+                const double ex = p[v][0] - p[i][0], ey = p[v][1] - p[i][1];
+                const double length = std::sqrt(ex * ex + ey * ey), cube = length * length * length;
+                a += ex * ex / cube, b += ex * ey / cube, c += ey * ey / cube;
+            });
+        }
+        offsets[i + 1] = static_cast<std::uint32_t>(neighbours.size());
+        const double det = a * c - b * b;
+        if (det != 0.0) inverse[3 * i] = c / det, inverse[3 * i + 1] = -b / det, inverse[3 * i + 2] = a / det;
+    }
+    // Per column: minimising the curvature of the cubic along edge (i, j) over g_i gives, summed
+    // over i's edges, (sum e e^T / L^3) g_i = sum e (3 (f_j - f_i) / 2 - (e . g_j) / 2) / L^3.
+    std::vector<double> g(2 * n);
+    for (std::size_t column = 0; column < columns; ++column) {
+        std::fill(g.begin(), g.end(), 0.0);
+        const auto f = [&](std::size_t i) { return values[i * columns + column]; };
+        unsigned sweeps = 0;
+        bool converged = false;
+        while (!converged && sweeps < options.max_iterations) {
+            ++sweeps;
+            double change = 0.0;  // the largest change of a component relative to max(1, the gradient's largest)
+            for (std::size_t i = 0; i < n; ++i) {
+                if (offsets[i] == offsets[i + 1]) continue;
+                double sx = 0.0, sy = 0.0;
+                for (std::uint32_t k = offsets[i]; k < offsets[i + 1]; ++k) {
+                    const std::uint32_t j = neighbours[k];
+                    const double ex = p[j][0] - p[i][0], ey = p[j][1] - p[i][1];
+                    const double length = std::sqrt(ex * ex + ey * ey), cube = length * length * length;
+                    const double r = (1.5 * (f(j) - f(i)) - 0.5 * (ex * g[2 * j] + ey * g[2 * j + 1])) / cube;
+                    sx += ex * r, sy += ey * r;
+                }
+                const double gx = inverse[3 * i] * sx + inverse[3 * i + 1] * sy;
+                const double gy = inverse[3 * i + 1] * sx + inverse[3 * i + 2] * sy;
+                const double moved = std::max(std::fabs(gx - g[2 * i]), std::fabs(gy - g[2 * i + 1]));
+                change = std::max(change, moved / std::max({1.0, std::fabs(gx), std::fabs(gy)}));
+                g[2 * i] = gx, g[2 * i + 1] = gy;
+            }
+            converged = change <= options.tolerance;
+        }
+        out.iterations = std::max(out.iterations, sweeps);
+        out.converged = out.converged && converged;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t r = d.representative[i];
+            out.gradients[(i * columns + column) * 2] = g[2 * r];
+            out.gradients[(i * columns + column) * 2 + 1] = g[2 * r + 1];
+        }
+    }
     return out;
 }
 

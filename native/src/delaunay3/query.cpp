@@ -71,19 +71,30 @@ public:
     std::int32_t find(const double* q, std::int32_t start, std::int32_t* last) {
         std::int32_t t = start;
         int entered = 4;
-        for (;;) {
+        signs_of_ = -1;
+        const std::size_t count = d_.tetrahedron_count();
+        for (std::size_t steps = 0;; ++steps) {
+            // A walk ends on any valid tetrahedralization; one handed in from outside (the JS face
+            // rebuilds it from arrays) might be folded: then, rather than walk forever, test them all.
+            if (steps > 4 * count + 64) return scan(q);
             const int first = static_cast<int>(next_random() & 3u);
             int exit = 4;
+            // q was strictly beyond the face we came in by, so strictly inside it from here.
+            for (int k = 0; k < 4; ++k) signs_[k] = k == entered ? 1 : 2;
             for (int i = 0; i < 4; ++i) {
                 const int k = (first + i) & 3;
                 if (k == entered) continue;
-                if (orient_replaced(static_cast<std::size_t>(t), k, q) < 0) {
+                signs_[k] = orient_replaced(static_cast<std::size_t>(t), k, q);
+                if (signs_[k] < 0) {
                     exit = k;
                     break;
                 }
             }
             *last = t;
-            if (exit == 4) return lowest_holding(t, q);
+            if (exit == 4) {
+                signs_of_ = t;  // every sign of t is known: kept for lowest_holding and barycentric
+                return lowest_holding(t, q);
+            }
             const std::int32_t next = d_.neighbors[4 * static_cast<std::size_t>(t) + exit];
             if (next < 0) return -1;  // beyond a hull face: outside the (convex) hull
             entered = 4;  // the face of `next` we came in by
@@ -93,13 +104,23 @@ public:
         }
     }
 
+    /// The lowest-indexed tetrahedron holding q, by testing them all; -1 for none.
+    std::int32_t scan(const double* q) const {
+        for (std::size_t t = 0; t < d_.tetrahedron_count(); ++t) {
+            bool holds = true;
+            for (int k = 0; k < 4 && holds; ++k) holds = orient_replaced(t, k, q) >= 0;
+            if (holds) return static_cast<std::int32_t>(t);
+        }
+        return -1;
+    }
+
     /// Of the tetrahedra holding q, t among them, the one with the lowest index: q on a face (an
     /// orientation of 0) is held by the neighbour across it too; a search over such faces meets
     /// every tetrahedron around the face, edge or vertex that holds q.
     std::int32_t lowest_holding(std::int32_t t, const double* q) {
         std::int32_t best = t;
         bool on_boundary = false;
-        for (int k = 0; k < 4 && !on_boundary; ++k) on_boundary = orient_replaced(static_cast<std::size_t>(t), k, q) == 0;
+        for (int k = 0; k < 4 && !on_boundary; ++k) on_boundary = sign(t, k, q) == 0;
         if (!on_boundary) return best;
         seen_.assign(1, t);
         for (std::size_t i = 0; i < seen_.size(); ++i) {
@@ -117,6 +138,11 @@ public:
         return best;
     }
 
+    /// orient_replaced(t, k, q), from what the walk that ended in t computed when it can.
+    int sign(std::int32_t t, int k, const double* q) const {
+        return t == signs_of_ ? signs_[k] : orient_replaced(static_cast<std::size_t>(t), k, q);
+    }
+
     /// Barycentric coordinates of q in tetrahedron t (rounded; exact zeros on faces through q).
     void barycentric(std::int32_t t, const double* q, double* out) const {
         double p[4][3];
@@ -124,7 +150,7 @@ public:
         for (int i = 0; i < 4; ++i) w[i] = point(d_.tetrahedra[4 * static_cast<std::size_t>(t) + i], p[i]);
         const double whole = volume6(w[0], w[1], w[2], w[3]);
         for (int k = 0; k < 4; ++k) {
-            if (orient_replaced(static_cast<std::size_t>(t), k, q) == 0) {
+            if (sign(t, k, q) == 0) {
                 out[k] = 0.0;
                 continue;
             }
@@ -181,6 +207,8 @@ private:
     const Graph* graph_;
     std::vector<std::int32_t> seen_;
     std::uint32_t random_ = 0x2545f491u;
+    int signs_[4] = {2, 2, 2, 2};  ///< orient_replaced(signs_of_, k, q) for the query being walked
+    std::int32_t signs_of_ = -1;
 };
 
 Delaunay3Queries query_failure(std::string message, std::int64_t query) {
