@@ -164,6 +164,15 @@ class _Base:
         out = self._evaluate(xi, **options)
         return out.reshape(shape + self.values_shape)
 
+    def _at_points(self, core, xi):
+        """Without simplices (points spanning less than the full dimension): each query exactly
+        at an input point gets its value, every other query the fill value."""
+        near = core.locate(xi, nearest=True, threads=self.threads)["nearest"]
+        out = self._filled(len(xi))
+        hit = (near >= 0) & _np.all(self._scaled_points[_np.maximum(near, 0)] == xi, axis=1)
+        out[hit] = self.values[near[hit]]
+        return out
+
     def _filled(self, count):
         out = _np.empty((count, self.values.shape[1]), dtype=self.values.dtype)
         out[...] = self.fill_value
@@ -200,23 +209,20 @@ class LinearNDInterpolator(_Base):
 
     def _evaluate(self, xi):
         core = self._triangulation()
-        found = core.locate(xi, barycentric=True, nearest=core.dimension < self.ndim, threads=self.threads)
-        out = self._filled(len(xi))
-        if core.dimension < self.ndim:  # no simplices: exact at the input points, fill elsewhere
-            near = found["nearest"]
-            hit = (near >= 0) & _np.all(self._scaled_points[_np.maximum(near, 0)] == xi, axis=1)
-            out[hit] = self.values[near[hit]]
-            return out
-        simplex = found["triangle" if self.ndim == 2 else "tetrahedron"]
-        inside = _np.flatnonzero(simplex >= 0)
-        corners = (core.triangles.reshape(-1, 3) if self.ndim == 2 else core.tetrahedra)[simplex[inside]]
-        weights = found["barycentric"][inside]
-        # Summed corner by corner: at an input point the weights are exactly 1, 0, 0 (, 0), so
-        # the value is that point's exactly.
-        total = weights[:, 0, None] * self.values[corners[:, 0]]
-        for k in range(1, self.ndim + 1):
-            total += weights[:, k, None] * self.values[corners[:, k]]
-        out[inside] = total
+        if core.dimension < self.ndim:
+            return self._at_points(core, xi)
+        # Located and blended in the core, corner by corner: at an input point the weights are
+        # exactly 1 and 0, so the value is that point's exactly. Complex values as two real columns.
+        values = self.values
+        columns = _np.concatenate([values.real, values.imag], axis=1) if _np.iscomplexobj(values) else values
+        with _translated():
+            simplex, out = core._core.interpolate(xi, _np.ascontiguousarray(columns), _threads(self.threads))
+        if _np.iscomplexobj(values):
+            k = values.shape[1]
+            out = out[:, :k] + 1j * out[:, k:]
+        outside = simplex < 0
+        if outside.any() and not (_np.isscalar(self.fill_value) and _np.isnan(self.fill_value)):
+            out[outside] = self.fill_value
         return out
 
 
@@ -351,13 +357,10 @@ class CloughTocher2DInterpolator(_Base):
 
     def _evaluate(self, xi):
         core = self._triangulation()
-        found = core.locate(xi, barycentric=True, nearest=core.dimension < 2, threads=self.threads)
+        if core.dimension < 2:
+            return self._at_points(core, xi)
+        found = core.locate(xi, barycentric=True, threads=self.threads)
         out = self._filled(len(xi))
-        if core.dimension < 2:  # no triangles: exact at the input points, fill elsewhere
-            near = found["nearest"]
-            hit = (near >= 0) & _np.all(self._scaled_points[_np.maximum(near, 0)] == xi, axis=1)
-            out[hit] = self.values[near[hit]]
-            return out
         inside = _np.flatnonzero(found["triangle"] >= 0)
         t = found["triangle"][inside].astype(_np.int64)
         out[inside] = _clough_tocher(self._scaled_points, self.values, _np.asarray(self.grad), core, t,

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <limits>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -63,6 +64,42 @@ struct JoinedThreads {
         }
     }
 };
+
+/// Linear interpolation from located queries: out[i, c] = sum over the simplex's corners k of
+/// weights[i, k] * values[corner k, c], corner by corner in order (so a query at a corner, weights
+/// exactly 1 and 0, gets that corner's value exactly); NaN outside (simplex -1). On a few threads
+/// in blocks of rows (each row written once: any split gives the same bits). `corners` holds
+/// `count` indices per simplex.
+py::array_t<double> blend_values(const std::vector<std::int32_t>& simplex, const std::vector<double>& weights,
+                                 const std::uint32_t* corners, std::size_t count, const Points& values) {
+    const std::size_t m = simplex.size();
+    const auto columns = static_cast<std::size_t>(values.shape(1));
+    py::array_t<double> out({static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(columns)});
+    double* o = out.mutable_data();
+    const double* v = values.data();
+    auto fill = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            double* row = o + i * columns;
+            if (simplex[i] < 0) {
+                std::fill(row, row + columns, std::numeric_limits<double>::quiet_NaN());
+                continue;
+            }
+            const std::uint32_t* c = corners + count * static_cast<std::size_t>(simplex[i]);
+            const double* w = &weights[count * i];
+            for (std::size_t j = 0; j < columns; ++j) {
+                double total = w[0] * v[c[0] * columns + j];
+                for (std::size_t k = 1; k < count; ++k) total += w[k] * v[c[k] * columns + j];
+                row[j] = total;
+            }
+        }
+    };
+    py::gil_scoped_release unlocked;
+    const std::size_t parts = m < (std::size_t{1} << 16) ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 4);
+    JoinedThreads workers;
+    for (std::size_t k = 1; k < parts; ++k) workers.threads.emplace_back(fill, m * k / parts, m * (k + 1) / parts);
+    fill(0, m / parts);
+    return out;
+}
 
 struct CoreError : std::runtime_error {
     CoreError(const std::string& message, std::int64_t point_) : std::runtime_error(message), point(point_) {}
@@ -363,6 +400,25 @@ public:
         return py::make_tuple(owned(std::move(found.triangle)), weights, near);
     }
 
+    /// Linear interpolation of (n, k) values at (q, 2) queries: (simplex int32 (q,), values (q, k),
+    /// NaN outside the hull).
+    py::tuple interpolate(const Points& queries, const Points& values, unsigned threads) const {
+        const std::size_t n = rows(queries, 2, "queries");
+        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
+            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
+        hullkit::DelaunayQueryOptions options;
+        options.barycentric = true;
+        options.threads = threads;
+        hullkit::DelaunayQueries found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
+        }
+        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        py::array_t<double> out = blend_values(found.triangle, found.barycentric, result_.triangles.data(), 3, values);
+        return py::make_tuple(owned(std::move(found.triangle)), out);
+    }
+
     /// hullkit::delaunay_gradients on (n, k) values: (gradients (n, k, 2), sweeps, converged).
     py::tuple gradients(const Points& values, double tolerance, unsigned max_iterations) const {
         if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
@@ -470,6 +526,25 @@ public:
         if (barycentric) weights = owned_points(std::move(found.barycentric), 4);
         if (nearest) near = owned(std::move(found.nearest));
         return py::make_tuple(owned(std::move(found.tetrahedron)), weights, near);
+    }
+
+    /// Linear interpolation of (n, k) values at (q, 3) queries: (simplex int32 (q,), values (q, k),
+    /// NaN outside the hull).
+    py::tuple interpolate(const Points& queries, const Points& values, unsigned threads) const {
+        const std::size_t n = rows(queries, 3, "queries");
+        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
+            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
+        hullkit::Delaunay3QueryOptions options;
+        options.barycentric = true;
+        options.threads = threads;
+        hullkit::Delaunay3Queries found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay3_locate(span(), result_, hullkit::PointSpan(queries.data(), n), options);
+        }
+        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        py::array_t<double> out = blend_values(found.tetrahedron, found.barycentric, result_.tetrahedra.data(), 4, values);
+        return py::make_tuple(owned(std::move(found.tetrahedron)), out);
     }
 
     /// hullkit::delaunay3_voronoi's arrays, in its field order: vertices (v, 3), tetrahedron_vertex,
@@ -747,6 +822,7 @@ PYBIND11_MODULE(_core, m) {
              py::arg("nearest") = false, py::arg("threads") = 0u)
         .def("scipy_arrays", &Triangulation::scipy_arrays)
         .def("gradients", &Triangulation::gradients)
+        .def("interpolate", &Triangulation::interpolate)
         .def("voronoi", &Triangulation::voronoi);
 
     using hullkit::Delaunay3;
@@ -771,7 +847,8 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("duplicate_count", [](const Tetrahedralization& t) { return t.result().duplicate_count; })
         .def("locate", &Tetrahedralization::locate, py::arg("queries"), py::arg("barycentric") = false,
              py::arg("nearest") = false, py::arg("threads") = 0u)
-        .def("voronoi", &Tetrahedralization::voronoi);
+        .def("voronoi", &Tetrahedralization::voronoi)
+        .def("interpolate", &Tetrahedralization::interpolate);
 
     py::class_<Checker>(m, "RouteChecker")
         .def(py::init<const std::string&, const std::string&, const std::string&, const std::map<std::string, std::string>&>(),

@@ -132,12 +132,15 @@ std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 namespace {
 
-/// The input as (Hilbert key << 32 | index), sorted (stable LSD radix sort on the 30-bit key).
-std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box, unsigned threads) {
+}  // namespace
+
+namespace delaunay3_detail {
+
+std::vector<std::uint64_t> hilbert_order(PointSpan p, const double* lo, const double* hi, unsigned threads) {
     const std::size_t n = p.count;
     double scale[3];
     for (int axis = 0; axis < 3; ++axis) {
-        const double width = box.hi[axis] - box.lo[axis];
+        const double width = hi[axis] - lo[axis];
         scale[axis] = width > 0 ? 1023.0 / width : 0.0;
     }
     std::vector<std::uint64_t> keyed(n), swap(n);
@@ -148,7 +151,7 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box, unsigne
             for (int axis = 0; axis < 3; ++axis) {
                 // A box narrower than 1023 / DBL_MAX makes the scale infinite, one wider than
                 // DBL_MAX the width infinite: NaN and negatives go to 0 (the order only affects speed).
-                double f = (p[i][axis] - box.lo[axis]) * scale[axis];
+                double f = (p[i][axis] - lo[axis]) * scale[axis];
                 f = f > 0.0 ? std::min(f, 1023.0) : 0.0;
                 cell[axis] = static_cast<std::uint32_t>(f);
             }
@@ -167,13 +170,17 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const Extent& box, unsigne
     return keyed;
 }
 
+}  // namespace delaunay3_detail
+
+namespace {
+
 /// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
 /// and stores the distinct points contiguously in that order, scaled by 2^exponent. On the
 /// threads in blocks that start at a new key (duplicates share a key, so each block decides its own
 /// alone): first each block sorts its runs of one key and counts its distinct points, then, at
 /// offsets from those counts, writes them; the same arrays for every thread count.
 void gather_distinct(PointSpan p, const Extent& box, unsigned threads, Delaunay3& out, Points& points) {
-    std::vector<std::uint64_t> keyed = hilbert_order(p, box, threads);
+    std::vector<std::uint64_t> keyed = delaunay3_detail::hilbert_order(p, box.lo, box.hi, threads);
     const std::size_t n = p.count;
     auto index = [&](std::size_t k) { return static_cast<std::uint32_t>(keyed[k]); };
     auto same_point = [&](std::uint32_t a, std::uint32_t b) {

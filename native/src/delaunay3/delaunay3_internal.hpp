@@ -99,6 +99,10 @@ private:
 
 /// Index along a 3D Hilbert curve on a 1024^3 grid (each coordinate below 1024).
 std::uint32_t hilbert3(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+/// The points as (Hilbert key << 32 | index), sorted along the curve over the box [lo, hi] (a
+/// 1024^3 grid; stable LSD radix sort on the 30-bit key, so equal keys keep index order). The keys
+/// on the threads; the order only affects speed, so NaN or out-of-box coordinates are harmless.
+std::vector<std::uint64_t> hilbert_order(PointSpan p, const double* lo, const double* hi, unsigned threads);
 
 /// The power of two delaunay3() scales `points` by (insphere's exact range, with room for the
 /// perturbation's helper point); false when there is none or a coordinate is not finite.

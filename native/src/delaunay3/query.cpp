@@ -264,24 +264,11 @@ Delaunay3Queries delaunay3_locate(PointSpan points, const Delaunay3& d, PointSpa
     while (any_vertex < n && d.representative[any_vertex] != any_vertex) ++any_vertex;
 
     // Queries along a Hilbert curve over their bounding box, so that consecutive walks are short.
-    std::vector<std::uint64_t> order(m);
-    {
-        double lo[3], hi[3];
-        for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
-        for (std::size_t i = 0; i < m; ++i)
-            for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], scaled[3 * i + k]), hi[k] = std::max(hi[k], scaled[3 * i + k]);
-        for (std::size_t i = 0; i < m; ++i) {
-            std::uint32_t cell[3];
-            for (int k = 0; k < 3; ++k) {
-                const double width = hi[k] - lo[k];
-                double f = width > 0 ? (scaled[3 * i + k] - lo[k]) / width * 1023.0 : 0.0;
-                f = f > 0.0 ? std::min(f, 1023.0) : 0.0;
-                cell[k] = static_cast<std::uint32_t>(f);
-            }
-            order[i] = std::uint64_t{delaunay3_detail::hilbert3(cell[0], cell[1], cell[2])} << 32 | i;
-        }
-        std::sort(order.begin(), order.end());
-    }
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) lo[k] = std::numeric_limits<double>::infinity(), hi[k] = -lo[k];
+    for (std::size_t i = 0; i < m; ++i)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], scaled[3 * i + k]), hi[k] = std::max(hi[k], scaled[3 * i + k]);
+    const std::vector<std::uint64_t> order = delaunay3_detail::hilbert_order(PointSpan(scaled.data(), m), lo, hi, options.threads);
     const std::size_t chunks = (m + kChunk - 1) / kChunk;
     detail::parallel_for(options.threads, chunks, [&](std::size_t chunk) {
         Locator locator(points, d, scale, &graph);
