@@ -7,7 +7,8 @@ prints one JSON line (the report step prints the markdown report instead).
     interpolate_bench.py measure --case C --lib hullkit|scipy --points N --queries M --dir D [--calls 1|2]
     interpolate_bench.py report --results R.jsonl --out REPORT.md [--elapsed S]
 
-Cases: linear-2d, linear-3d (LinearNDInterpolator), nearest-2d (NearestNDInterpolator). The inputs are
+Cases: linear-2d, linear-3d (LinearNDInterpolator), cubic-2d (CloughTocher2DInterpolator),
+nearest-2d (NearestNDInterpolator). The inputs are
 seeded: N points uniform in the unit square (cube), values a smooth function of them, M queries uniform in
 the same square (cube). measure times the constructor ("build") and the first call on the M queries,
 whose sum is the headline, then (--calls 2) a second call on the same object ("warm"). After the clock:
@@ -32,6 +33,7 @@ from python_bench import digest, peak_mb
 CASES = {
     "linear-2d": {"kind": "linear", "ndim": 2, "target": 0.01, "title": "LinearNDInterpolator, 2D"},
     "linear-3d": {"kind": "linear", "ndim": 3, "target": 0.02, "title": "LinearNDInterpolator, 3D"},
+    "cubic-2d": {"kind": "cubic", "ndim": 2, "target": 0.02, "title": "CloughTocher2DInterpolator, 2D"},
     "nearest-2d": {"kind": "nearest", "ndim": 2, "target": None, "title": "NearestNDInterpolator, 2D"},
 }
 TOLERANCE = 1e-12  # above any rounding of a plane test on coordinates in [0, 1] (errors ~1e-15)
@@ -115,10 +117,10 @@ def run_measure(args):
     spec = CASES[args.case]
     points, values, queries = inputs(args.case, args.points, args.queries)
     if args.lib == "hullkit":
-        from hullkit.interpolate import LinearNDInterpolator, NearestNDInterpolator
+        from hullkit.interpolate import CloughTocher2DInterpolator, LinearNDInterpolator, NearestNDInterpolator
     else:
-        from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
-    cls = LinearNDInterpolator if spec["kind"] == "linear" else NearestNDInterpolator
+        from scipy.interpolate import CloughTocher2DInterpolator, LinearNDInterpolator, NearestNDInterpolator
+    cls = {"linear": LinearNDInterpolator, "cubic": CloughTocher2DInterpolator, "nearest": NearestNDInterpolator}[spec["kind"]]
     start = time.perf_counter()
     f = cls(points, values)
     built = time.perf_counter()

@@ -5,10 +5,11 @@
 #   1. LinearNDInterpolator 2D, 1e6 uniform points in the unit square, 1e6 uniform queries;
 #      target hullkit <= 0.01x scipy;
 #   2. LinearNDInterpolator 3D, 2e5 uniform points in the unit cube, 1e6 queries; target <= 0.02x;
-#   3. NearestNDInterpolator 2D, 1e6 points, 1e6 queries (no target).
+#   3. CloughTocher2DInterpolator 2D, 1e6 points, 1e6 queries; target <= 0.02x;
+#   4. NearestNDInterpolator 2D, 1e6 points, 1e6 queries (no target).
 # Also NaN results inside the hull (hullkit must have none), the largest |hullkit - scipy| where both
 # are finite, and each process's peak RSS. scipy's linear calls take minutes at these sizes (~290 s
-# for the 2D queries: its walk from triangle to triangle), so in the full run scipy's linear rows are
+# for the 2D queries: its walk from triangle to triangle), so in the full run scipy's linear and cubic rows are
 # one process with no warm call, between hullkit's three; the nearest rows alternate, 3 processes each.
 # Environment: HULLKIT_BENCH_QUICK=1 (a tenth of the points and queries, one process each, warm calls
 # for all; report in bench/out/interpolate/results-interpolate.md), HULLKIT_BENCH_NO_BUILD=1 (use
@@ -47,7 +48,7 @@ hullkit_py meta $([ "$quick" = 1 ] && echo --quick) > "$results"
 record() { tee -a "$results" >&2; }
 
 # case, points, queries (full sizes)
-cases=("linear-2d 1000000 1000000" "linear-3d 200000 1000000" "nearest-2d 1000000 1000000")
+cases=("linear-2d 1000000 1000000" "linear-3d 200000 1000000" "cubic-2d 1000000 1000000" "nearest-2d 1000000 1000000")
 for c in "${cases[@]}"; do
   read -r case n m <<< "$c"
   sizes=(--case "$case" --points $((n / scale)) --queries $((m / scale)) --dir "$work")

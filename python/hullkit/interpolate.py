@@ -173,10 +173,30 @@ class _Base:
         out[hit] = self.values[near[hit]]
         return out
 
+    def _finish(self, simplex, out, complex_values):
+        """The core's (q, k) real results (or 2k: real parts, then imaginary) as the values' type,
+        with the fill value outside the hull (where the core put NaN)."""
+        if complex_values:
+            k = self.values.shape[1]
+            out = out[:, :k] + 1j * out[:, k:]
+        outside = simplex < 0
+        if outside.any() and not (_np.isscalar(self.fill_value) and _np.isnan(self.fill_value)):
+            out[outside] = self.fill_value
+        return out
+
     def _filled(self, count):
         out = _np.empty((count, self.values.shape[1]), dtype=self.values.dtype)
         out[...] = self.fill_value
         return out
+
+
+def _real_columns(array, complex_values):
+    """float64, C order; complex (or, with ``complex_values``, any) arrays as their real parts
+    followed by their imaginary parts along axis 1."""
+    array = _np.asarray(array)
+    if complex_values:
+        array = _np.concatenate([array.real, array.imag], axis=1)
+    return _np.ascontiguousarray(array, dtype=_np.float64)
 
 
 def _rebuild(cls, inputs, options):
@@ -213,17 +233,10 @@ class LinearNDInterpolator(_Base):
             return self._at_points(core, xi)
         # Located and blended in the core, corner by corner: at an input point the weights are
         # exactly 1 and 0, so the value is that point's exactly. Complex values as two real columns.
-        values = self.values
-        columns = _np.concatenate([values.real, values.imag], axis=1) if _np.iscomplexobj(values) else values
+        complex_values = _np.iscomplexobj(self.values)
         with _translated():
-            simplex, out = core._core.interpolate(xi, _np.ascontiguousarray(columns), _threads(self.threads))
-        if _np.iscomplexobj(values):
-            k = values.shape[1]
-            out = out[:, :k] + 1j * out[:, k:]
-        outside = simplex < 0
-        if outside.any() and not (_np.isscalar(self.fill_value) and _np.isnan(self.fill_value)):
-            out[outside] = self.fill_value
-        return out
+            simplex, out = core._core.interpolate(xi, _real_columns(self.values, complex_values), _threads(self.threads))
+        return self._finish(simplex, out, complex_values)
 
 
 class NearestNDInterpolator(_Base):
@@ -359,76 +372,13 @@ class CloughTocher2DInterpolator(_Base):
         core = self._triangulation()
         if core.dimension < 2:
             return self._at_points(core, xi)
-        found = core.locate(xi, barycentric=True, threads=self.threads)
-        out = self._filled(len(xi))
-        inside = _np.flatnonzero(found["triangle"] >= 0)
-        t = found["triangle"][inside].astype(_np.int64)
-        out[inside] = _clough_tocher(self._scaled_points, self.values, _np.asarray(self.grad), core, t,
-                                     found["barycentric"][inside])
-        return out
-
-
-def _clough_tocher(points, values, grad, core, t, b):
-    """The Clough-Tocher patches' values at barycentric coordinates ``b`` (q, 3) in triangles
-    ``t`` (the core's corner order), for values (n, k) and gradients (n, k, 2)."""
-    triangles = core.triangles.reshape(-1, 3)
-    corners = triangles[t]
-    across = core.halfedges.reshape(-1, 3)[t]  # edge e runs from corner e to corner e + 1
-    interior = across >= 0
-    P = points[corners]                                  # (q, 3, 2)
-    F = values[corners]                                  # (q, 3, k)
-    G = grad[corners]                                    # (q, 3, k, 2)
-    C = (P[:, 0] + P[:, 1] + P[:, 2]) / 3
-
-    def along(i, vector):  # G_i . vector, (q, k)
-        return G[:, i, :, 0] * vector[:, None, 0] + G[:, i, :, 1] * vector[:, None, 1]
-
-    toward_centre = [F[:, i] + along(i, C - P[:, i]) / 3 for i in range(3)]
-    # Per edge, by the corner m opposite it (from corner i = m + 1 to j = m + 2): its two Bezier
-    # ordinates next to the corners, and the ordinate T[m] off it that makes the cross-edge
-    # derivative linear along the edge.
-    near_i, near_j, T = [], [], []
-    for m in range(3):
-        i, j = (m + 1) % 3, (m + 2) % 3
-        edge = P[:, j] - P[:, i]
-        c_i = F[:, i] + along(i, edge) / 3
-        c_j = F[:, j] - along(j, edge) / 3
-        # The direction across: inside the hull, toward the neighbour's centroid (one line for both
-        # triangles); on the hull, from the edge's midpoint toward the centroid. As a combination
-        # alpha P_i + beta P_j + gamma C with alpha + beta + gamma = 0.
-        a, bb = P[:, i] - C, P[:, j] - C
-        neighbour = points[triangles[_np.maximum(across[:, i], 0) // 3]]
-        d = _np.where(interior[:, i, None], (neighbour[:, 0] + neighbour[:, 1] + neighbour[:, 2]) / 3 - C,
-                      C - (P[:, i] + P[:, j]) / 2)
-        det = a[:, 0] * bb[:, 1] - a[:, 1] * bb[:, 0]
-        alpha = ((d[:, 0] * bb[:, 1] - d[:, 1] * bb[:, 0]) / det)[:, None]
-        beta = ((a[:, 0] * d[:, 1] - a[:, 1] * d[:, 0]) / det)[:, None]
-        gamma = -alpha - beta
-        k0 = alpha * F[:, i] + beta * c_i + gamma * toward_centre[i]
-        k2 = alpha * c_j + beta * F[:, j] + gamma * toward_centre[j]
-        T.append(((k0 + k2) / 2 - alpha * c_i - beta * c_j) / gamma)
-        near_i.append(c_i)
-        near_j.append(c_j)
-    D = [(toward_centre[i] + T[(i + 1) % 3] + T[(i + 2) % 3]) / 3 for i in range(3)]
-    S = (D[0] + D[1] + D[2]) / 3
-    # The sub-triangle (P_i, P_j, C) holding the point lies opposite the corner m of least weight.
-    m = _np.argmin(b, axis=1)
-    rows = _np.arange(len(t))
-    i, j = (m + 1) % 3, (m + 2) % 3
-    u = (b[rows, i] - b[rows, m])[:, None]
-    v = (b[rows, j] - b[rows, m])[:, None]
-    w = (3 * b[rows, m])[:, None]
-
-    def pick(per_corner, index):  # per_corner: three (q, k) arrays; index: (q,) corner per row
-        stacked = _np.stack(per_corner, axis=1)
-        return stacked[rows, index]
-
-    Fi, Fj = pick([F[:, 0], F[:, 1], F[:, 2]], i), pick([F[:, 0], F[:, 1], F[:, 2]], j)
-    return (u ** 3 * Fi + v ** 3 * Fj + w ** 3 * S
-            + 3 * u * u * v * pick(near_i, m) + 3 * u * v * v * pick(near_j, m)
-            + 3 * u * u * w * pick(toward_centre, i) + 3 * v * v * w * pick(toward_centre, j)
-            + 3 * u * w * w * pick(D, i) + 3 * v * w * w * pick(D, j)
-            + 6 * u * v * w * pick(T, m))
+        # Located and evaluated in the core, on the threads (the patches: Triangulation.clough_tocher
+        # in python/src/core.cpp); complex values and their gradients as real columns.
+        complex_values = _np.iscomplexobj(self.values) or _np.iscomplexobj(self.grad)
+        with _translated():
+            simplex, out = core._core.clough_tocher(xi, _real_columns(self.values, complex_values),
+                                                    _real_columns(self.grad, complex_values), _threads(self.threads))
+        return self._finish(simplex, out, complex_values)
 
 
 def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=False, *, threads=0):

@@ -419,6 +419,116 @@ public:
         return py::make_tuple(owned(std::move(found.triangle)), out);
     }
 
+    /// Clough-Tocher interpolation of (n, k) values with gradients (n, k, 2) at (q, 2) queries:
+    /// (triangle int32 (q,), values (q, k), NaN outside the hull). Each triangle is split at its
+    /// centroid C into three cubic Bezier patches: ordinates at the corners the values, next to
+    /// them along the edges and toward C from the gradients, off each edge the one that makes the
+    /// derivative across it linear along the edge (across, inside the hull: toward the neighbour's
+    /// centroid; on the hull: from the edge's midpoint toward C), around C their averages.
+    py::tuple clough_tocher(const Points& queries, const Points& values, const Points& gradients, unsigned threads) const {
+        const std::size_t n = rows(queries, 2, "queries");
+        const std::size_t points = static_cast<std::size_t>(points_.shape(0));
+        if (values.ndim() != 2 || static_cast<std::size_t>(values.shape(0)) != points)
+            throw std::invalid_argument("values must have shape (" + std::to_string(points) + ", k)");
+        const auto columns = static_cast<std::size_t>(values.shape(1));
+        if (gradients.ndim() != 3 || static_cast<std::size_t>(gradients.shape(0)) != points ||
+            static_cast<std::size_t>(gradients.shape(1)) != columns || gradients.shape(2) != 2)
+            throw std::invalid_argument("gradients must have shape (" + std::to_string(points) + ", " + std::to_string(columns) + ", 2)");
+        hullkit::DelaunayQueryOptions options;
+        options.barycentric = true;
+        options.threads = threads;
+        hullkit::DelaunayQueries found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
+        }
+        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(columns)});
+        double* o = out.mutable_data();
+        const double* xy = points_.data();
+        const double* f = values.data();
+        const double* g = gradients.data();
+        const std::vector<std::uint32_t>& tri = result_.triangles;
+        const std::vector<std::int32_t>& twin = result_.halfedges;
+        auto patch = [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                double* row = o + i * columns;
+                const std::int32_t t = found.triangle[i];
+                if (t < 0) {
+                    std::fill(row, row + columns, std::numeric_limits<double>::quiet_NaN());
+                    continue;
+                }
+                std::uint32_t v[3];
+                double P[3][2], C[2] = {0, 0};
+                for (int k = 0; k < 3; ++k) {
+                    v[k] = tri[3 * static_cast<std::size_t>(t) + k];
+                    P[k][0] = xy[2 * v[k]], P[k][1] = xy[2 * v[k] + 1];
+                }
+                C[0] = (P[0][0] + P[1][0] + P[2][0]) / 3, C[1] = (P[0][1] + P[1][1] + P[2][1]) / 3;
+                // Per edge m (opposite corner m, from i = m + 1 to j = m + 2): alpha, beta, gamma of
+                // the direction across it, as alpha (P_i - C) + beta (P_j - C).
+                double alpha[3], beta[3];
+                for (int m = 0; m < 3; ++m) {
+                    const int a = (m + 1) % 3, b = (m + 2) % 3;
+                    double d[2];
+                    const std::int32_t across = twin[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(a)];
+                    if (across >= 0) {
+                        const std::size_t u = static_cast<std::size_t>(across) / 3;
+                        for (int c = 0; c < 2; ++c)
+                            d[c] = (xy[2 * tri[3 * u] + c] + xy[2 * tri[3 * u + 1] + c] + xy[2 * tri[3 * u + 2] + c]) / 3 - C[c];
+                    } else {
+                        for (int c = 0; c < 2; ++c) d[c] = C[c] - (P[a][c] + P[b][c]) / 2;
+                    }
+                    const double ax = P[a][0] - C[0], ay = P[a][1] - C[1], bx = P[b][0] - C[0], by = P[b][1] - C[1];
+                    const double det = ax * by - ay * bx;
+                    alpha[m] = (d[0] * by - d[1] * bx) / det;
+                    beta[m] = (ax * d[1] - ay * d[0]) / det;
+                }
+                // The sub-triangle (P_i, P_j, C) opposite the corner m of least weight (the first).
+                const double* w = &found.barycentric[3 * i];
+                const int m = w[1] < w[0] ? (w[2] < w[1] ? 2 : 1) : (w[2] < w[0] ? 2 : 0);
+                const int a = (m + 1) % 3, b = (m + 2) % 3;
+                const double s = w[a] - w[m], r = w[b] - w[m], q = 3 * w[m];
+                for (std::size_t c = 0; c < columns; ++c) {
+                    double F[3], centre[3], along_i[3], along_j[3], T[3];
+                    const auto grad = [&](int k, const double* e) {
+                        const double* gk = g + (static_cast<std::size_t>(v[k]) * columns + c) * 2;
+                        return gk[0] * e[0] + gk[1] * e[1];
+                    };
+                    for (int k = 0; k < 3; ++k) {
+                        F[k] = f[static_cast<std::size_t>(v[k]) * columns + c];
+                        const double e[2] = {C[0] - P[k][0], C[1] - P[k][1]};
+                        centre[k] = F[k] + grad(k, e) / 3;
+                    }
+                    for (int e = 0; e < 3; ++e) {
+                        const int ei = (e + 1) % 3, ej = (e + 2) % 3;
+                        const double edge[2] = {P[ej][0] - P[ei][0], P[ej][1] - P[ei][1]};
+                        along_i[e] = F[ei] + grad(ei, edge) / 3;
+                        along_j[e] = F[ej] - grad(ej, edge) / 3;
+                        const double gamma = -alpha[e] - beta[e];
+                        const double k0 = alpha[e] * F[ei] + beta[e] * along_i[e] + gamma * centre[ei];
+                        const double k2 = alpha[e] * along_j[e] + beta[e] * F[ej] + gamma * centre[ej];
+                        T[e] = ((k0 + k2) / 2 - alpha[e] * along_i[e] - beta[e] * along_j[e]) / gamma;
+                    }
+                    double D[3];
+                    for (int k = 0; k < 3; ++k) D[k] = (centre[k] + T[(k + 1) % 3] + T[(k + 2) % 3]) / 3;
+                    const double S = (D[0] + D[1] + D[2]) / 3;
+                    row[c] = s * s * s * F[a] + r * r * r * F[b] + q * q * q * S + 3 * s * s * r * along_i[m] +
+                             3 * s * r * r * along_j[m] + 3 * s * s * q * centre[a] + 3 * r * r * q * centre[b] +
+                             3 * s * q * q * D[a] + 3 * r * q * q * D[b] + 6 * s * r * q * T[m];
+                }
+            }
+        };
+        {
+            py::gil_scoped_release unlocked;
+            const std::size_t parts = n < (std::size_t{1} << 14) ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 4);
+            JoinedThreads workers;
+            for (std::size_t k = 1; k < parts; ++k) workers.threads.emplace_back(patch, n * k / parts, n * (k + 1) / parts);
+            patch(0, n / parts);
+        }
+        return py::make_tuple(owned(std::move(found.triangle)), out);
+    }
+
     /// hullkit::delaunay_gradients on (n, k) values: (gradients (n, k, 2), sweeps, converged).
     py::tuple gradients(const Points& values, double tolerance, unsigned max_iterations) const {
         if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
@@ -823,6 +933,7 @@ PYBIND11_MODULE(_core, m) {
         .def("scipy_arrays", &Triangulation::scipy_arrays)
         .def("gradients", &Triangulation::gradients)
         .def("interpolate", &Triangulation::interpolate)
+        .def("clough_tocher", &Triangulation::clough_tocher)
         .def("voronoi", &Triangulation::voronoi);
 
     using hullkit::Delaunay3;
