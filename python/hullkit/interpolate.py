@@ -157,7 +157,11 @@ class _Base:
     def __reduce__(self):
         return (_rebuild, (type(self), self._inputs, getattr(self, "_options", {})))
 
+    _query_options = False  # NearestNDInterpolator takes cKDTree.query's (some of them)
+
     def __call__(self, *args, **options):
+        if options and not self._query_options:
+            raise HullkitError(f"{type(self).__name__} takes no query options, got {sorted(options)}")
         xi, shape = _query_points(args, self.ndim)
         if self.scale is not None:
             xi = (xi - self.offset) / self.scale
@@ -253,6 +257,7 @@ class NearestNDInterpolator(_Base):
     """
 
     _keep_dtype = True
+    _query_options = True
 
     # cKDTree's construction options: they shape scipy's tree, never its answers, and hullkit has
     # no tree, so they are accepted and have no effect. (boxsize, a periodic space, would change
@@ -277,10 +282,9 @@ class NearestNDInterpolator(_Base):
             raise HullkitError("NearestNDInterpolator needs at least one point")
         out = self.values[near]
         if _np.isfinite(distance_upper_bound):
-            far = _np.linalg.norm(self._scaled_points[near] - xi, axis=1) >= distance_upper_bound
-            if far.any():
-                out = out.astype(_np.result_type(out.dtype, _np.float64))
-                out[far] = _np.nan
+            # NaN beyond the bound: a floating type whenever a bound is given, whatever the queries.
+            out = out.astype(_np.result_type(out.dtype, _np.float64))
+            out[_np.linalg.norm(self._scaled_points[near] - xi, axis=1) >= distance_upper_bound] = _np.nan
         return out
 
 

@@ -1,7 +1,7 @@
-"""scipy.spatial's ConvexHull and Delaunay on hullkit's exact core: switching is a change of
-import.
+"""scipy.spatial's ConvexHull, Delaunay, Voronoi and tsearch on hullkit's exact core: switching
+is a change of import.
 
-    from hullkit.spatial import ConvexHull, Delaunay   # instead of: from scipy.spatial import ...
+    from hullkit.spatial import ConvexHull, Delaunay, Voronoi   # instead of: from scipy.spatial import ...
 
 The attributes have scipy's names, shapes, dtypes and conventions. Where scipy raises
 (QhullError on flat, collinear, repeated or too few points), hullkit answers, and ``dimension``
@@ -35,15 +35,27 @@ point no simplices and an empty ``convex_hull`` (``vertex_neighbor_vertices`` li
 along the line). ``find_simplex`` is exact (hullkit.Delaunay3.locate): a point on a shared
 face, edge or vertex gets the lowest-indexed simplex around it.
 
+Voronoi (2D on ``hullkit.delaunay(merge_cocircular=True)``, 3D on ``hullkit.Delaunay3.voronoi``):
+``vertices``, ``ridge_points``, ``ridge_vertices``, ``ridge_dict``, ``regions``,
+``point_region``, ``furthest_site``, ``points``, ``npoints``, ``ndim``, ``min_bound``,
+``max_bound``; and ``volumes`` (each point's cell area or volume, inf when unbounded) and
+``dimension``. Which vertices, ridges and regions exist is exact: cocircular or cospherical points
+share one vertex (a grid's are the cell centres, exactly); 3D faces with one finite vertex, which
+Qhull leaves out, are listed. A repeated point shares the region of the first point equal to it;
+collinear or coplanar points give the diagram without vertices (see Voronoi).
+``tsearch(tri, xi)`` is ``tri.find_simplex(xi)``.
+
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
 point). Options scipy has and hullkit does not (qhull_options, incremental, furthest_site,
 dimensions beyond 3) raise a clear "not supported".
 """
+import gc as _gc
+
 import numpy as _np
 
 from . import HullkitError, _core, _translated, as_points, delaunay, delaunay3, hull
 
-__all__ = ["ConvexHull", "Delaunay"]
+__all__ = ["ConvexHull", "Delaunay", "Voronoi", "tsearch"]
 
 
 def _bounds(array, ndim):
@@ -59,6 +71,26 @@ def _not_supported(what, cls="ConvexHull"):
     raise HullkitError(f"{what} is not supported by hullkit.spatial.{cls} (hullkit is exact; it has no Qhull options)")
 
 
+def _checked_points(points, cls, furthest_site, incremental, qhull_options, many=None):
+    """The points of a ``cls`` (ConvexHull, Delaunay, Voronoi) as a C-ordered float64 (n, 2) or
+    (n, 3) array, or HullkitError (also for the Qhull options hullkit has not; ``many``: what the
+    message calls the object in more dimensions, the class's name by default)."""
+    for flag, what in ((furthest_site, "furthest_site=True"), (incremental, "incremental=True")):
+        if flag:
+            _not_supported(what, cls)
+    if qhull_options is not None:
+        _not_supported(f"qhull_options={qhull_options!r}", cls)
+    try:
+        array = _np.ascontiguousarray(points, dtype=_np.float64)
+    except (TypeError, ValueError) as error:
+        raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
+    if array.ndim != 2 or array.shape[1] not in (2, 3):
+        if array.ndim == 2 and array.shape[1] > 3:
+            _not_supported(f"{many or cls} in {array.shape[1]} dimensions", cls)
+        raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
+    return array
+
+
 class ConvexHull:
     """The convex hull of points in 2 or 3 dimensions (see the module's documentation).
 
@@ -66,18 +98,7 @@ class ConvexHull:
     npoints, ndim, min_bound, max_bound; and dimension."""
 
     def __init__(self, points, incremental=False, qhull_options=None):
-        if incremental:
-            _not_supported("incremental=True")
-        if qhull_options is not None:
-            _not_supported(f"qhull_options={qhull_options!r}")
-        try:
-            array = _np.ascontiguousarray(points, dtype=_np.float64)
-        except (TypeError, ValueError) as error:
-            raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
-        if array.ndim != 2 or array.shape[1] not in (2, 3):
-            if array.ndim == 2 and array.shape[1] > 3:
-                _not_supported(f"a hull in {array.shape[1]} dimensions")
-            raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
+        array = _checked_points(points, "ConvexHull", False, incremental, qhull_options, "a hull")
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
@@ -159,19 +180,7 @@ class Delaunay:
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
-        for flag, what in ((furthest_site, "furthest_site=True"), (incremental, "incremental=True")):
-            if flag:
-                _not_supported(what, "Delaunay")
-        if qhull_options is not None:
-            _not_supported(f"qhull_options={qhull_options!r}", "Delaunay")
-        try:
-            array = _np.ascontiguousarray(points, dtype=_np.float64)
-        except (TypeError, ValueError) as error:
-            raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
-        if array.ndim != 2 or array.shape[1] not in (2, 3):
-            if array.ndim == 2 and array.shape[1] > 3:
-                _not_supported(f"Delaunay in {array.shape[1]} dimensions", "Delaunay")
-            raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
+        array = _checked_points(points, "Delaunay", furthest_site, incremental, qhull_options)
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
@@ -298,3 +307,316 @@ class Delaunay:
     def __repr__(self):
         return (f"hullkit.spatial.Delaunay(npoints={self.npoints}, nsimplex={self.nsimplex}, "
                 f"dimension={self.dimension})")
+
+
+def tsearch(tri, xi):
+    """The simplex of ``tri`` (a hullkit.spatial.Delaunay) holding each point of ``xi``: the same
+    as ``tri.find_simplex(xi)``, as scipy.spatial.tsearch (-1 outside; exact).
+
+    Examples
+    --------
+    >>> from hullkit.spatial import Delaunay, tsearch
+    >>> tsearch(Delaunay([[0, 0], [1, 0], [0, 1]]), [[0.25, 0.25], [1, 1]]).tolist()
+    [0, -1]
+    """
+    if not hasattr(tri, "find_simplex"):
+        raise HullkitError(f"tsearch needs a Delaunay triangulation, got {type(tri).__name__}")
+    return tri.find_simplex(xi)
+
+
+# -- Voronoi ---------------------------------------------------------------------------------------
+
+def _circumcentres(a, b, c):
+    """The circumcentres of the triangles a, b, c ((m, 2) each), from the differences to a (the
+    corner's coordinates added last, so that a cloud far from the origin loses nothing more),
+    each triangle's scaled by a power of two to about 1 (exactly: no overflow or underflow in the
+    squares of tiny or huge triangles)."""
+    ba, ca = b - a, c - a
+    _, exponent = _np.frexp(_np.maximum(_np.abs(ba).max(axis=1), _np.abs(ca).max(axis=1)))
+    ba, ca = _np.ldexp(ba, -exponent[:, None]), _np.ldexp(ca, -exponent[:, None])
+    lb, lc = _np.einsum("ij,ij->i", ba, ba), _np.einsum("ij,ij->i", ca, ca)
+    denominator = 2.0 * (ba[:, 0] * ca[:, 1] - ba[:, 1] * ca[:, 0])
+    with _np.errstate(all="ignore"):  # a centre beyond the doubles' range: inf
+        x = (ca[:, 1] * lb - ba[:, 1] * lc) / denominator
+        y = (ba[:, 0] * lc - ca[:, 0] * lb) / denominator
+        return a + _np.ldexp(_np.stack([x, y], axis=1), exponent[:, None])
+
+
+class _no_collection:
+    """Python's cyclic garbage collector paused while millions of lists are made (it would walk
+    them over and over: twice the time), and restored as it was."""
+
+    def __enter__(self):
+        self._was = _gc.isenabled()
+        _gc.disable()
+
+    def __exit__(self, *exc):
+        if self._was:
+            _gc.enable()
+        return False
+
+
+def _grouped(flat, offsets, rows):
+    """Python lists flat[offsets[r]:offsets[r + 1]] for each r in rows (ints, as scipy's)."""
+    with _no_collection():
+        values, bounds = flat.tolist(), offsets.tolist()
+        return [values[bounds[r]: bounds[r + 1]] for r in rows]
+
+
+def _offsets(sizes):
+    return _np.concatenate([[0], _np.cumsum(sizes)]).astype(_np.int64)
+
+
+class Voronoi:
+    """The Voronoi diagram of points in 2D or 3D, with scipy.spatial.Voronoi's attributes, on
+    hullkit's exact Delaunay (which vertices, ridges and regions exist is decided exactly; the
+    coordinates are rounded).
+
+    Attributes (scipy's): ``points``, ``npoints``, ``ndim``, ``min_bound``, ``max_bound``,
+    ``vertices`` (nv, ndim) float64, ``ridge_points`` (nr, 2) int32 (p < q), ``ridge_vertices``
+    (a list per ridge; -1 is the vertex at infinity), ``ridge_dict`` ({(p, q): ridge vertices}),
+    ``regions`` (lists of vertex indices, -1 in an unbounded one), ``point_region`` (intp, each
+    point's index into ``regions``), ``furthest_site`` (False). And two scipy lacks: ``volumes``
+    (per point, its cell's area in 2D or volume in 3D; inf when unbounded) and ``dimension``
+    (what the points span: 2 or 3, less for degenerate input).
+
+    * Cocircular (2D) or cospherical (3D) points share one vertex, as Qhull merges them (a grid
+      has one vertex per square or cube, exactly at its centre).
+    * 2D: ``regions`` are counter-clockwise, a bounded one from its lowest vertex, an unbounded
+      one with -1 last (between its last and first vertex); a ridge is ``[a, b]``, or
+      ``[-1, a]`` for a ray. 3D: a region lists its
+      vertices ascending (-1 first if unbounded; scipy's order is Qhull's); a ridge lists its
+      face's vertices in order around it, an unbounded face ``[-1, a, ..., b]`` (the chain between
+      its two rays). Unlike Qhull, every face is listed, also an unbounded one with a single
+      finite vertex (Qhull's option Fv leaves out ridges that need two rays).
+    * ``regions[0]`` is empty, as scipy's (the region of Qhull's point at infinity), and there is
+      one more region for each distinct point: ``len(regions)`` is the number of distinct points
+      plus one.
+    * Repeated points: the lowest index of each set of equal points has the cell; the others share
+      its ``point_region`` and ``volumes`` entry and have no ridges of their own.
+    * Where scipy raises QhullError, hullkit gives the diagram that exists: collinear 2D points
+      have no vertices, and parallel lines between consecutive points along the line as ridges
+      (``[-1, -1]``: both ends at infinity); in 3D, coplanar points have no vertices and a ridge
+      ``[-1]`` between each pair of points whose cells share a face (the planar Voronoi edge swept
+      along the normal), collinear points a plane ``[-1]`` between consecutive points. One point
+      has the whole space as its cell (region ``[-1]``). Every cell is then unbounded.
+    * ``furthest_site=True``, ``incremental=True`` and ``qhull_options`` raise "not supported";
+      NaN or infinite coordinates and wrong shapes raise HullkitError (a ValueError).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hullkit.spatial import Voronoi
+    >>> points = np.array([[x, y] for x in range(3) for y in range(3)], dtype=float)
+    >>> vor = Voronoi(points)
+    >>> vor.vertices.tolist()
+    [[0.5, 0.5], [0.5, 1.5], [1.5, 0.5], [1.5, 1.5]]
+    >>> vor.regions[vor.point_region[4]]  # the centre's cell, counter-clockwise
+    [0, 2, 3, 1]
+    >>> vor.regions[vor.point_region[1]]  # (0, 1)'s: unbounded, -1 last
+    [0, 1, -1]
+    >>> vor.ridge_dict[(1, 4)], vor.ridge_dict[(0, 1)]
+    ([1, 0], [-1, 0])
+    >>> vor.volumes.tolist()[:5]
+    [inf, inf, inf, inf, 1.0]
+    >>> cube = np.array([[x, y, z] for x in range(3) for y in range(3) for z in range(3)], dtype=float)
+    >>> vor3 = Voronoi(cube)
+    >>> len(vor3.vertices), float(vor3.volumes[13]), sorted(vor3.regions[vor3.point_region[13]])
+    (8, 1.0, [0, 1, 2, 3, 4, 5, 6, 7])
+    """
+
+    def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
+        array = _checked_points(points, "Voronoi", furthest_site, incremental, qhull_options)
+        self.points = array
+        self.npoints, self.ndim = array.shape
+        self.min_bound, self.max_bound = _bounds(array, self.ndim)
+        self.furthest_site = False
+        self._ridge_dict = None
+        if self.ndim == 3:
+            representative, cells, offsets, volumes = self._from_3d(array)
+        else:
+            representative, cells, offsets, volumes = self._from_2d(array)
+        # One region per distinct point (ascending), after scipy's empty one.
+        representative = _np.asarray(representative, dtype=_np.intp)
+        distinct = _np.flatnonzero(representative == _np.arange(self.npoints))
+        region = _np.zeros(self.npoints, dtype=_np.intp)
+        region[distinct] = _np.arange(1, len(distinct) + 1)
+        self.point_region = region[representative]
+        self.regions = [[]] + _grouped(cells, offsets, distinct)
+        self.volumes = volumes[representative]
+
+    @property
+    def ridge_dict(self):
+        """{(p, q): ridge vertices} for each ridge (scipy's; built once, on first use)."""
+        if self._ridge_dict is None:
+            self._ridge_dict = dict(zip(map(tuple, self.ridge_points.tolist()), self.ridge_vertices))
+        return self._ridge_dict
+
+    def _without_vertices(self, representative):
+        """No vertices: every distinct point's cell unbounded (region [-1], volume inf)."""
+        self.vertices = _np.zeros((0, self.ndim))
+        distinct = _np.asarray(representative) == _np.arange(self.npoints)
+        return (representative, _np.full(int(distinct.sum()), -1, dtype=_np.int64), _offsets(distinct),
+                _np.where(distinct, _np.inf, _np.nan))
+
+    def _along_line(self, representative, chain, ridge):
+        """Points on a line (or one point): ridges between the points of ``chain`` consecutive in
+        it (``ridge``: each one's vertex list), no vertices."""
+        chain = _np.asarray(chain, dtype=_np.int64)
+        self._set_ridges(_np.stack([chain[:-1], chain[1:]], axis=1) if len(chain) > 1 else _np.zeros((0, 2)),
+                         [list(ridge) for _ in range(max(len(chain) - 1, 0))])
+        return self._without_vertices(representative)
+
+    def _set_ridges(self, pairs, vertices):
+        self.ridge_points = _np.sort(_np.asarray(pairs, dtype=_np.int64).reshape(-1, 2), axis=1).astype(_np.int32)
+        self.ridge_vertices = vertices
+
+    # -- 2D ------------------------------------------------------------------------------------
+    def _from_2d(self, xy):
+        with _translated():
+            core = _core.Triangulation(xy, "incremental", True, 0)
+        self.dimension = core.dimension
+        if core.dimension < 2:  # collinear: the points in order along the line (or one point)
+            return self._along_line(core.representative, core.hull, (-1, -1))
+        n = len(xy)
+        offsets = core.polygon_offsets.astype(_np.int64)
+        corners = core.polygon_vertices.astype(_np.int64)
+        sizes = _np.diff(offsets)
+        polygon = _np.repeat(_np.arange(len(sizes)), sizes)  # each corner's (directed edge's) polygon
+        edge = _np.arange(len(corners))
+        following = edge + 1
+        following[offsets[1:] - 1] = offsets[:-1]
+        preceding = edge - 1
+        preceding[offsets[:-1]] = offsets[1:] - 1
+        # Directed edge e runs from corners[e] to corners[following[e]], its polygon on one side
+        # (the polygons are clockwise); its twin runs the other way in the polygon across, or is
+        # -1 on the hull. Twins are neighbours once the edges are sorted without their direction.
+        start, end = corners, corners[following]
+        order = _np.argsort(_np.minimum(start, end) * n + _np.maximum(start, end), kind="stable")
+        pair = _np.flatnonzero((start[order[1:]] == end[order[:-1]]) & (end[order[1:]] == start[order[:-1]]))
+        twin = _np.full(len(corners), -1, dtype=_np.int64)
+        twin[order[pair]], twin[order[pair + 1]] = order[pair + 1], order[pair]
+
+        # One vertex per Delaunay polygon: the circle through its corners 0, m/3, 2m/3.
+        first = offsets[:-1]
+        self.vertices = _circumcentres(xy[corners[first]], xy[corners[first + sizes // 3]],
+                                       xy[corners[first + 2 * sizes // 3]])
+        # A ridge per Delaunay edge (each once): between two polygons, or a ray from a hull edge's.
+        once = (twin < 0) | (edge < twin)
+        across = _np.where(twin < 0, -1, polygon[twin])
+        with _no_collection():
+            ridge_vertices = _np.stack([across[once], polygon[once]], axis=1).tolist()
+        self._set_ridges(_np.stack([start[once], end[once]], axis=1), ridge_vertices)
+
+        # Cells: the polygons around each point, counter-clockwise: from the polygon of out-edge e
+        # across e (to the twin's polygon, whose out-edge of the point follows the twin). A hull
+        # point's chain starts where the edge into it has no twin and ends at an out-edge without.
+        turn = _np.where(twin >= 0, following[twin], -1)
+        opens = twin[preceding] < 0
+        head = _np.zeros(n, dtype=_np.int64)
+        head[start] = edge  # any out-edge of a bounded cell's point (the cell is turned below)
+        unbounded = _np.zeros(n, dtype=bool)
+        unbounded[start[opens]] = True
+        head[start[opens]] = edge[opens]
+        # Steps to the chain's end (each bounded cell's cycle cut before its head), by pointer
+        # jumping: log2 of the largest degree rounds.
+        jump = _np.where(turn == head[start], -1, turn)
+        remaining = (jump >= 0).astype(_np.int64)
+        live = _np.flatnonzero(jump >= 0)
+        while len(live):
+            ahead = jump[live]
+            remaining[live] = remaining[live] + remaining[ahead]
+            jump[live] = jump[ahead]
+            live = live[jump[live] >= 0]
+        degree = _np.bincount(start, minlength=n)
+        rank = degree[start] - 1 - remaining  # the head's is 0
+        # A bounded cell turned to start at its lowest vertex (the same lists for the same points).
+        around = _offsets(degree)
+        ring = _np.empty(len(corners), dtype=_np.int64)
+        ring[around[start] + rank] = polygon
+        some = _np.flatnonzero(degree)
+        lowest = _np.full(n, -1, dtype=_np.int64)
+        lowest[some] = _np.minimum.reduceat(ring, around[some])
+        shift = _np.zeros(n, dtype=_np.int64)
+        shift[start[polygon == lowest[start]]] = rank[polygon == lowest[start]]
+        rank = _np.where(unbounded[start], rank, (rank - shift[start]) % degree[start])
+        cell_offsets = _offsets(degree + unbounded)
+        cells = _np.full(cell_offsets[-1], -1, dtype=_np.int64)
+        cells[cell_offsets[start] + rank] = polygon  # the -1 of an unbounded cell stays last
+
+        # Areas of the bounded cells: the fan from the point over each edge of the cell.
+        closed = _np.flatnonzero(~unbounded[start])
+        corner = self.vertices[polygon]
+        site = xy[start[closed]]
+        with _np.errstate(all="ignore"):  # areas beyond the doubles' range: inf
+            u, v = corner[closed] - site, corner[turn[closed]] - site
+            cross = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+            volumes = 0.5 * _np.bincount(start[closed], weights=cross, minlength=n)
+        volumes[unbounded] = _np.inf
+        return core.representative, cells, cell_offsets, volumes
+
+    # -- 3D ------------------------------------------------------------------------------------
+    def _from_3d(self, xyz):
+        d = delaunay3(xyz)
+        self.dimension = d.dimension
+        if d.dimension == 3:
+            v = d.voronoi()
+            self.vertices = v["vertices"]
+            real = _np.ones(len(v["face_points"]), dtype=bool)
+            return (d.representative, *self._faces_3d(v, real, len(xyz)), v["volume"])
+        if d.dimension == 2:
+            return self._coplanar_3d(xyz, d)
+        return self._along_line(d.representative, d.vertices, (-1,))
+
+    def _faces_3d(self, v, real, n):
+        """Ridges from the core's faces that are ``real``; each point's cell vertices."""
+        face_points = v["face_points"].astype(_np.int64)
+        offsets = v["face_offsets"].astype(_np.int64)
+        corners = v["face_vertices"].astype(_np.int64)
+        unbounded = v["face_bounded"] == 0
+        sizes = _np.diff(offsets)
+        face = _np.repeat(_np.arange(len(sizes)), sizes)
+        # Ridge vertices: the face's, after a -1 where it is unbounded.
+        kept = _np.flatnonzero(real)
+        ridge_offsets = _offsets(sizes[kept] + unbounded[kept])
+        flat = _np.full(ridge_offsets[-1], -1, dtype=_np.int64)
+        take = real[face]
+        position = _np.arange(len(corners)) - offsets[face]
+        new_index = _np.cumsum(real) - 1
+        flat[ridge_offsets[new_index[face[take]]] + unbounded[face[take]] + position[take]] = corners[take]
+        self._set_ridges(face_points[kept], _grouped(flat, ridge_offsets, range(len(kept))))
+        # Cells: each point's vertices over its faces (ascending), -1 (first) when one is unbounded.
+        count = len(self.vertices) + 1
+        pairs = _np.concatenate([face_points[face, 0] * count + corners + 1, face_points[face, 1] * count + corners + 1,
+                                 face_points[unbounded, 0] * count, face_points[unbounded, 1] * count])
+        pairs = _np.unique(pairs)
+        cells = pairs % count - 1
+        return cells, _offsets(_np.bincount(pairs // count, minlength=n))
+
+    def _coplanar_3d(self, xyz, d):
+        """Coplanar points: cells are prisms over the planar cells, unbounded, without vertices. Which
+        cells share a face is the planar Voronoi diagram's adjacency, read exactly off the
+        tetrahedralization of the points and one apex off their plane (each planar Delaunay triangle
+        and the apex make a tetrahedron; cocircular triangles share a circumcentre)."""
+        n = len(xyz)
+        low, high = self.min_bound, self.max_bound
+        # Off the plane by at least the cloud's size and a quarter of its largest coordinate: far
+        # beyond what rounding the apex's coordinates can take back.
+        # Along the plane's normal, or (when that rounded to nothing, as for coordinates near
+        # 1e300) along the first axis that leaves the plane: exactly decided by delaunay3.
+        reach = max(float((high / 2 - low / 2).max()) * 2, float(_np.abs([low, high]).max()) / 4)
+        for direction in (_np.asarray(d.normal), *_np.eye(3)):
+            lifted = _np.vstack([xyz, low / 2 + high / 2 + reach * direction])
+            pyramid = delaunay3(lifted)
+            if pyramid.dimension == 3:
+                break
+        v = pyramid.voronoi()
+        real = v["face_points"][:, 1] < n  # not the apex's faces
+        pairs = v["face_points"][real]
+        self._set_ridges(pairs, [[-1] for _ in range(len(pairs))])
+        return self._without_vertices(d.representative)
+
+    def __repr__(self):
+        return (f"hullkit.spatial.Voronoi(npoints={self.npoints}, ndim={self.ndim}, dimension={self.dimension}, "
+                f"vertices={len(self.vertices)}, ridges={len(self.ridge_points)})")
+

@@ -94,6 +94,28 @@ TEST_CASE("delaunay3_voronoi: a grid's inner cells are unit cubes, one vertex pe
     }
 }
 
+TEST_CASE("delaunay3_voronoi: faces only between cells that share a polygon (none across a flat hull polygon's diagonal)", "[delaunay3]") {
+    // A cube's corners: one vertex (the centre); the cells are octants, and two corners share a
+    // face (a quarter-plane) only along a cube edge: 12 faces. Across a square face's diagonal the
+    // cells meet in a half-line only, which is no face. A 3 x 3 x 3 grid: its 54 unit-length edges.
+    std::vector<double> cube, grid;
+    for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y)
+            for (int z = 0; z < 3; ++z) {
+                grid.insert(grid.end(), {double(x), double(y), double(z)});
+                if (x < 2 && y < 2 && z < 2) cube.insert(cube.end(), {double(x), double(y), double(z)});
+            }
+    for (const auto& [points, faces] : {std::pair{cube, std::size_t{12}}, std::pair{grid, std::size_t{54}}}) {
+        const Voronoi3 v = voronoi_of(points);
+        REQUIRE(v.face_count() == faces);
+        for (std::size_t f = 0; f < v.face_count(); ++f) {
+            const double* a = &points[3 * v.face_points[2 * f]];
+            const double* b = &points[3 * v.face_points[2 * f + 1]];
+            REQUIRE(std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]) + std::fabs(a[2] - b[2]) == 1.0);
+        }
+    }
+}
+
 TEST_CASE("delaunay3_voronoi: random points, each bounded cell the hull of its vertices", "[delaunay3]") {
     std::mt19937_64 rng(21);
     std::uniform_real_distribution<double> u(0, 1);

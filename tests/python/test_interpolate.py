@@ -180,6 +180,9 @@ def test_nearest_matches_brute_force_with_ties_to_the_lowest_index(ndim):
     assert np.isnan(bounded[far]).all() and not np.isnan(bounded[~far]).any()
     with pytest.raises(HullkitError, match="eps"):
         NearestNDInterpolator(points, values)(queries, eps=0.1)
+    assert NearestNDInterpolator(points, values)(points[:3], distance_upper_bound=100.0).dtype == np.float64
+    with pytest.raises(HullkitError, match="takes no query options"):
+        LinearNDInterpolator(points, values)(queries, distance_upper_bound=1.0)
 
 
 def test_griddata_matches_scipy():

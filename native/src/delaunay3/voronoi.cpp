@@ -171,6 +171,15 @@ Voronoi3 delaunay3_voronoi(PointSpan points, const Delaunay3& d) {
                         cur = u;
                     }
                     if (!owner) continue;
+                    // Both rays from one vertex, perpendicular to two coplanar hull triangles
+                    // (p q bc, p q dd): one ray, p q a diagonal of a cocircular hull polygon, and
+                    // the "face" only a half-line: none (a cube's face diagonals have none).
+                    bool one_vertex = true;
+                    const std::uint32_t only = out.tetrahedron_vertex[t];
+                    for (const std::int32_t u : ring_tets) one_vertex = one_vertex && out.tetrahedron_vertex[static_cast<std::size_t>(u)] == only;
+                    for (const std::int32_t u : back) one_vertex = one_vertex && out.tetrahedron_vertex[static_cast<std::size_t>(u)] == only;
+                    double a[3], b[3], e[3], f[3];
+                    if (one_vertex && orient3d(scaled(p, a), scaled(q, b), scaled(bc, e), scaled(dd, f)) == 0) continue;
                     std::reverse(back.begin(), back.end());
                     back.insert(back.end(), ring_tets.begin(), ring_tets.end());
                     ring_tets.swap(back);
