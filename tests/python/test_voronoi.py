@@ -86,7 +86,7 @@ def test_matches_scipy_in_general_position(ndim, n, seed):
         assert our_ridges == their_ridges
     else:
         # Qhull leaves out (its option Fv documents it) the unbounded faces with one finite vertex:
-        # with one finite vertex. hullkit lists them; every other ridge is the same.
+        # hullkit lists them; every other ridge is the same.
         extra = set(our_ridges) - set(their_ridges)
         assert extra == single_vertex_unbounded(our_ridges) and extra
         assert {k: v for k, v in our_ridges.items() if k not in extra} == their_ridges
