@@ -163,6 +163,20 @@ class HullBuilder:
 
 # ---- Delaunay ------------------------------------------------------------------------------------
 
+def _located(core, queries, dims, simplex, barycentric, nearest, threads):
+    """The core's locate on (q, dims) ``queries`` as the dict Delaunay.locate and Delaunay3.locate
+    return: ``simplex`` (the key of the holding simplex), and what was asked for."""
+    array = as_points(queries, dims, "queries")
+    with _translated():
+        found, weights, near = core.locate(array, bool(barycentric), bool(nearest), _threads(threads))
+    out = {simplex: found}
+    if barycentric:
+        out["barycentric"] = weights
+    if nearest:
+        out["nearest"] = near
+    return out
+
+
 class _CoreViews:
     """A result that views a core object's arrays (kept alive by them): ``points``,
     ``dimension``, ``duplicate_count``, and each name in ``_arrays`` as a read-only view of the
@@ -231,15 +245,7 @@ class Delaunay(_CoreViews):
         >>> (w @ d.points[d.triangles[3 * t: 3 * t + 3]]).tolist()
         [0.25, 0.5]
         """
-        array = as_points(queries, 2, "queries")
-        with _translated():
-            triangle, weights, near = self._core.locate(array, bool(barycentric), bool(nearest), _threads(threads))
-        out = {"triangle": triangle}
-        if barycentric:
-            out["barycentric"] = weights
-        if nearest:
-            out["nearest"] = near
-        return out
+        return _located(self._core, queries, 2, "triangle", barycentric, nearest, threads)
 
     def voronoi(self, bounds=None):
         """Voronoi cells clipped to ``bounds`` (xmin, ymin, xmax, ymax; default the points'
@@ -336,15 +342,7 @@ class Delaunay3(_CoreViews):
         >>> [round(float(c), 12) for c in w @ d.points[d.tetrahedra[t]]]
         [0.25, 0.25, 0.25]
         """
-        array = as_points(queries, 3, "queries")
-        with _translated():
-            tetrahedron, weights, near = self._core.locate(array, bool(barycentric), bool(nearest), _threads(threads))
-        out = {"tetrahedron": tetrahedron}
-        if barycentric:
-            out["barycentric"] = weights
-        if nearest:
-            out["nearest"] = near
-        return out
+        return _located(self._core, queries, 3, "tetrahedron", barycentric, nearest, threads)
 
     def voronoi(self):
         """The Voronoi diagram, dual to this tetrahedralization. A dict of arrays (numbers are

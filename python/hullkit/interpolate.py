@@ -292,8 +292,7 @@ def _gradients(core, values, tol, maxiter):
     """Gradients (n, k, 2) of (n, k) real or complex values over a 2D hullkit.Delaunay (the real
     and imaginary parts separately: the estimate is linear in the values)."""
     complex_values = _np.iscomplexobj(values)
-    columns = _np.ascontiguousarray(_np.concatenate([values.real, values.imag], axis=1) if complex_values else values,
-                                    dtype=_np.float64)
+    columns = _real_columns(values, complex_values)
     if not _np.isfinite(tol) or tol < 0:
         raise HullkitError(f"tol must be a finite number >= 0, got {tol!r}")
     if int(maxiter) < 1:

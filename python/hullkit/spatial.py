@@ -562,14 +562,13 @@ class Voronoi:
         if d.dimension == 3:
             v = d.voronoi()
             self.vertices = v["vertices"]
-            real = _np.ones(len(v["face_points"]), dtype=bool)
-            return (d.representative, *self._faces_3d(v, real, len(xyz)), v["volume"])
+            return (d.representative, *self._faces_3d(v, len(xyz)), v["volume"])
         if d.dimension == 2:
             return self._coplanar_3d(xyz, d)
         return self._along_line(d.representative, d.vertices, (-1,))
 
-    def _faces_3d(self, v, real, n):
-        """Ridges from the core's faces that are ``real``; each point's cell vertices."""
+    def _faces_3d(self, v, n):
+        """Ridges from the core's faces; each point's cell vertices."""
         face_points = v["face_points"].astype(_np.int64)
         offsets = v["face_offsets"].astype(_np.int64)
         corners = v["face_vertices"].astype(_np.int64)
@@ -577,14 +576,11 @@ class Voronoi:
         sizes = _np.diff(offsets)
         face = _np.repeat(_np.arange(len(sizes)), sizes)
         # Ridge vertices: the face's, after a -1 where it is unbounded.
-        kept = _np.flatnonzero(real)
-        ridge_offsets = _offsets(sizes[kept] + unbounded[kept])
+        ridge_offsets = _offsets(sizes + unbounded)
         flat = _np.full(ridge_offsets[-1], -1, dtype=_np.int64)
-        take = real[face]
         position = _np.arange(len(corners)) - offsets[face]
-        new_index = _np.cumsum(real) - 1
-        flat[ridge_offsets[new_index[face[take]]] + unbounded[face[take]] + position[take]] = corners[take]
-        self._set_ridges(face_points[kept], _grouped(flat, ridge_offsets, range(len(kept))))
+        flat[ridge_offsets[face] + unbounded[face] + position] = corners
+        self._set_ridges(face_points, _grouped(flat, ridge_offsets, range(len(sizes))))
         # Cells: each point's vertices over its faces (ascending), -1 (first) when one is unbounded.
         count = len(self.vertices) + 1
         pairs = _np.concatenate([face_points[face, 0] * count + corners + 1, face_points[face, 1] * count + corners + 1,

@@ -112,6 +112,39 @@ std::size_t rows(const Points& points, py::ssize_t dims, const char* what) {
     return static_cast<std::size_t>(points.shape(0));
 }
 
+/// Fails unless `values` has one row per point (of `points`): (n, k).
+void check_values(const Points& values, const Points& points) {
+    if (values.ndim() != 2 || values.shape(0) != points.shape(0))
+        throw std::invalid_argument("values must have shape (" + std::to_string(points.shape(0)) + ", k)");
+}
+
+/// A core point location (delaunay_locate or delaunay3_locate, given as `locate(data, count,
+/// options)`) on (q, Dims) queries with the GIL released; its error raised as CoreError.
+template <std::size_t Dims, class Options, class Locate>
+auto run_locate(const Points& queries, bool barycentric, bool nearest, unsigned threads, Locate locate) {
+    const std::size_t n = rows(queries, static_cast<py::ssize_t>(Dims), "queries");
+    Options options;
+    options.barycentric = barycentric;
+    options.nearest = nearest;
+    options.threads = threads;
+    decltype(locate(queries.data(), n, options)) found;
+    {
+        py::gil_scoped_release unlocked;
+        found = locate(queries.data(), n, options);
+    }
+    if (!found.ok()) throw CoreError(found.error, found.error_query);
+    return found;
+}
+
+/// A locate's answers as Python's (simplex, barycentric (q, Corners) or None, nearest or None).
+template <std::size_t Corners, class Queries>
+py::tuple located_tuple(std::vector<std::int32_t>&& simplex, Queries& found, bool barycentric, bool nearest) {
+    py::object weights = py::none(), near = py::none();
+    if (barycentric) weights = owned_points(std::move(found.barycentric), Corners);
+    if (nearest) near = owned(std::move(found.nearest));
+    return py::make_tuple(owned(std::move(simplex)), weights, near);
+}
+
 py::dict hull_dict(hullkit::Hull&& result) {
     py::dict out;
     out["dimension"] = result.dimension;
@@ -383,38 +416,15 @@ public:
     /// hullkit::delaunay_locate on (q, 2) queries: (triangle int32 (q,), barycentric (q, 3) or None,
     /// nearest int32 (q,) or None). The GIL is released while the core works.
     py::tuple locate(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
-        const std::size_t n = rows(queries, 2, "queries");
-        hullkit::DelaunayQueryOptions options;
-        options.barycentric = barycentric;
-        options.nearest = nearest;
-        options.threads = threads;
-        hullkit::DelaunayQueries found;
-        {
-            py::gil_scoped_release unlocked;
-            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
-        }
-        if (!found.ok()) throw CoreError(found.error, found.error_query);
-        py::object weights = py::none(), near = py::none();
-        if (barycentric) weights = owned_points(std::move(found.barycentric), 3);
-        if (nearest) near = owned(std::move(found.nearest));
-        return py::make_tuple(owned(std::move(found.triangle)), weights, near);
+        hullkit::DelaunayQueries found = locate_queries(queries, barycentric, nearest, threads);
+        return located_tuple<3>(std::move(found.triangle), found, barycentric, nearest);
     }
 
     /// Linear interpolation of (n, k) values at (q, 2) queries: (simplex int32 (q,), values (q, k),
     /// NaN outside the hull).
     py::tuple interpolate(const Points& queries, const Points& values, unsigned threads) const {
-        const std::size_t n = rows(queries, 2, "queries");
-        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
-            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
-        hullkit::DelaunayQueryOptions options;
-        options.barycentric = true;
-        options.threads = threads;
-        hullkit::DelaunayQueries found;
-        {
-            py::gil_scoped_release unlocked;
-            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
-        }
-        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        check_values(values, points_);
+        hullkit::DelaunayQueries found = locate_queries(queries, true, false, threads);
         py::array_t<double> out = blend_values(found.triangle, found.barycentric, result_.triangles.data(), 3, values);
         return py::make_tuple(owned(std::move(found.triangle)), out);
     }
@@ -426,23 +436,14 @@ public:
     /// derivative across it linear along the edge (across, inside the hull: toward the neighbour's
     /// centroid; on the hull: from the edge's midpoint toward C), around C their averages.
     py::tuple clough_tocher(const Points& queries, const Points& values, const Points& gradients, unsigned threads) const {
-        const std::size_t n = rows(queries, 2, "queries");
+        check_values(values, points_);
         const std::size_t points = static_cast<std::size_t>(points_.shape(0));
-        if (values.ndim() != 2 || static_cast<std::size_t>(values.shape(0)) != points)
-            throw std::invalid_argument("values must have shape (" + std::to_string(points) + ", k)");
         const auto columns = static_cast<std::size_t>(values.shape(1));
         if (gradients.ndim() != 3 || static_cast<std::size_t>(gradients.shape(0)) != points ||
             static_cast<std::size_t>(gradients.shape(1)) != columns || gradients.shape(2) != 2)
             throw std::invalid_argument("gradients must have shape (" + std::to_string(points) + ", " + std::to_string(columns) + ", 2)");
-        hullkit::DelaunayQueryOptions options;
-        options.barycentric = true;
-        options.threads = threads;
-        hullkit::DelaunayQueries found;
-        {
-            py::gil_scoped_release unlocked;
-            found = hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(queries.data(), n), options);
-        }
-        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        hullkit::DelaunayQueries found = locate_queries(queries, true, false, threads);
+        const std::size_t n = found.triangle.size();
         py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(columns)});
         double* o = out.mutable_data();
         const double* xy = points_.data();
@@ -531,8 +532,7 @@ public:
 
     /// hullkit::delaunay_gradients on (n, k) values: (gradients (n, k, 2), sweeps, converged).
     py::tuple gradients(const Points& values, double tolerance, unsigned max_iterations) const {
-        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
-            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
+        check_values(values, points_);
         const auto columns = static_cast<std::size_t>(values.shape(1));
         hullkit::GradientOptions options;
         options.tolerance = tolerance;
@@ -554,6 +554,14 @@ public:
     }
 
 private:
+    /// hullkit::delaunay_locate on (q, 2) queries, the GIL released.
+    hullkit::DelaunayQueries locate_queries(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
+        return run_locate<2, hullkit::DelaunayQueryOptions>(queries, barycentric, nearest, threads,
+                                                           [&](const double* xy, std::size_t n, const hullkit::DelaunayQueryOptions& o) {
+                                                               return hullkit::delaunay_locate(span(), result_, hullkit::PointSpan2(xy, n), o);
+                                                           });
+    }
+
     Points points_;
     hullkit::Delaunay result_;
     std::unique_ptr<hullkit::DelaunayLocator> locator_;
@@ -621,38 +629,15 @@ public:
     /// hullkit::delaunay3_locate on (q, 3) queries: (tetrahedron int32 (q,), barycentric (q, 4) or
     /// None, nearest int32 (q,) or None). The GIL is released while the core works.
     py::tuple locate(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
-        const std::size_t n = rows(queries, 3, "queries");
-        hullkit::Delaunay3QueryOptions options;
-        options.barycentric = barycentric;
-        options.nearest = nearest;
-        options.threads = threads;
-        hullkit::Delaunay3Queries found;
-        {
-            py::gil_scoped_release unlocked;
-            found = hullkit::delaunay3_locate(span(), result_, hullkit::PointSpan(queries.data(), n), options);
-        }
-        if (!found.ok()) throw CoreError(found.error, found.error_query);
-        py::object weights = py::none(), near = py::none();
-        if (barycentric) weights = owned_points(std::move(found.barycentric), 4);
-        if (nearest) near = owned(std::move(found.nearest));
-        return py::make_tuple(owned(std::move(found.tetrahedron)), weights, near);
+        hullkit::Delaunay3Queries found = locate_queries(queries, barycentric, nearest, threads);
+        return located_tuple<4>(std::move(found.tetrahedron), found, barycentric, nearest);
     }
 
     /// Linear interpolation of (n, k) values at (q, 3) queries: (simplex int32 (q,), values (q, k),
     /// NaN outside the hull).
     py::tuple interpolate(const Points& queries, const Points& values, unsigned threads) const {
-        const std::size_t n = rows(queries, 3, "queries");
-        if (values.ndim() != 2 || values.shape(0) != points_.shape(0))
-            throw std::invalid_argument("values must have shape (" + std::to_string(points_.shape(0)) + ", k)");
-        hullkit::Delaunay3QueryOptions options;
-        options.barycentric = true;
-        options.threads = threads;
-        hullkit::Delaunay3Queries found;
-        {
-            py::gil_scoped_release unlocked;
-            found = hullkit::delaunay3_locate(span(), result_, hullkit::PointSpan(queries.data(), n), options);
-        }
-        if (!found.ok()) throw CoreError(found.error, found.error_query);
+        check_values(values, points_);
+        hullkit::Delaunay3Queries found = locate_queries(queries, true, false, threads);
         py::array_t<double> out = blend_values(found.tetrahedron, found.barycentric, result_.tetrahedra.data(), 4, values);
         return py::make_tuple(owned(std::move(found.tetrahedron)), out);
     }
@@ -674,6 +659,14 @@ public:
 
 private:
     hullkit::PointSpan span() const { return hullkit::PointSpan(points_.data(), static_cast<std::size_t>(points_.shape(0))); }
+
+    /// hullkit::delaunay3_locate on (q, 3) queries, the GIL released.
+    hullkit::Delaunay3Queries locate_queries(const Points& queries, bool barycentric, bool nearest, unsigned threads) const {
+        return run_locate<3, hullkit::Delaunay3QueryOptions>(queries, barycentric, nearest, threads,
+                                                            [&](const double* xyz, std::size_t n, const hullkit::Delaunay3QueryOptions& o) {
+                                                                return hullkit::delaunay3_locate(span(), result_, hullkit::PointSpan(xyz, n), o);
+                                                            });
+    }
 
     Points points_;
     hullkit::Delaunay3 result_;

@@ -119,43 +119,12 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
     return d;
 }
 
-/// The input as (Hilbert key << 32 | index), sorted: Hilbert-curve order over the bounding box,
-/// equal keys by index (stable LSD radix sort on the key). The order only
-/// affects speed and memory locality, never the result, so the rounding in the keys is harmless;
-/// exact duplicates get equal keys.
-std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const Extent& box) {
-    const std::size_t n = p.count;
-    const double width = box.xmax - box.xmin, height = box.ymax - box.ymin;
-    const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
-    std::vector<std::uint64_t> keyed(n), swap(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        double fx = (p[i][0] - box.xmin) * sx, fy = (p[i][1] - box.ymin) * sy;
-        // A box narrower than 65535 / DBL_MAX makes the scale infinite (0 * inf at the low corner),
-        // one wider than DBL_MAX the width infinite and the scale 0 (inf * 0 at the far side): NaN
-        // must not reach the integer cast (found by fuzz_delaunay). NaN and negatives go to 0; the
-        // order only affects speed.
-        fx = fx > 0.0 ? std::min(fx, 65535.0) : 0.0;
-        fy = fy > 0.0 ? std::min(fy, 65535.0) : 0.0;
-        const std::uint32_t key = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
-        keyed[i] = (std::uint64_t{key} << 32) | i;
-    }
-    // Three passes of 11-bit digits: 2048 buckets keep the scatter's write streams in cache.
-    std::vector<std::uint32_t> count(2049);
-    for (int shift = 32; shift < 64; shift += 11) {
-        std::fill(count.begin(), count.end(), 0u);
-        for (std::size_t i = 0; i < n; ++i) ++count[((keyed[i] >> shift) & 0x7ffu) + 1];
-        for (std::size_t d = 0; d < 2048; ++d) count[d + 1] += count[d];
-        for (std::size_t k = 0; k < n; ++k) swap[count[(keyed[k] >> shift) & 0x7ffu]++] = keyed[k];
-        keyed.swap(swap);
-    }
-    return keyed;
-}
-
 /// From the Hilbert order: merges exact duplicates (filling `representative`, `duplicate_count`)
 /// and stores the distinct points contiguously in that order, scaled by 2^exponent.
 void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector<double>& local_xy,
                      std::vector<std::uint32_t>& original) {
-    std::vector<std::uint64_t> keyed = hilbert_order(p, box);
+    const double lo[2] = {box.xmin, box.ymin}, hi[2] = {box.xmax, box.ymax};
+    std::vector<std::uint64_t> keyed = delaunay_detail::hilbert_order(p, lo, hi);
     const std::size_t n = p.count;
     // Every point's coordinates in curve order (one pass of scattered reads), then all work is
     // sequential. Distinct points are compacted into the front of the same arrays.
@@ -540,7 +509,33 @@ void fill_polygons(const Faces& faces, const std::vector<std::uint32_t>& origina
 
 namespace delaunay_detail {
 
-std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) { return hilbert_index(x, y); }
+std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const double* lo, const double* hi) {
+    const std::size_t n = p.count;
+    const double width = hi[0] - lo[0], height = hi[1] - lo[1];
+    const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
+    std::vector<std::uint64_t> keyed(n), swap(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double fx = (p[i][0] - lo[0]) * sx, fy = (p[i][1] - lo[1]) * sy;
+        // A box narrower than 65535 / DBL_MAX makes the scale infinite (0 * inf at the low corner),
+        // one wider than DBL_MAX the width infinite and the scale 0 (inf * 0 at the far side): NaN
+        // must not reach the integer cast (found by fuzz_delaunay). NaN and negatives go to 0; the
+        // order only affects speed.
+        fx = fx > 0.0 ? std::min(fx, 65535.0) : 0.0;
+        fy = fy > 0.0 ? std::min(fy, 65535.0) : 0.0;
+        const std::uint32_t key = hilbert_index(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
+        keyed[i] = (std::uint64_t{key} << 32) | i;
+    }
+    // Three passes of 11-bit digits: 2048 buckets keep the scatter's write streams in cache.
+    std::vector<std::uint32_t> count(2049);
+    for (int shift = 32; shift < 64; shift += 11) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::size_t i = 0; i < n; ++i) ++count[((keyed[i] >> shift) & 0x7ffu) + 1];
+        for (std::size_t d = 0; d < 2048; ++d) count[d + 1] += count[d];
+        for (std::size_t k = 0; k < n; ++k) swap[count[(keyed[k] >> shift) & 0x7ffu]++] = keyed[k];
+        keyed.swap(swap);
+    }
+    return keyed;
+}
 
 Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triangles,
                                  std::vector<std::int32_t> twin) {

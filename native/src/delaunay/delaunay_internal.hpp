@@ -62,9 +62,12 @@ Mesh incremental_mesh(const Input& input,
 /// The Delaunay faces of an incremental mesh (finite triangles, then merge_cocircular_triangles).
 Faces mesh_faces(PointSpan2 points, Mesh mesh);
 
-/// Index along a Hilbert curve on a 2^16 x 2^16 grid (x, y < 2^16): the order delaunay() inserts
-/// points in, also used to sort queries (delaunay_locate).
-std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
+/// The points as (Hilbert key << 32 | index), sorted along the curve over the box [lo, hi] (a
+/// 2^16 x 2^16 grid), equal keys by index (stable LSD radix sort on the key): the order delaunay()
+/// inserts points in, and delaunay_locate walks its queries in. The order only affects speed and
+/// memory locality, never a result, so the rounding in the keys is harmless; exact duplicates get
+/// equal keys.
+std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const double* lo, const double* hi);
 
 /// Both algorithms return the Delaunay faces: the lower faces of the lifted hull, each a maximal set
 /// of cocircular points whose circle is empty, as a counter-clockwise cycle.

@@ -307,20 +307,7 @@ DelaunayQueries delaunay_locate(PointSpan2 p, const Delaunay& d, PointSpan2 quer
     if (points) outgoing = outgoing_edges(n, d);
 
     // Queries along a Hilbert curve over their bounding box, so that consecutive walks are short.
-    std::vector<std::uint64_t> order(m);
-    detail::parallel_for(options.threads, (m + kLocateChunk - 1) / kLocateChunk, [&](std::size_t chunk) {
-        const double sx = hi[0] > lo[0] ? 65535.0 / (hi[0] - lo[0]) : 0.0;
-        const double sy = hi[1] > lo[1] ? 65535.0 / (hi[1] - lo[1]) : 0.0;
-        for (std::size_t i = chunk * kLocateChunk; i < std::min(m, (chunk + 1) * kLocateChunk); ++i) {
-            // Clamped, and NaN (an infinite scale on a tiny box) sent to 0: the order only affects speed.
-            double fx = (scaled[2 * i] - lo[0]) * sx, fy = (scaled[2 * i + 1] - lo[1]) * sy;
-            fx = fx > 0.0 ? std::min(fx, 65535.0) : 0.0;
-            fy = fy > 0.0 ? std::min(fy, 65535.0) : 0.0;
-            const std::uint32_t key = delaunay_detail::hilbert_key(static_cast<std::uint32_t>(fx), static_cast<std::uint32_t>(fy));
-            order[i] = std::uint64_t{key} << 32 | i;
-        }
-    });
-    std::sort(order.begin(), order.end());
+    const std::vector<std::uint64_t> order = delaunay_detail::hilbert_order(PointSpan2(scaled.data(), m), lo, hi);
 
     detail::parallel_for(options.threads, (m + kLocateChunk - 1) / kLocateChunk, [&](std::size_t chunk) {
         TriangleWalker walker(p, d, exponent);
