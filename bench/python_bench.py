@@ -4,6 +4,7 @@ call in a fresh process; it prints one JSON line.
 
     python_bench.py hull --lib hullkit|scipy --n N              ConvexHull of N points on a sphere
     python_bench.py delaunay --lib hullkit|scipy --n N          Delaunay of N uniform 2D points
+    python_bench.py halfspace --lib hullkit|scipy --n N         HalfspaceIntersection of N planes tangent to a sphere
     python_bench.py conversions --lib "float64 C"|"float32 Fortran" --n N   hullkit.hull outside the core
     python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
     python_bench.py files --mode single|dask --dir D            the hull of those files
@@ -61,6 +62,20 @@ def run_delaunay(args):
     seconds = time.perf_counter() - start
     return {"seconds": seconds, "simplices": int(len(d.simplices)),
             "triangle_set": digest(np.sort(np.sort(d.simplices, axis=1), axis=0))}
+
+
+def run_halfspace(args):
+    normals = sphere(args.n, seed=17)
+    halfspaces = np.column_stack([normals, -np.ones(args.n)])  # n . x <= 1: tangent to the unit sphere
+    if args.lib == "hullkit":
+        from hullkit.spatial import HalfspaceIntersection
+    else:
+        from scipy.spatial import HalfspaceIntersection
+    start = time.perf_counter()
+    hs = HalfspaceIntersection(halfspaces, np.zeros(3))
+    seconds = time.perf_counter() - start
+    return {"seconds": seconds, "corners": int(len(hs.intersections)),
+            "vertex_set": digest(np.sort(np.asarray(hs.dual_vertices, dtype=np.int64)))}
 
 
 def run_conversions(args):
@@ -190,7 +205,7 @@ def run_routes(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("what", choices=["hull", "delaunay", "conversions", "write-ply", "files", "routes"])
+    parser.add_argument("what", choices=["hull", "delaunay", "halfspace", "conversions", "write-ply", "files", "routes"])
     parser.add_argument("--lib", default="hullkit")
     parser.add_argument("--n", type=float, default=1e6)
     parser.add_argument("--files", type=int, default=16)
@@ -202,7 +217,7 @@ def main():
     parser.add_argument("--one-route", action="store_true", help="the legs as one route, not routes of 10 legs")
     args = parser.parse_args()
     args.n = int(args.n)
-    result = {"hull": run_hull, "delaunay": run_delaunay, "conversions": run_conversions, "write-ply": run_write_ply,
+    result = {"hull": run_hull, "delaunay": run_delaunay, "halfspace": run_halfspace, "conversions": run_conversions, "write-ply": run_write_ply,
               "files": run_files, "routes": run_routes}[args.what](args)
     print(json.dumps({"what": args.what, "lib": args.lib, "mode": args.mode, "n": args.n, **result,
                       "peak_rss_mb": peak_mb()}))

@@ -45,17 +45,31 @@ Qhull leaves out, are listed. A repeated point shares the region of the first po
 collinear or coplanar points give the diagram without vertices (see Voronoi).
 ``tsearch(tri, xi)`` is ``tri.find_simplex(xi)``.
 
+HalfspaceIntersection (2D, 3D): the intersection of halfspaces A x + b <= 0 through the exact
+hull of their dual points, scipy's attributes; ``chebyshev_center`` finds an interior point.
+
+Incremental mode (``incremental=True``, ``add_points``, ``add_halfspaces``, ``close``) builds
+again from everything added so far: the result is exactly that of one call with all of it.
+``qhull_options``: the options that steer Qhull's precision handling or speed (Qt, QJ, Qbb, QbB,
+Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact; Qc is accepted
+by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
+``coplanar``), Fv by Voronoi, QGn and QG-n by ConvexHull (``good``). Any other option raises
+HullkitError naming it; so do ``furthest_site=True`` and more than 3 dimensions.
+
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
-point). Options scipy has and hullkit does not (qhull_options, incremental, furthest_site,
-dimensions beyond 3) raise a clear "not supported".
+point; ``QhullError`` is the same class, so scipy code that catches it keeps working).
 """
 import gc as _gc
+import re as _re
 
 import numpy as _np
 
 from . import HullkitError, _core, _translated, as_points, delaunay, delaunay3, hull
 
-__all__ = ["ConvexHull", "Delaunay", "Voronoi", "tsearch"]
+__all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch"]
+
+#: scipy.spatial's QhullError is hullkit's HullkitError here: ``except QhullError`` keeps working.
+QhullError = HullkitError
 
 
 def _bounds(array, ndim):
@@ -68,47 +82,162 @@ def _bounds(array, ndim):
 
 
 def _not_supported(what, cls="ConvexHull"):
-    raise HullkitError(f"{what} is not supported by hullkit.spatial.{cls} (hullkit is exact; it has no Qhull options)")
+    raise HullkitError(f"{what} is not supported by hullkit.spatial.{cls}")
 
 
-def _checked_points(points, cls, furthest_site, incremental, qhull_options, many=None):
-    """The points of a ``cls`` (ConvexHull, Delaunay, Voronoi) as a C-ordered float64 (n, 2) or
-    (n, 3) array, or HullkitError (also for the Qhull options hullkit has not; ``many``: what the
-    message calls the object in more dimensions, the class's name by default)."""
-    for flag, what in ((furthest_site, "furthest_site=True"), (incremental, "incremental=True")):
-        if flag:
-            _not_supported(what, cls)
-    if qhull_options is not None:
-        _not_supported(f"qhull_options={qhull_options!r}", cls)
+# Qhull's options, as scipy passes them on, and what each means for hullkit's exact classes (the
+# README's table says the same). Options that steer Qhull's floating-point handling or speed change
+# nothing here: every decision is already exact, and the output is always simplicial.
+_NO_EFFECT = {
+    "Qt": "triangulated output: hullkit's facets and simplices are always simplices",
+    "QJ": "joggled input: nothing to joggle when every decision is exact (repeated points stay "
+          "repeated: Delaunay lists them in coplanar)",
+    "Qbb": "scaled last coordinate", "QbB": "scaled to the unit cube", "Qz": "point at infinity",
+    "Qx": "exact pre-merges", "Q11": "merging order", "Q12": "wide facet merges",
+    "Qs": "search all points for the initial simplex", "Qv": "test vertex neighbours",
+    "Pp": "no precision warnings", "Po": "forced output",
+}
+_PER_CLASS = {
+    "Qc": ("Delaunay", "Voronoi", "HalfspaceIntersection"),  # coplanar points: Delaunay lists its repeats always
+    "Fv": ("Voronoi",),  # Voronoi ridges: hullkit's ridges are always listed
+}
+_GOOD = _re.compile(r"QG(-?)([0-9]+)")
+
+
+def _parsed_options(qhull_options, cls):
+    """The Qhull options of a ``cls`` checked one by one: returns the QGn option as (n, visible)
+    (ConvexHull only) or None, and the set of options given (None when ``qhull_options`` is);
+    an option hullkit does not have raises HullkitError naming it."""
+    if qhull_options is None:
+        return None, None
+    if isinstance(qhull_options, bytes):
+        qhull_options = qhull_options.decode("latin-1")
+    if not isinstance(qhull_options, str):
+        raise HullkitError(f"qhull_options must be a string, got {type(qhull_options).__name__}")
+    good = None
+    for option in qhull_options.split():
+        if option in _NO_EFFECT or cls in _PER_CLASS.get(option, ()):
+            continue
+        match = _GOOD.fullmatch(option)
+        if match and cls == "ConvexHull":
+            good = (int(match.group(2)), match.group(1) != "-")
+            continue
+        _not_supported(f"the Qhull option {option!r} (in qhull_options={qhull_options!r}; see the README's "
+                       f"table of the options hullkit accepts)", cls)
+    return good, set(qhull_options.split())
+
+
+def _float64(values, what):
+    """``values`` as a C-ordered float64 array, or HullkitError saying what could not be converted."""
     try:
-        array = _np.ascontiguousarray(points, dtype=_np.float64)
+        return _np.ascontiguousarray(values, dtype=_np.float64)
     except (TypeError, ValueError) as error:
-        raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
+        raise HullkitError(f"{what} must be numbers convertible to float64: {error}") from None
+
+
+def _checked_points(points, cls, many=None, what="points"):
+    """The points of a ``cls`` (ConvexHull, Delaunay, Voronoi) as a C-ordered float64 (n, 2) or
+    (n, 3) array, or HullkitError (``many``: what the message calls the object in more dimensions,
+    the class's name by default)."""
+    array = _float64(points, what)
     if array.ndim != 2 or array.shape[1] not in (2, 3):
         if array.ndim == 2 and array.shape[1] > 3:
             _not_supported(f"{many or cls} in {array.shape[1]} dimensions", cls)
-        raise HullkitError(f"points must have shape (n, 2) or (n, 3), got {array.shape}")
+        raise HullkitError(f"{what} must have shape (n, 2) or (n, 3), got {array.shape}")
     return array
 
 
-class ConvexHull:
+class _Incremental:
+    """scipy's incremental mode for a class that computes everything from all its points in
+    ``_build(points)``: ``add_points`` builds again from all the points so far, so the result is
+    exactly the one a single call with all of them gives (``restart`` changes nothing: each build
+    starts afresh). Each addition costs a whole build."""
+
+    def _start(self, incremental):
+        self._incremental, self._closed = bool(incremental), False
+
+    def add_points(self, points, restart=False):
+        """Adds ``points`` (k, ndim) (needs ``incremental=True``; not after ``close()``)."""
+        cls = type(self).__name__
+        if not self._incremental:
+            raise HullkitError(f"add_points needs {cls}(..., incremental=True)")
+        if self._closed:
+            raise HullkitError(f"add_points after close(): this {cls} takes no more points")
+        array = _checked_points(points, cls)
+        if array.shape[1] != self.ndim:
+            raise HullkitError(f"points must have shape (k, {self.ndim}) like the first ones, got {array.shape}")
+        self._build(_np.concatenate([self.points, array]))
+
+    def close(self):
+        """Ends the incremental mode: add_points raises from now on."""
+        self._closed = True
+
+
+def _not_furthest_site(furthest_site, cls):
+    if furthest_site:
+        _not_supported("furthest_site=True", cls)
+
+
+class ConvexHull(_Incremental):
     """The convex hull of points in 2 or 3 dimensions (see the module's documentation).
 
-    Attributes (scipy's): points, vertices, simplices, neighbors, equations, volume, area,
-    npoints, ndim, min_bound, max_bound; and dimension."""
+    Attributes (scipy's): points, vertices, simplices, neighbors, equations, coplanar (always
+    empty: Qhull's Qc is not supported), good (with the option QGn: None without), volume, area,
+    npoints, ndim, min_bound, max_bound; and dimension. Methods: add_points, close
+    (``incremental=True``).
+
+    ``qhull_options="QGn"`` leaves point n out of the hull and sets ``good``: for each facet,
+    whether point n is strictly beyond it (exactly: a point on a facet's line or plane does not see
+    it); ``"QG-n"`` the opposite. Options that only steer Qhull's precision (Qt, Qbb, Qz, ...)
+    change nothing; others raise HullkitError naming the option.
+
+    Examples
+    --------
+    >>> from hullkit.spatial import ConvexHull
+    >>> square = [[0.2, 0.2], [0.2, 0.4], [0.4, 0.4], [0.4, 0.2], [0.3, 0.6]]
+    >>> hull = ConvexHull(square, qhull_options="QG4")
+    >>> hull.simplices[hull.good].tolist()  # the square's side that (0.3, 0.6) sees
+    [[2, 1]]
+    >>> grown = ConvexHull(square[:4], incremental=True)
+    >>> grown.add_points([[0.3, 0.6]])
+    >>> sorted(grown.vertices.tolist())
+    [0, 1, 2, 3, 4]
+    """
 
     def __init__(self, points, incremental=False, qhull_options=None):
-        array = _checked_points(points, "ConvexHull", False, incremental, qhull_options, "a hull")
+        self._good_option = _parsed_options(qhull_options, "ConvexHull")[0]
+        self._start(incremental)
+        self._build(_checked_points(points, "ConvexHull", "a hull"))
+
+    def _build(self, array):
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
+        self.coplanar = _np.zeros((0, 3), dtype=_np.int32)
+        self.good = None
+        kept = array
+        if self._good_option is not None:
+            seen_from, visible = self._good_option
+            if seen_from >= self.npoints:
+                raise HullkitError(f"QG{'' if visible else '-'}{seen_from}: there is no point {seen_from} "
+                                   f"({self.npoints} points)")
+            kept = _np.delete(array, seen_from, axis=0)
         if self.ndim == 3:
-            self._from_3d(hull(as_points(array, 3)))
+            self._from_3d(hull(as_points(kept, 3)), kept)
         else:
-            self._from_2d(array)
+            self._from_2d(kept)
+        if self._good_option is not None:
+            # Point n left out: indices at and after it move up by one.
+            for name in ("vertices", "simplices"):
+                indices = getattr(self, name)
+                setattr(self, name, indices + (indices >= seen_from).astype(_np.int32))
+            with _translated():
+                sides = _core.facet_sides(array, _np.ascontiguousarray(self.simplices, dtype=_np.uint32),
+                                          array[seen_from])
+            self.good = sides > 0 if visible else sides <= 0
 
     # -- 3D ------------------------------------------------------------------------------------
-    def _from_3d(self, h):
+    def _from_3d(self, h, xyz):
         self.dimension = h.dimension
         # scipy: vertices "in input order" for 3D; a polygon's come in order around it.
         self.vertices = h.vertices.astype(_np.int32)
@@ -119,7 +248,7 @@ class ConvexHull:
         self.neighbors = neighbors
         if h.dimension == 2:
             normal = h.normal
-            offset = -float(normal @ self.points[self.vertices[0]])
+            offset = -float(normal @ xyz[self.vertices[0]])
             self.equations = _np.tile(_np.append(normal, offset), (len(self.simplices), 1))
         else:
             self.equations = equations
@@ -159,13 +288,19 @@ class ConvexHull:
                 f"vertices={len(self.vertices)}, simplices={len(self.simplices)})")
 
 
-class Delaunay:
+class Delaunay(_Incremental):
     """The Delaunay triangulation of points in 2D or tetrahedralization in 3D, exact (see the
     module's documentation).
 
-    Attributes (scipy's): points, simplices, neighbors, convex_hull, vertex_neighbor_vertices,
-    vertex_to_simplex, transform, coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and
-    dimension. Method: find_simplex.
+    Attributes (scipy's): points, simplices, neighbors, equations, paraboloid_scale,
+    paraboloid_shift, convex_hull, vertex_neighbor_vertices, vertex_to_simplex, transform,
+    coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and dimension. Methods:
+    find_simplex, lift_points, plane_distance, add_points and close (``incremental=True``).
+
+    ``equations`` are the planes of the simplices lifted onto the paraboloid
+    z = paraboloid_scale * |x|^2 + paraboloid_shift (scale 1, shift 0: hullkit does not rescale),
+    unit normals pointing down, as scipy's; they are computed on first use (the triangulation
+    itself never uses them: its decisions are exact).
 
     Examples
     --------
@@ -175,15 +310,27 @@ class Delaunay:
     >>> d = Delaunay(cube)
     >>> d.ndim, d.nsimplex, d.simplices.dtype, d.convex_hull.shape, d.coplanar.shape
     (3, 6, dtype('int32'), (12, 3), (0, 3))
-    >>> Delaunay([[0, 0], [1, 0], [0, 1]]).simplices.tolist()
-    [[0, 1, 2]]
+    >>> tri = Delaunay([[0, 0], [1, 0], [0, 1]])
+    >>> tri.simplices.tolist(), tri.lift_points([1, 2]).tolist()
+    ([[0, 1, 2]], [1.0, 2.0, 5.0])
+    >>> float(tri.plane_distance([0.25, 0.25])[0]) > 0  # below the lifted triangle: inside its circle
+    True
     """
 
+    paraboloid_scale = 1.0
+    paraboloid_shift = 0.0
+
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
-        array = _checked_points(points, "Delaunay", furthest_site, incremental, qhull_options)
+        _not_furthest_site(furthest_site, "Delaunay")
+        _parsed_options(qhull_options, "Delaunay")
+        self._start(incremental)
+        self._build(_checked_points(points, "Delaunay"))
+
+    def _build(self, array):
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
+        self._equations = None
         if self.ndim == 3:
             self._from_3d(array)
         else:
@@ -196,6 +343,56 @@ class Delaunay:
             simplex_of = self._corner_simplex()
             self.coplanar = _np.stack([repeats, simplex_of[representative[repeats]], representative[repeats]],
                                       axis=1).astype(_np.int32)
+
+    @property
+    def vertices(self):
+        """The old name of ``simplices`` (scipy's, deprecated there: a DeprecationWarning)."""
+        import warnings
+        warnings.warn("Delaunay attribute 'vertices' is deprecated in favour of 'simplices' and will be removed "
+                      "in Scipy 1.11.0. (hullkit keeps it for code written against scipy; use 'simplices'.)",
+                      DeprecationWarning, stacklevel=2)
+        return self.simplices
+
+    def lift_points(self, x):
+        """``x`` (..., ndim) lifted onto the paraboloid: (..., ndim + 1), the last coordinate
+        paraboloid_scale * |x|^2 + paraboloid_shift."""
+        array = _np.asarray(x, dtype=_np.float64)
+        if array.shape[-1:] != (self.ndim,):
+            raise HullkitError(f"x must have shape (..., {self.ndim}), got {array.shape}")
+        lifted = _np.empty(array.shape[:-1] + (self.ndim + 1,))
+        lifted[..., :-1] = array
+        lifted[..., -1] = (array * array).sum(axis=-1) * self.paraboloid_scale + self.paraboloid_shift
+        return lifted
+
+    @property
+    def equations(self):
+        """(nsimplex, ndim + 2): each simplex's lifted plane [unit normal, offset], the normal's
+        last component negative; a lifted point x has distance normal . x + offset (positive
+        below the plane: inside the simplex's circumcircle or sphere)."""
+        if self._equations is None:
+            k = self.ndim
+            corners = self.points[self.simplices]
+            first = corners[:, 0]
+            edges = corners[:, 1:] - first[:, None]  # (m, k, k)
+            # Lifted edge heights |v|^2 - |a|^2 as (v - a) . (v + a): no cancellation of the squares.
+            heights = _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None]) * self.paraboloid_scale
+            rows = _np.concatenate([edges, heights[:, :, None]], axis=2)  # (m, k, k + 1)
+            # The normal of the k rows in k + 1 dimensions: its cofactors (the generalised cross product).
+            normal = _np.stack([(-1) ** j * _np.linalg.det(_np.delete(rows, j, axis=2)) for j in range(k + 1)], axis=1)
+            with _np.errstate(all="ignore"):  # a flat simplex (none here) would give NaN, not a warning
+                normal /= _np.linalg.norm(normal, axis=1)[:, None]
+            normal *= -_np.sign(normal[:, -1:])
+            lifted_first = self.lift_points(first)
+            offset = -_np.einsum("mi,mi->m", normal, lifted_first)
+            self._equations = _np.concatenate([normal, offset[:, None]], axis=1) if len(corners) else _np.zeros((0, k + 2))
+        return self._equations
+
+    def plane_distance(self, xi):
+        """The distance of each point of ``xi`` (..., ndim), lifted, to every simplex's lifted plane:
+        (..., nsimplex), positive below the plane (see ``equations``)."""
+        lifted = self.lift_points(xi)
+        eq = self.equations
+        return lifted @ eq[:, :-1].T + eq[:, -1]
 
     # -- 2D ------------------------------------------------------------------------------------
     def _from_2d(self, xy):
@@ -221,13 +418,14 @@ class Delaunay:
         self.dimension = d.dimension
         self._representative, self._duplicate_count = d.representative, d.duplicate_count
         # The core's uint32 indices are below 2**31 (it refuses more points): as int32 they are the
-        # same bits, so scipy's dtype without a copy (read-only views of the core's arrays).
-        self.simplices = d.tetrahedra.view(_np.int32)
-        self.neighbors = d.neighbors if d.dimension == 3 else _np.zeros((0, 4), dtype=_np.int32)
+        # same bits. Copies, writable as scipy's are (the core's arrays stay read-only: its
+        # point location reads them).
+        self.simplices = d.tetrahedra.astype(_np.int32)
+        self.neighbors = d.neighbors.copy() if d.dimension == 3 else _np.zeros((0, 4), dtype=_np.int32)
         if d.dimension == 3:
-            self.convex_hull = d.hull.view(_np.int32)
+            self.convex_hull = d.hull.astype(_np.int32)
         elif d.dimension == 2:  # flat: the planar triangles are the (two-sided) hull's faces
-            self.convex_hull = d.triangles.view(_np.int32)
+            self.convex_hull = d.triangles.astype(_np.int32)
         else:
             self.convex_hull = _np.zeros((0, 3), dtype=_np.int32)
         vertices = _np.asarray(d.vertices, dtype=_np.int32)  # collinear: in order along the line
@@ -292,15 +490,24 @@ class Delaunay:
     def transform(self):
         """Barycentric transforms (nsimplex, ndim + 1, ndim): c = T^-1 (x - r) with
         T^-1 = transform[i, :ndim] and r = transform[i, ndim] (the simplex's last corner), as
-        scipy's."""
+        scipy's. As scipy's too, a simplex so flat that its inverse cannot be trusted in floating
+        point (reciprocal condition number below 1000 eps) gets NaN in T^-1 (the exact
+        triangulation keeps such slivers where the points make them; find_simplex is exact)."""
         k = self.ndim
         if self.nsimplex == 0:
             return _np.zeros((0, k + 1, k))
         corners = self.points[self.simplices]
         r = corners[:, k]
         t = (corners[:, :k] - r[:, None]).transpose(0, 2, 1)  # columns: v_j - r
+        with _np.errstate(all="ignore"):
+            singular = ~(_np.abs(_np.linalg.det(t)) > 0)
+            inverse = _np.linalg.inv(_np.where(singular[:, None, None], _np.eye(k), t))
+            # 1-norm condition: the largest column sum of |T| times that of |T^-1|.
+            condition = _np.abs(t).sum(axis=1).max(axis=1) * _np.abs(inverse).sum(axis=1).max(axis=1)
+            untrusted = singular | ~(1.0 / condition >= 1000 * _np.finfo(float).eps)
+        inverse[untrusted] = _np.nan
         out = _np.empty((self.nsimplex, k + 1, k))
-        out[:, :k] = _np.linalg.inv(t)
+        out[:, :k] = inverse
         out[:, k] = r
         return out
 
@@ -367,7 +574,7 @@ def _offsets(sizes):
     return _np.concatenate([[0], _np.cumsum(sizes)]).astype(_np.int64)
 
 
-class Voronoi:
+class Voronoi(_Incremental):
     """The Voronoi diagram of points in 2D or 3D, with scipy.spatial.Voronoi's attributes, on
     hullkit's exact Delaunay (which vertices, ridges and regions exist is decided exactly; the
     coordinates are rounded).
@@ -391,7 +598,8 @@ class Voronoi:
       finite vertex (Qhull's option Fv leaves out ridges that need two rays).
     * ``regions[0]`` is empty, as scipy's (the region of Qhull's point at infinity), and there is
       one more region for each distinct point: ``len(regions)`` is the number of distinct points
-      plus one.
+      plus one. With ``qhull_options`` that leave out Qz (scipy's default has it) there is no
+      empty region, as in scipy: ``len(regions)`` is the number of distinct points.
     * Repeated points: the lowest index of each set of equal points has the cell; the others share
       its ``point_region`` and ``volumes`` entry and have no ridges of their own.
     * Where scipy raises QhullError, hullkit gives the diagram that exists: collinear 2D points
@@ -400,7 +608,7 @@ class Voronoi:
       ``[-1]`` between each pair of points whose cells share a face (the planar Voronoi edge swept
       along the normal), collinear points a plane ``[-1]`` between consecutive points. One point
       has the whole space as its cell (region ``[-1]``). Every cell is then unbounded.
-    * ``furthest_site=True``, ``incremental=True`` and ``qhull_options`` raise "not supported";
+    * ``furthest_site=True`` raises "not supported", ``qhull_options`` as the module says;
       NaN or infinite coordinates and wrong shapes raise HullkitError (a ValueError).
 
     Examples
@@ -426,7 +634,15 @@ class Voronoi:
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
-        array = _checked_points(points, "Voronoi", furthest_site, incremental, qhull_options)
+        _not_furthest_site(furthest_site, "Voronoi")
+        # scipy's regions[0] is empty: the region of the point at infinity that Qhull's option Qz
+        # (in scipy's default options) adds. Options given without Qz: no such region, as scipy's.
+        options = _parsed_options(qhull_options, "Voronoi")[1]
+        self._infinity_region = options is None or "Qz" in options
+        self._start(incremental)
+        self._build(_checked_points(points, "Voronoi"))
+
+    def _build(self, array):
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
@@ -440,9 +656,10 @@ class Voronoi:
         representative = _np.asarray(representative, dtype=_np.intp)
         distinct = _np.flatnonzero(representative == _np.arange(self.npoints))
         region = _np.zeros(self.npoints, dtype=_np.intp)
-        region[distinct] = _np.arange(1, len(distinct) + 1)
+        first = 1 if self._infinity_region else 0
+        region[distinct] = _np.arange(first, len(distinct) + first)
         self.point_region = region[representative]
-        self.regions = [[]] + _grouped(cells, offsets, distinct)
+        self.regions = [[]] * first + _grouped(cells, offsets, distinct)
         self.volumes = volumes[representative]
 
     @property
@@ -616,3 +833,224 @@ class Voronoi:
         return (f"hullkit.spatial.Voronoi(npoints={self.npoints}, ndim={self.ndim}, dimension={self.dimension}, "
                 f"vertices={len(self.vertices)}, ridges={len(self.ridge_points)})")
 
+
+
+# -- Halfspace intersection ------------------------------------------------------------------------
+
+def _checked_halfspaces(halfspaces, what="halfspaces"):
+    array = _float64(halfspaces, what)
+    if array.ndim != 2 or array.shape[1] not in (3, 4):
+        if array.ndim == 2 and array.shape[1] > 4:
+            _not_supported(f"halfspaces in {array.shape[1] - 1} dimensions", "HalfspaceIntersection")
+        raise HullkitError(f"{what} must have shape (n, 3) or (n, 4) ([A; b] for A x + b <= 0 in 2D or 3D), "
+                           f"got {array.shape}")
+    bad = _np.flatnonzero(~_np.isfinite(array).all(axis=1))
+    if len(bad):
+        raise HullkitError(f"halfspace {bad[0]} has a non-finite coefficient: {array[bad[0]].tolist()}", int(bad[0]))
+    return array
+
+
+def _exact_signs(a, b, x):
+    """The exact sign of a[i] . x + b[i] for each row, and its value in float64: from the
+    floating-point sum where its error bound leaves no doubt, in rational arithmetic where it does."""
+    from fractions import Fraction
+
+    terms = a * x
+    with _np.errstate(all="ignore"):
+        value = terms.sum(axis=1) + b
+        magnitude = _np.abs(terms).sum(axis=1) + _np.abs(b)
+        # Each product and sum rounds by at most one unit in the last place of the magnitude (and a
+        # product below the normal range by 2^-1074): a generous bound on the total error.
+        bound = (a.shape[1] + 3) * 2.0 ** -52 * magnitude + (a.shape[1] + 1) * 2.0 ** -1070
+        unsure = ~(_np.abs(value) > bound) | ~_np.isfinite(value)
+    signs = _np.sign(value)
+    for i in _np.flatnonzero(unsure).tolist():
+        exact = sum((Fraction(float(p)) * Fraction(float(q)) for p, q in zip(a[i], x)), Fraction(float(b[i])))
+        signs[i] = (exact > 0) - (exact < 0)
+        value[i] = float(exact)
+    return signs, value
+
+
+class HalfspaceIntersection:
+    """The intersection of halfspaces A x + b <= 0 in 2D or 3D (scipy.spatial's class): the
+    polar dual of the halfspaces about ``interior_point`` is hulled exactly, and each facet of that
+    hull is one corner of the intersection.
+
+    ``halfspaces`` (n, ndim + 1) holds the rows [A_i, b_i]. ``interior_point`` (ndim,) must lie
+    strictly inside every halfspace: that is checked exactly, and a point that is not gets
+    HullkitError (also ``QhullError``) naming the first halfspace it violates.
+    ``chebyshev_center(halfspaces)`` finds one.
+
+    Attributes (scipy's): ``halfspaces``, ``interior_point``, ``ndim``, ``nineq``,
+    ``dual_points`` (A_i / -(A_i . p + b_i)), ``dual_vertices`` (the halfspaces that bound the
+    intersection: counter-clockwise in 2D, ascending in 3D), ``dual_facets`` (each facet's
+    halfspaces: the facets are merged, so a corner where more than three planes meet is one
+    facet and one intersection), ``dual_equations`` (unit normal and offset of each facet),
+    ``dual_area``, ``dual_volume`` and ``intersections`` (one corner per facet, solved from its
+    halfspaces; in 2D in counter-clockwise order). Methods: ``add_halfspaces`` and ``close`` (``incremental=True``).
+
+    Which halfspaces bound the intersection and which meet at each corner is decided exactly for
+    the dual points as computed (their coordinates are rounded, as Qhull's are). An unbounded
+    intersection raises HullkitError (its corners are not all finite). ``qhull_options`` as the
+    module says (Qt has no effect: the facets are always merged).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hullkit.spatial import HalfspaceIntersection
+    >>> square = np.array([[-1, 0, 0], [0, -1, 0], [1, 0, -2], [0, 1, -2]], dtype=float)  # 0 <= x, y <= 2
+    >>> hs = HalfspaceIntersection(square, np.array([1.0, 1.0]))
+    >>> hs.intersections.tolist()  # counter-clockwise
+    [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]
+    >>> hs.dual_vertices.tolist(), hs.dual_facets
+    ([0, 1, 2, 3], [[0, 1], [1, 2], [2, 3], [3, 0]])
+    """
+
+    def __init__(self, halfspaces, interior_point, incremental=False, qhull_options=None):
+        _parsed_options(qhull_options, "HalfspaceIntersection")
+        array = _checked_halfspaces(halfspaces)
+        self.ndim = array.shape[1] - 1
+        point = _float64(interior_point, "interior_point")
+        if point.shape != (self.ndim,):
+            raise HullkitError(f"interior_point must have shape ({self.ndim},) for halfspaces of shape "
+                               f"{array.shape}, got {point.shape}")
+        if not _np.isfinite(point).all():
+            raise HullkitError(f"interior_point must be finite, got {point.tolist()}")
+        self.interior_point = point.copy()
+        self._incremental, self._closed = bool(incremental), False
+        self._build(array)
+
+    def add_halfspaces(self, halfspaces, restart=False):
+        """Adds halfspaces (k, ndim + 1) (needs ``incremental=True``; not after ``close()``); the
+        result is that of one call with all of them (``restart`` changes nothing)."""
+        if not self._incremental:
+            raise HullkitError("add_halfspaces needs HalfspaceIntersection(..., incremental=True)")
+        if self._closed:
+            raise HullkitError("add_halfspaces after close(): this HalfspaceIntersection takes no more halfspaces")
+        array = _checked_halfspaces(halfspaces)
+        if array.shape[1] != self.ndim + 1:
+            raise HullkitError(f"halfspaces must have shape (k, {self.ndim + 1}) like the first ones, got {array.shape}")
+        self._build(_np.concatenate([self.halfspaces, array]))
+
+    def close(self):
+        """Ends the incremental mode: add_halfspaces raises from now on."""
+        self._closed = True
+
+    def _build(self, array):
+        k = self.ndim
+        self.halfspaces, self.nineq = array, len(array)
+        a, b = array[:, :k], array[:, k]
+        signs, value = _exact_signs(a, b, self.interior_point)
+        outside = _np.flatnonzero(signs >= 0)
+        if len(outside):
+            i = int(outside[0])
+            raise HullkitError(f"interior_point {self.interior_point.tolist()} is not strictly inside halfspace {i} "
+                               f"{array[i].tolist()}: A x + b = {value[i]!r} there, and must be < 0", i)
+        with _np.errstate(all="ignore"):
+            self.dual_points = a / -value[:, None]
+        far = _np.flatnonzero(~_np.isfinite(self.dual_points).all(axis=1))
+        if len(far):
+            i = int(far[0])
+            raise HullkitError(f"interior_point is too close to the boundary of halfspace {i} for its dual point "
+                               f"(A x + b = {value[i]!r} there): choose one further inside", i)
+        if self.nineq <= k:
+            raise HullkitError(f"{self.nineq} halfspaces cannot bound a region in {k}D: the intersection is unbounded")
+        if k == 2:
+            dual = ConvexHull(self.dual_points)
+            self.dual_vertices, self.dual_volume, self.dual_area = dual.vertices, dual.volume, dual.area
+            bounded = dual.dimension == 2
+            flat = dual.simplices.ravel().astype(_np.int64)
+            offsets = _np.arange(0, len(flat) + 1, 2, dtype=_np.int64)
+            self.dual_equations = dual.equations
+            triangles = dual.simplices
+        else:
+            with _translated():  # the core's result as it is (hullkit.Hull would list the faces)
+                h = _core.hull(_np.ascontiguousarray(self.dual_points), "quickhull", True, 0)
+            bounded = int(h["dimension"]) == 3
+            self.dual_vertices = h["vertices"].astype(_np.int32)
+            self.dual_volume, self.dual_area = float(h["volume"]), float(h["area"])
+            flat = h["face_vertices"].astype(_np.int64) if bounded else _np.zeros(0, dtype=_np.int64)
+            offsets = h["face_offsets"].astype(_np.int64) if bounded else _np.zeros(1, dtype=_np.int64)
+            self.dual_equations = self._face_planes(flat, offsets)
+            triangles = h["triangles"].reshape(-1, 3)
+        self.dual_facets = _grouped(flat, offsets, range(len(offsets) - 1))
+        if bounded:  # the origin (the interior point) strictly inside the dual hull: exactly
+            with _translated():
+                sides = _core.facet_sides(_np.ascontiguousarray(self.dual_points),
+                                          _np.ascontiguousarray(triangles, dtype=_np.uint32), _np.zeros(k))
+            bounded = bool((sides < 0).all())
+        if not bounded:
+            raise HullkitError("the intersection of the halfspaces is unbounded: their normals do not surround the "
+                               "interior point (its dual hull does not contain it strictly)")
+        self.intersections = self._corners(a, b, flat, offsets)
+
+    def _corners(self, a, b, flat, offsets):
+        """Each facet's corner: where its halfspaces' planes meet, solved from the halfspaces
+        themselves (A_F x = -b_F, least squares where more than ndim planes meet), which is more
+        accurate than the dual facet's rounded plane (a corner at 0 comes out as 0)."""
+        k = self.ndim
+        sizes = _np.diff(offsets)
+        corners = _np.empty((len(sizes), k))
+        simple = _np.flatnonzero(sizes == k)
+        if len(simple):
+            rows = flat[offsets[simple][:, None] + _np.arange(k)]
+            corners[simple] = _np.linalg.solve(a[rows], -b[rows][:, :, None])[:, :, 0]
+        for f in _np.flatnonzero(sizes != k).tolist():
+            rows = flat[offsets[f]: offsets[f + 1]]
+            corners[f] = _np.linalg.lstsq(a[rows], -b[rows], rcond=None)[0]
+        return corners + 0.0  # -0.0 (from -b where b is 0) as 0.0
+
+    def _face_planes(self, flat, offsets):
+        """Each polygonal face's plane [unit outward normal, offset]: Newell's normal (the sum of
+        the cross products of consecutive corners, which are counter-clockwise seen from outside)
+        and the plane through the corners' centroid."""
+        if len(offsets) < 2:
+            return _np.zeros((0, 4))
+        sizes = _np.diff(offsets)
+        following = _np.arange(1, len(flat) + 1)
+        following[offsets[1:] - 1] = offsets[:-1]
+        corner = self.dual_points[flat]
+        normal = _np.add.reduceat(_np.cross(corner, corner[following]), offsets[:-1], axis=0)
+        normal /= _np.linalg.norm(normal, axis=1)[:, None]
+        centroid = _np.add.reduceat(corner, offsets[:-1], axis=0) / sizes[:, None]
+        return _np.column_stack([normal, -_np.einsum("ij,ij->i", normal, centroid)])
+
+    def __repr__(self):
+        return (f"hullkit.spatial.HalfspaceIntersection(nineq={self.nineq}, ndim={self.ndim}, "
+                f"intersections={len(self.intersections)})")
+
+
+def chebyshev_center(halfspaces):
+    """The centre and radius of the largest ball inside the halfspaces A x + b <= 0 (n, ndim + 1):
+    an interior point for HalfspaceIntersection, as scipy's documentation computes it (a linear
+    program, solved by scipy.optimize.linprog, which needs scipy). HullkitError when the
+    intersection is empty, has no interior (radius 0) or is unbounded.
+
+    Examples
+    --------
+    >>> from hullkit.spatial import chebyshev_center
+    >>> centre, radius = chebyshev_center([[-1, 0, 0], [0, -1, 0], [1, 0, -2], [0, 1, -2]])
+    >>> centre.tolist(), radius
+    ([1.0, 1.0], 1.0)
+    """
+    array = _checked_halfspaces(halfspaces)
+    try:
+        from scipy.optimize import linprog
+    except ImportError:  # pragma: no cover - scipy is installed wherever its tests run
+        raise HullkitError("chebyshev_center needs scipy (scipy.optimize.linprog)") from None
+    k = array.shape[1] - 1
+    norms = _np.linalg.norm(array[:, :k], axis=1)
+    objective = _np.zeros(k + 1)
+    objective[-1] = -1.0  # maximise the radius
+    result = linprog(objective, A_ub=_np.column_stack([array[:, :k], norms]), b_ub=-array[:, k],
+                     bounds=[(None, None)] * k + [(0, None)], method="highs")
+    if result.status == 2:
+        raise HullkitError("the halfspaces have an empty intersection (the linear program is infeasible)")
+    if result.status == 3:
+        raise HullkitError("the intersection of the halfspaces is unbounded: it holds balls of any radius")
+    if result.status != 0:
+        raise HullkitError(f"the linear program for the Chebyshev centre failed: {result.message}")
+    radius = float(result.x[-1])
+    if not radius > 0:
+        raise HullkitError("the intersection of the halfspaces has no interior (its largest ball has radius 0)")
+    return result.x[:k].copy(), radius

@@ -4,7 +4,15 @@ spatial.py."""
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["ConvexHull", "Delaunay", "Voronoi", "tsearch"]
+from . import HullkitError
+
+__all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch"]
+
+QhullError = HullkitError
+
+class _Incremental:  # add_points and close (with incremental=True)
+    def add_points(self, points: ArrayLike, restart: bool = ...) -> None: ...
+    def close(self) -> None: ...
 
 class _Cloud:  # not a class at runtime: the attributes that ConvexHull, Delaunay and Voronoi share
     points: NDArray[np.float64]  # (n, ndim)
@@ -14,24 +22,40 @@ class _Cloud:  # not a class at runtime: the attributes that ConvexHull, Delauna
     max_bound: NDArray[np.float64]
     dimension: int  # what the points span (scipy has no such attribute)
 
-class ConvexHull(_Cloud):
+class ConvexHull(_Cloud, _Incremental):
     vertices: NDArray[np.int32]
+    coplanar: NDArray[np.int32]  # (0, 3): Qc is not supported
+    good: NDArray[np.bool_] | None  # with qhull_options "QGn" / "QG-n"
     simplices: NDArray[np.int32]  # (m, ndim)
     neighbors: NDArray[np.int32]  # (m, ndim)
     equations: NDArray[np.float64]  # (m, ndim + 1)
     volume: float
     area: float
-    def __init__(self, points: ArrayLike, incremental: bool = ..., qhull_options: str | None = ...) -> None: ...
+    def __init__(self, points: ArrayLike, incremental: bool = ..., qhull_options: str | bytes | None = ...) -> None: ...
 
-class Delaunay(_Cloud):
+class Delaunay(_Cloud, _Incremental):
     simplices: NDArray[np.int32]  # (m, ndim + 1)
     neighbors: NDArray[np.int32]  # (m, ndim + 1)
     convex_hull: NDArray[np.int32]  # (k, ndim)
     nsimplex: int
     coplanar: NDArray[np.int32]  # (c, 3)
+    paraboloid_scale: float
+    paraboloid_shift: float
     def __init__(
-        self, points: ArrayLike, furthest_site: bool = ..., incremental: bool = ..., qhull_options: str | None = ...
+        self,
+        points: ArrayLike,
+        furthest_site: bool = ...,
+        incremental: bool = ...,
+        qhull_options: str | bytes | None = ...,
     ) -> None: ...
+    @property
+    def vertices(self) -> NDArray[np.int32]:
+        """Deprecated alias of simplices (a DeprecationWarning)."""
+    @property
+    def equations(self) -> NDArray[np.float64]:
+        """(nsimplex, ndim + 2): the lifted simplices' planes."""
+    def lift_points(self, x: ArrayLike) -> NDArray[np.float64]: ...
+    def plane_distance(self, xi: ArrayLike) -> NDArray[np.float64]: ...
     def find_simplex(self, xi: ArrayLike, bruteforce: bool = ..., tol: float | None = ...) -> NDArray[np.int32]:
         """The simplex holding each point of xi (shape (..., ndim)): shape xi.shape[:-1], -1 outside."""
     @property
@@ -46,7 +70,7 @@ class Delaunay(_Cloud):
 def tsearch(tri: Delaunay, xi: ArrayLike) -> NDArray[np.int32]:
     """tri.find_simplex(xi)."""
 
-class Voronoi(_Cloud):
+class Voronoi(_Cloud, _Incremental):
     furthest_site: bool
     vertices: NDArray[np.float64]  # (nv, ndim)
     ridge_points: NDArray[np.int32]  # (nr, 2)
@@ -55,7 +79,36 @@ class Voronoi(_Cloud):
     point_region: NDArray[np.intp]  # (n,)
     volumes: NDArray[np.float64]  # (n,): area in 2D, volume in 3D; inf when unbounded
     def __init__(
-        self, points: ArrayLike, furthest_site: bool = ..., incremental: bool = ..., qhull_options: str | None = ...
+        self,
+        points: ArrayLike,
+        furthest_site: bool = ...,
+        incremental: bool = ...,
+        qhull_options: str | bytes | None = ...,
     ) -> None: ...
     @property
     def ridge_dict(self) -> dict[tuple[int, int], list[int]]: ...
+
+class HalfspaceIntersection:
+    halfspaces: NDArray[np.float64]  # (nineq, ndim + 1): [A; b] for A x + b <= 0
+    interior_point: NDArray[np.float64]  # (ndim,)
+    ndim: int
+    nineq: int
+    intersections: NDArray[np.float64]  # (ninter, ndim)
+    dual_points: NDArray[np.float64]  # (nineq, ndim)
+    dual_facets: list[list[int]]
+    dual_vertices: NDArray[np.int32]
+    dual_equations: NDArray[np.float64]  # (ninter, ndim + 1)
+    dual_area: float
+    dual_volume: float
+    def __init__(
+        self,
+        halfspaces: ArrayLike,
+        interior_point: ArrayLike,
+        incremental: bool = ...,
+        qhull_options: str | bytes | None = ...,
+    ) -> None: ...
+    def add_halfspaces(self, halfspaces: ArrayLike, restart: bool = ...) -> None: ...
+    def close(self) -> None: ...
+
+def chebyshev_center(halfspaces: ArrayLike) -> tuple[NDArray[np.float64], float]:
+    """(centre, radius) of the largest ball inside the halfspaces."""

@@ -226,6 +226,58 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
     return report_dict(report);
 }
 
+/// The side of each hull facet `query` lies on, exactly: +1 strictly outside (beyond the facet's
+/// line or plane), 0 on that line or plane, -1 inside. `points` (n, 2) with `facets` (m, 2) the
+/// counter-clockwise polygon's edges [a, b] (outside: right of a -> b), or (n, 3) with (m, 3)
+/// triangles counter-clockwise seen from outside. All coordinates scaled by one power of two first
+/// when they leave the predicates' exact range (scaling by 2^k changes no sign).
+py::array_t<std::int8_t> facet_sides(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& facets,
+                                     const Points& query) {
+    if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
+        throw std::invalid_argument("points must have shape (n, 2) or (n, 3)");
+    const auto dims = static_cast<std::size_t>(points.shape(1));
+    const auto n = static_cast<std::size_t>(points.shape(0));
+    if (facets.ndim() != 2 || static_cast<std::size_t>(facets.shape(1)) != dims)
+        throw std::invalid_argument("facets must have shape (m, " + std::to_string(dims) + ")");
+    if (query.ndim() != 1 || static_cast<std::size_t>(query.shape(0)) != dims)
+        throw std::invalid_argument("the query point must have shape (" + std::to_string(dims) + ",)");
+    const std::size_t m = static_cast<std::size_t>(facets.shape(0));
+    const std::uint32_t* f = facets.data();
+    for (std::size_t k = 0; k < dims * m; ++k) {
+        if (f[k] >= n) throw std::invalid_argument("facet corner out of range");
+    }
+    std::vector<double> xyz(points.data(), points.data() + dims * n);
+    xyz.insert(xyz.end(), query.data(), query.data() + dims);
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (double value : xyz) {
+        if (!std::isfinite(value)) throw std::invalid_argument("coordinates must be finite");
+        const double magnitude = std::fabs(value);
+        largest = std::max(largest, magnitude);
+        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+    }
+    int exponent = 0;
+    if (!hullkit::predicates_range_ok(largest, smallest) &&
+        !hullkit::predicates_scale_exponent(largest, smallest, &exponent))
+        throw std::invalid_argument("the nonzero |coordinates| span more than the exact predicates' range");
+    if (exponent != 0) {
+        for (double& value : xyz) value = std::ldexp(value, exponent);
+    }
+    const double* q = xyz.data() + dims * n;
+    std::vector<std::int8_t> side(m);
+    for (std::size_t k = 0; k < m; ++k) {
+        const std::uint32_t* c = f + dims * k;
+        if (dims == 2) {
+            const double* a = xyz.data() + 2 * c[0];
+            const double* b = xyz.data() + 2 * c[1];
+            side[k] = static_cast<std::int8_t>(-hullkit::orient2d(a[0], a[1], b[0], b[1], q[0], q[1]));
+        } else {
+            side[k] = static_cast<std::int8_t>(
+                hullkit::orient3d(xyz.data() + 3 * c[0], xyz.data() + 3 * c[1], xyz.data() + 3 * c[2], q));
+        }
+    }
+    return owned(std::move(side));
+}
+
 /// scipy's ConvexHull extras for triangles (m, 3) of a closed (or open: -1 across the rim)
 /// oriented surface: neighbors[t][j], the triangle across the edge opposite corner j, found by
 /// matching each directed edge with its reverse through per-vertex lists (linear time); and
@@ -893,6 +945,7 @@ PYBIND11_MODULE(_core, m) {
           py::arg("threads") = 0u);
     m.def("verify_triangles", &verify_triangles);
     m.def("surface_extras", &surface_extras);
+    m.def("facet_sides", &facet_sides);
     m.def("verify_hull", &verify_hull);
     m.def("verify_delaunay", &verify_delaunay);
     m.def("verify_delaunay3", &verify_delaunay3, py::arg("points"), py::arg("tetrahedra"), py::arg("perturbed") = true);

@@ -3,6 +3,7 @@ triangulations agree, NaN only outside the hull, exact values at input points), 
 location it rests on (hullkit.Delaunay.locate) against brute force. Run with pytest
 (scripts/test.sh runs it in a virtual environment with hullkit installed from ./python)."""
 import doctest
+import os
 import pickle
 from fractions import Fraction
 
@@ -314,32 +315,9 @@ EXPECTED_FAILURES = {
 
 
 def test_scipy_interpolation_suites_pass_with_hullkit(tmp_path):
-    import os
-    import shutil
-    import subprocess
-    import sys
-    import xml.etree.ElementTree as ElementTree
+    from scipy_suites import assert_failures_are, run_scipy_suites
 
-    source = os.path.join(os.path.dirname(scipy.interpolate.__file__), "tests")
-    if not all(os.path.exists(os.path.join(source, name)) for name in SCIPY_SUITES):
-        pytest.fail(f"scipy's test files are not installed in {source} (Debian's python3-scipy has them)")
-    for name, replacements in SCIPY_SUITES.items():
-        text = open(os.path.join(source, name)).read()
-        for old, new in replacements.items():
-            assert old in text, f"{name} no longer has {old!r}: update SCIPY_SUITES"
-            text = text.replace(old, new)
-        (tmp_path / name).write_text(text)
-    if os.path.isdir(os.path.join(source, "data")):
-        shutil.copytree(os.path.join(source, "data"), tmp_path / "data")
-    report = tmp_path / "report.xml"
-    subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", f"--junitxml={report}",
-                    *SCIPY_SUITES], cwd=tmp_path, capture_output=True, text=True)
-    outcomes = {}
-    for case in ElementTree.parse(report).iter("testcase"):
-        name = f"{case.get('classname').split('.')[0]}.py::{case.get('classname').split('.', 1)[1]}::{case.get('name')}"
-        failed = case.find("failure") is not None or case.find("error") is not None
-        outcomes[name] = "skipped" if case.find("skipped") is not None else "failed" if failed else "passed"
+    directory = os.path.join(os.path.dirname(scipy.interpolate.__file__), "tests")
+    outcomes = run_scipy_suites(tmp_path, directory, SCIPY_SUITES)
     assert len(outcomes) >= 39, f"only {len(outcomes)} tests ran"
-    failed = {name for name, outcome in outcomes.items() if outcome == "failed"}
-    assert failed == EXPECTED_FAILURES, (f"newly failing: {sorted(failed - EXPECTED_FAILURES)}; "
-                                         f"now passing (update EXPECTED_FAILURES): {sorted(EXPECTED_FAILURES - failed)}")
+    assert_failures_are(outcomes, EXPECTED_FAILURES)

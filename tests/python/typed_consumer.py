@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 import hullkit
 from hullkit.interpolate import CloughTocher2DInterpolator, LinearNDInterpolator, griddata
-from hullkit.spatial import ConvexHull, Delaunay
+from hullkit.spatial import ConvexHull, Delaunay, HalfspaceIntersection, QhullError, chebyshev_center
 
 
 def has_dtype(array: NDArray[Any], dtype: type[np.generic]) -> bool:
@@ -105,6 +105,29 @@ def interpolation(xy: NDArray[np.float64]) -> None:
     assert has_dtype(nearest, np.int16)
 
 
+def scipy_extras(square: NDArray[np.float64]) -> None:
+    seen = ConvexHull(np.vstack([square[:4], [[0.5, 2.0]]]), incremental=True, qhull_options="QG4 Qt")
+    good: NDArray[np.bool_] | None = seen.good
+    assert good is not None and int(good.sum()) == 1
+    seen.add_points(np.array([[0.5, -2.0]]), restart=False)
+    seen.close()
+    tri = Delaunay(square)
+    distance: NDArray[np.float64] = tri.plane_distance(np.array([0.5, 0.5]))
+    assert distance.shape == (tri.nsimplex,) and tri.equations.shape == (tri.nsimplex, 4)
+    box = np.array([[-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [1.0, 0.0, -1.0], [0.0, 1.0, -1.0]])
+    centre, radius = chebyshev_center(box)
+    hs = HalfspaceIntersection(box, centre)
+    corners: NDArray[np.float64] = hs.intersections
+    facets: list[list[int]] = hs.dual_facets
+    assert len(corners) == len(facets) == 4 and radius == 0.5
+    try:
+        HalfspaceIntersection(box, np.array([2.0, 2.0]))
+    except QhullError as error:
+        assert error.point == 2
+    else:
+        raise AssertionError("no QhullError")
+
+
 def main() -> None:
     rng = np.random.default_rng(5)
     corners = [[x, y, z] for x in (0.0, 1.0) for y in (0.0, 1.0) for z in (0.0, 1.0)]
@@ -113,6 +136,7 @@ def main() -> None:
     hulls(cube)
     triangulations(square, cube)
     interpolation(square)
+    scipy_extras(square)
     try:
         hullkit.hull([[np.nan, 0.0, 0.0]])
     except hullkit.HullkitError as error:

@@ -1,0 +1,273 @@
+"""hullkit.spatial's scipy extras: ConvexHull's `good` (QGn), the incremental mode of every class,
+Qhull options, Delaunay's lifted planes (equations, plane_distance, lift_points), barycentric
+transforms of slivers, and HalfspaceIntersection; each against an independent check (rational
+arithmetic, brute force) or scipy (Qhull) on inputs in general position."""
+import doctest
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import scipy.spatial
+
+from hullkit import HullkitError
+from hullkit.spatial import ConvexHull, Delaunay, HalfspaceIntersection, QhullError, Voronoi, chebyshev_center
+
+
+def test_docstring_examples_run():
+    for function in (ConvexHull, Delaunay, HalfspaceIntersection, chebyshev_center):
+        finder = doctest.DocTestFinder(recurse=False)
+        runner = doctest.DocTestRunner()
+        for test in finder.find(function, function.__name__, globs={}):
+            runner.run(test)
+        assert runner.failures == 0 and runner.tries > 0, function.__name__
+
+
+def exact_side(corners, q):
+    """The exact sign of orient(corners..., q) in hullkit's convention for hull facets: > 0 when q
+    is strictly beyond the facet (2D: right of a -> b; 3D: on the side the normal (b-a)x(c-a) points to)."""
+    f = [[Fraction(float(v)) for v in row] for row in corners]
+    q = [Fraction(float(v)) for v in q]
+    if len(q) == 2:
+        (ax, ay), (bx, by) = f
+        value = -((bx - ax) * (q[1] - ay) - (by - ay) * (q[0] - ax))
+    else:
+        a, b, c = f
+        u = [b[i] - a[i] for i in range(3)]
+        v = [c[i] - a[i] for i in range(3)]
+        w = [q[i] - a[i] for i in range(3)]
+        value = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+                 + u[2] * (v[0] * w[1] - v[1] * w[0]))
+    return (value > 0) - (value < 0)
+
+
+@pytest.mark.parametrize("ndim", [2, 3])
+def test_good_marks_the_facets_point_n_sees(ndim):
+    rng = np.random.default_rng(ndim)
+    points = rng.random((60, ndim))
+    points[7] = 0.5 + 0.8 * (points[7] - 0.5) / np.linalg.norm(points[7] - 0.5)  # near the hull, outside it
+    for option, visible in (("QG7", True), ("QG-7", False), ("Qt QG7 Qbb", True)):
+        hull = ConvexHull(points, qhull_options=option)
+        assert 7 not in hull.vertices and hull.good.dtype == bool and hull.good.shape == (len(hull.simplices),)
+        alone = ConvexHull(np.delete(points, 7, axis=0))
+        assert len(alone.simplices) == len(hull.simplices) and len(alone.vertices) == len(hull.vertices)
+        sees = np.array([exact_side(points[f], points[7]) > 0 for f in hull.simplices])
+        assert np.array_equal(hull.good, sees if visible else ~sees) and sees.any() and not sees.all()
+    assert ConvexHull(points).good is None
+    with pytest.raises(HullkitError, match="QG60: there is no point 60"):
+        ConvexHull(points, qhull_options="QG60")
+
+
+def test_good_of_a_point_on_a_facet_line_is_false():
+    square = np.array([[0, 0], [2, 0], [2, 2], [0, 2], [1, 0]], dtype=float)  # point 4 on the bottom edge
+    hull = ConvexHull(square, qhull_options="QG4")
+    assert not hull.good.any()
+    hull = ConvexHull(np.vstack([square[:4], [[1, -1e-100]]]), qhull_options="QG4")  # just below it
+    assert hull.good.sum() == 1 and sorted(hull.simplices[hull.good][0].tolist()) == [0, 1]
+
+
+@pytest.mark.parametrize("cls,ndim", [(ConvexHull, 2), (ConvexHull, 3), (Delaunay, 2), (Delaunay, 3),
+                                      (Voronoi, 2), (Voronoi, 3)])
+def test_incremental_equals_one_build(cls, ndim):
+    rng = np.random.default_rng(10 + ndim)
+    chunks = [rng.random((8, ndim)), rng.random((1, ndim)), rng.random((30, ndim)), np.zeros((0, ndim))]
+    grown = cls(chunks[0], incremental=True)
+    restarted = cls(chunks[0], incremental=True)
+    for chunk in chunks[1:]:
+        grown.add_points(chunk)
+    restarted.add_points(np.concatenate(chunks[1:]), restart=True)
+    whole = cls(np.concatenate(chunks))
+    for result in (grown, restarted):
+        assert result.npoints == whole.npoints == 39
+        for name, value in vars(whole).items():
+            if isinstance(value, np.ndarray):
+                assert np.array_equal(getattr(result, name), value), name
+        if cls is Voronoi:
+            assert result.regions == whole.regions and result.ridge_vertices == whole.ridge_vertices
+    grown.close()
+    with pytest.raises(HullkitError, match="after close"):
+        grown.add_points(chunks[1])
+    with pytest.raises(HullkitError, match="incremental=True"):
+        whole.add_points(chunks[1])
+    with pytest.raises(HullkitError, match=rf"shape \(k, {ndim}\)"):
+        restarted.add_points(np.zeros((2, 5 - ndim)))
+
+
+def test_precision_options_change_nothing():
+    rng = np.random.default_rng(4)
+    for ndim in (2, 3):
+        points = rng.random((200, ndim))
+        for cls, options in ((ConvexHull, "Qt Qbb Qz Qx Q12 QJ Pp Qs"), (Delaunay, "Qbb Qc Qz Q12 QJ Qt"),
+                             (Voronoi, "Qbb Qc Qz Fv")):
+            plain, optioned = cls(points), cls(points, qhull_options=options)
+            for name, value in vars(plain).items():
+                if isinstance(value, np.ndarray):
+                    assert np.array_equal(getattr(optioned, name), value), (cls, name)
+        # bytes, as scipy accepts
+        assert np.array_equal(Delaunay(points, qhull_options=b"Qbb Qc").simplices, Delaunay(points).simplices)
+
+
+def test_voronoi_without_qz_has_no_empty_region():
+    points = np.random.default_rng(5).random((40, 2))
+    with_qz, without = Voronoi(points), Voronoi(points, qhull_options="Qbb Qc")
+    assert with_qz.regions[0] == [] and without.regions == with_qz.regions[1:]
+    assert np.array_equal(without.point_region, with_qz.point_region - 1)
+
+
+@pytest.mark.parametrize("ndim", [2, 3])
+def test_lifted_planes_agree_with_exact_in_circle_tests(ndim):
+    rng = np.random.default_rng(20 + ndim)
+    points = rng.random((40, ndim))
+    tri = Delaunay(points)
+    eq = tri.equations
+    assert eq.shape == (tri.nsimplex, ndim + 2)
+    assert np.allclose(np.linalg.norm(eq[:, :-1], axis=1), 1) and (eq[:, -2] < 0).all()
+    lifted = tri.lift_points(points)
+    assert lifted.shape == (40, ndim + 1) and np.array_equal(lifted[:, -1], (points ** 2).sum(axis=1))
+    corner_distance = np.einsum("mkd,md->mk", lifted[tri.simplices], eq[:, :-1]) + eq[:, -1:]
+    assert np.abs(corner_distance).max() < 1e-12
+    queries = rng.random((25, ndim))
+    distance = tri.plane_distance(queries)
+    assert distance.shape == (25, tri.nsimplex)
+    assert tri.plane_distance(queries[0]).shape == (tri.nsimplex,)
+    # Positive exactly when the query is inside the simplex's circumsphere (rational arithmetic).
+    for q in range(25):
+        for s in range(0, tri.nsimplex, 7):
+            corners = [[Fraction(float(v)) for v in points[i]] for i in tri.simplices[s]]
+            x = [Fraction(float(v)) for v in queries[q]]
+            rows = [[c[k] - x[k] for k in range(ndim)] + [sum((c[k] - x[k]) ** 2 for k in range(ndim))]
+                    for c in corners]
+            orientation = np.sign(np.linalg.det(np.array([[float(c[k] - corners[-1][k]) for k in range(ndim)]
+                                                          for c in corners[:-1]])))
+            inside = Fraction_det(rows) * int(orientation)
+            if abs(distance[q, s]) > 1e-12:
+                assert (distance[q, s] > 0) == (inside > 0), (q, s)
+
+
+def Fraction_det(rows):
+    """Determinant of a square matrix of Fractions (Laplace expansion: 3x3 and 4x4 here)."""
+    if len(rows) == 1:
+        return rows[0][0]
+    return sum((-1) ** j * rows[0][j] * Fraction_det([row[:j] + row[j + 1:] for row in rows[1:]])
+               for j in range(len(rows)))
+
+
+def test_transform_is_nan_only_for_untrustworthy_slivers():
+    rng = np.random.default_rng(6)
+    points = np.vstack([rng.random((50, 2)), [[0, 2], [1, 2], [2, 2 + 1e-15]]])
+    tri = Delaunay(points)
+    t = tri.transform
+    bad = np.isnan(t[:, 0, 0])
+    assert bad.any() and bad.sum() < 5
+    corners = points[tri.simplices[~bad]]
+    centroids = corners.mean(axis=1)
+    c = np.einsum("ijk,ik->ij", t[~bad, :2], centroids - t[~bad, 2])
+    assert np.allclose(c, 1 / 3, rtol=1e-6)
+
+
+def test_vertices_alias_warns_and_3d_arrays_are_writable():
+    tri = Delaunay([[0, 0], [0, 1], [1, 0]])
+    with pytest.warns(DeprecationWarning, match="'vertices' is deprecated in favour of 'simplices'"):
+        assert tri.vertices is tri.simplices
+    tri3 = Delaunay(np.random.default_rng(7).random((30, 3)))
+    before = tri3.find_simplex(tri3.points[:5].mean(axis=0))
+    for name in ("simplices", "neighbors", "convex_hull"):
+        getattr(tri3, name).sort(axis=1)  # scipy's are writable; the core's own arrays stay untouched
+    assert tri3.find_simplex(tri3.points[:5].mean(axis=0)) == before
+
+
+# -- HalfspaceIntersection ---------------------------------------------------------------------
+
+def tangent_halfspaces(rng, n, ndim):
+    normals = rng.normal(size=(n, ndim))
+    normals /= np.linalg.norm(normals, axis=1)[:, None]
+    return np.column_stack([normals, -np.ones(n) - rng.random(n)])  # n . x <= 1 + r
+
+
+@pytest.mark.parametrize("ndim", [2, 3])
+def test_halfspaces_match_scipy_in_general_position(ndim):
+    rng = np.random.default_rng(30 + ndim)
+    halfspaces = tangent_halfspaces(rng, 60, ndim)
+    halfspaces[5, -1] = -50.0  # far away: redundant
+    point = rng.random(ndim) * 0.1
+    ours, theirs = HalfspaceIntersection(halfspaces, point), scipy.spatial.HalfspaceIntersection(halfspaces, point)
+    assert np.allclose(ours.dual_points, theirs.dual_points, rtol=1e-15)
+    assert sorted(ours.dual_vertices.tolist()) == sorted(theirs.dual_vertices.tolist()) and 5 not in ours.dual_vertices
+    assert sorted(map(sorted, ours.dual_facets)) == sorted(map(sorted, theirs.dual_facets))
+    assert len(ours.intersections) == len(theirs.intersections) == len(ours.dual_facets)
+    tree = scipy.spatial.cKDTree(theirs.intersections)
+    assert tree.query(ours.intersections)[0].max() < 1e-12
+    assert ours.dual_volume == pytest.approx(theirs.dual_volume, rel=1e-12)
+    assert ours.dual_area == pytest.approx(theirs.dual_area, rel=1e-12)
+    # Each corner lies on its facet's planes and inside all the others.
+    for corner, facet in zip(ours.intersections, ours.dual_facets):
+        values = halfspaces[:, :-1] @ corner + halfspaces[:, -1]
+        assert np.abs(values[facet]).max() < 1e-12 and values.max() < 1e-12
+    if ndim == 2:  # counter-clockwise corners
+        x, y = (ours.intersections - ours.intersections.mean(axis=0)).T
+        assert (np.diff(np.unwrap(np.arctan2(y, x))) > 0).all()
+    assert ours.ndim == ndim and ours.nineq == 60 and np.array_equal(ours.halfspaces, halfspaces)
+
+
+def test_halfspace_corners_where_more_planes_meet_are_one_facet():
+    cube = np.array([[-1, 0, 0, 0], [1, 0, 0, -1], [0, -1, 0, 0], [0, 1, 0, -1], [0, 0, -1, 0], [0, 0, 1, -1]],
+                    dtype=float)
+    hs = HalfspaceIntersection(cube, [0.5, 0.5, 0.5])
+    assert len(hs.intersections) == 8 and all(len(f) == 3 for f in hs.dual_facets)
+    assert sorted(map(tuple, hs.intersections.round(12).tolist())) == [
+        (x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+    # A square pyramid: four planes meet at its apex (1, 1, 1) (from the interior point, exactly:
+    # the dual points are coplanar), which is one corner with four halfspaces.
+    pyramid = np.array([[0, 0, -1, 0], [1, 0, 1, -2], [-1, 0, 1, 0], [0, 1, 1, -2], [0, -1, 1, 0]], dtype=float)
+    hs = HalfspaceIntersection(pyramid, [1.0, 1.0, 0.25])
+    sizes = sorted(len(f) for f in hs.dual_facets)
+    assert sizes == [3, 3, 3, 3, 4] and len(hs.intersections) == 5
+    apex = hs.intersections[[len(f) == 4 for f in hs.dual_facets]][0]
+    assert np.allclose(apex, [1, 1, 1], atol=1e-14)
+
+
+def test_halfspace_errors_name_the_problem():
+    square = np.array([[-1, 0, 0], [0, -1, 0], [1, 0, -1], [0, 1, -1]], dtype=float)
+    with pytest.raises(QhullError, match="not strictly inside halfspace 0") as caught:
+        HalfspaceIntersection(square, [0.0, 0.5])  # on the boundary x = 0: exactly, not inside
+    assert caught.value.point == 0 and QhullError is HullkitError
+    with pytest.raises(HullkitError, match="not strictly inside halfspace 2"):
+        HalfspaceIntersection(square, [1 + 2 ** -52, 0.5])
+    tiny = 1e-300  # exact even where the floating-point sum would underflow
+    with pytest.raises(HullkitError, match="not strictly inside halfspace 0"):
+        HalfspaceIntersection(np.array([[tiny, tiny, 0], [-1, 0, -1], [0, -1, -1], [1, 1, -5]]), [0.0, 0.0])
+    with pytest.raises(HullkitError, match="unbounded"):
+        HalfspaceIntersection(square[:3], [0.5, 0.5])
+    with pytest.raises(HullkitError, match="unbounded"):
+        HalfspaceIntersection(np.array([[-1, 0, 0], [0, -1, 0], [1, 0, -1], [-1, 0, -3]], dtype=float), [0.5, 0.5])
+    for point in ([0.5, 0.5, 0.5], [[0.5], [0.5]], [[0.5, 0.5]]):
+        with pytest.raises(ValueError, match="interior_point must have shape"):
+            HalfspaceIntersection(square, np.array(point))
+    with pytest.raises(HullkitError, match="halfspace 1 has a non-finite"):
+        HalfspaceIntersection(np.vstack([square[:1], [[np.nan, 0, 0]], square[1:]]), [0.5, 0.5])
+    with pytest.raises(HullkitError, match="halfspaces in 4 dimensions is not supported"):
+        HalfspaceIntersection(np.zeros((6, 5)), np.zeros(4))
+    with pytest.raises(HullkitError, match="Qhull option 'QG0'"):
+        HalfspaceIntersection(square, [0.5, 0.5], qhull_options="QG0")
+
+
+def test_halfspace_incremental_and_chebyshev_center():
+    rng = np.random.default_rng(40)
+    halfspaces = tangent_halfspaces(rng, 30, 3)
+    centre, radius = chebyshev_center(halfspaces)
+    assert (halfspaces[:, :-1] @ centre + halfspaces[:, -1] <= -radius * (1 - 1e-9)).all() and radius >= 1
+    grown = HalfspaceIntersection(halfspaces[:10], centre, incremental=True)
+    for row in halfspaces[10:]:
+        grown.add_halfspaces(row[None, :])
+    whole = HalfspaceIntersection(halfspaces, centre)
+    assert np.array_equal(grown.intersections, whole.intersections) and grown.dual_facets == whole.dual_facets
+    grown.close()
+    with pytest.raises(HullkitError, match="after close"):
+        grown.add_halfspaces(halfspaces[:1])
+    with pytest.raises(HullkitError, match="incremental=True"):
+        whole.add_halfspaces(halfspaces[:1])
+    with pytest.raises(HullkitError, match="empty intersection"):
+        chebyshev_center([[1, 0, 0], [-1, 0, 1], [0, 1, 0], [0, -1, 0]])  # x <= 0 and x >= 1
+    with pytest.raises(HullkitError, match="unbounded"):
+        chebyshev_center([[1, 0, -1], [0, 1, -1]])
+    with pytest.raises(HullkitError, match="no interior"):
+        chebyshev_center([[1, 0, 0], [-1, 0, 0], [0, 1, -1], [0, -1, -1]])  # x = 0 exactly
