@@ -6,6 +6,7 @@
     client = Client("scheduler:8786")                       # or LocalCluster(...), or none
     h = hullkit.dask.hull(["part-0.ply", "part-1.ply"])      # or a Dask array of shape (n, 3)
     reports = hullkit.dask.check_routes("scene.json", routes)
+    values = hullkit.dask.interpolate(LinearNDInterpolator(points, v), queries)   # a Dask array
 
 hull: each partition (a chunk of the array, or a file read in batches) is hulled on a worker,
 which keeps only its chunk, or one batch of its file, and the running hull; what travels is each
@@ -24,6 +25,12 @@ checked in batches on the workers (a long route cut between batches, its pieces'
 and the reports come back in the order of the routes, identical to RouteChecker(scene).check(route)
 here.
 
+interpolate: an interpolator of hullkit.interpolate evaluated over a Dask array of queries, block
+by block on the workers. What travels is the interpolator's recipe (its class, points, values and
+options), once per worker: each worker builds the interpolator from it once (the triangulation
+depends only on the points, so it is the same, bit for bit) and evaluates every block it is
+given with it. The values are the same bits as the interpolator called here.
+
 Every task runs hullkit on one thread by default (``threads=1``): the cluster's workers are the
 parallelism. hullkit must be installed on the workers.
 """
@@ -36,15 +43,16 @@ import math
 import os
 import re
 import threading
+import weakref
 
 import numpy as np
 
 import dask
 from dask import delayed
 
-from . import HullBuilder, HullkitError, _core, _scene_json, _translated, as_points
+from . import HullBuilder, HullkitError, _core, _scene_json, _threads, _translated, as_points
 
-__all__ = ["hull", "hull_graph", "check_routes", "DaskHull"]
+__all__ = ["hull", "hull_graph", "check_routes", "interpolate", "DaskHull"]
 
 
 class DaskHull:
@@ -522,3 +530,103 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         if pending:  # some workers could not read the scene: it is sent to every worker
             shared = _scene_on_workers(client, sent)
     return _joined(batches, results)
+
+
+# ---- interpolation ------------------------------------------------------------------------------
+
+class _Recipe:
+    """What a worker needs to build an interpolator: its class, inputs and options, and the
+    threads each block is evaluated on. Pickled once per worker; the worker keeps one built
+    interpolator per recipe object (_built)."""
+
+    __slots__ = ("cls", "inputs", "options", "threads", "__weakref__")
+
+    def __init__(self, interpolator, threads):
+        self.cls, self.inputs = type(interpolator), interpolator._inputs
+        self.options, self.threads = dict(getattr(interpolator, "_options", {})), threads
+
+    def __getstate__(self):
+        return (self.cls, self.inputs, self.options, self.threads)
+
+    def __setstate__(self, state):
+        self.cls, self.inputs, self.options, self.threads = state
+
+    def build(self):
+        from . import interpolate as _interpolate
+        points, values, fill_value, rescale, _ = self.inputs
+        if self.cls is _interpolate.NearestNDInterpolator:
+            return self.cls(points, values, rescale=rescale, threads=self.threads)
+        return self.cls(points, values, fill_value=fill_value, rescale=rescale, threads=self.threads, **self.options)
+
+
+_built = weakref.WeakKeyDictionary()
+_built_lock = threading.Lock()
+_builds = 0  # interpolators this process has built (the tests check: one per worker)
+
+
+def _interpolator_for(recipe):
+    """The worker's interpolator for ``recipe``: built by the first task that needs it (under a
+    lock: the other tasks wait for it rather than build it again), with its triangulation."""
+    global _builds
+    with _built_lock:
+        interpolator = _built.get(recipe)
+        if interpolator is None:
+            interpolator = recipe.build()
+            _builds += 1
+            interpolator._triangulation()
+            _built[recipe] = interpolator
+        return interpolator
+
+
+@_on_worker
+def _interpolate_block(recipe, block, options):
+    return _interpolator_for(recipe)(np.asarray(block, dtype=np.float64), **options)
+
+
+def interpolate(interpolator, xi, threads=1, **options):
+    """``interpolator`` (a LinearNDInterpolator, NearestNDInterpolator or
+    CloughTocher2DInterpolator of hullkit.interpolate) evaluated at the queries ``xi``, a Dask
+    array of shape (..., ndim): a Dask array of shape xi.shape[:-1] + the values' trailing shape,
+    computed block by block on Dask's scheduler (a distributed.Client's when one is current).
+    The interpolator's points and values are sent once to each worker that evaluates a block and
+    the interpolator built there once (``threads``: the threads each block is evaluated on; the
+    workers are the parallelism). ``options``: query options (NearestNDInterpolator's
+    ``distance_upper_bound``). The values are the same bits as ``interpolator(xi)`` here."""
+    from . import interpolate as _interpolate
+    try:
+        import dask.array as da
+    except ImportError:  # pragma: no cover - dask.array needs numpy, which hullkit has
+        raise HullkitError("hullkit.dask.interpolate needs dask.array") from None
+    kinds = (_interpolate.LinearNDInterpolator, _interpolate.NearestNDInterpolator,
+             _interpolate.CloughTocher2DInterpolator)
+    if not isinstance(interpolator, kinds):
+        raise HullkitError(f"hullkit.dask.interpolate needs an interpolator of hullkit.interpolate, "
+                           f"got {type(interpolator).__name__}")
+    if not isinstance(xi, da.Array):
+        raise HullkitError(f"hullkit.dask.interpolate: xi must be a Dask array of shape (..., {interpolator.ndim}), "
+                           f"got {type(xi).__name__}")
+    if xi.ndim < 1 or xi.shape[-1] != interpolator.ndim:
+        raise HullkitError(f"hullkit.dask.interpolate: xi must have shape (..., {interpolator.ndim}), got {xi.shape}")
+    _threads_checked = _threads(threads)
+    if options and not interpolator._query_options:
+        raise HullkitError(f"{type(interpolator).__name__} takes no query options, got {sorted(options)}")
+    if len(xi.chunks[-1]) != 1:
+        xi = xi.rechunk({xi.ndim - 1: interpolator.ndim})
+    trailing = tuple(interpolator.values_shape)
+    dtype = interpolator.values.dtype
+    if isinstance(interpolator, _interpolate.NearestNDInterpolator):
+        if np.isfinite(options.get("distance_upper_bound", np.inf)):
+            dtype = np.result_type(dtype, np.float64)
+    elif isinstance(interpolator, _interpolate.CloughTocher2DInterpolator) and np.iscomplexobj(interpolator.grad):
+        dtype = np.complex128
+    # Keys from the content (the class, points, values, options and threads): the same
+    # interpolation is the same graph, and two different ones never share a key.
+    recipe = _Recipe(interpolator, _threads_checked)
+    token = dask.base.tokenize(recipe.cls.__qualname__, recipe.inputs, recipe.options, recipe.threads)
+    shared = delayed(recipe, name=f"hullkit-interpolator-{token}", traverse=False)
+    last = xi.ndim - 1
+    return da.map_blocks(_interpolate_block, shared, xi, options, dtype=dtype, drop_axis=last,
+                         new_axis=list(range(last, last + len(trailing))) or None,
+                         chunks=xi.chunks[:-1] + tuple((size,) for size in trailing),
+                         name=f"hullkit-interpolate-{dask.base.tokenize(token, xi.name, options)}")
+

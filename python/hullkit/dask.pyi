@@ -11,8 +11,9 @@ from distributed import Client
 from numpy.typing import ArrayLike, NDArray
 
 from . import _HullBuilderResult
+from .interpolate import CloughTocher2DInterpolator, LinearNDInterpolator, NearestNDInterpolator
 
-__all__ = ["hull", "hull_graph", "check_routes", "DaskHull"]
+__all__ = ["hull", "hull_graph", "check_routes", "interpolate", "DaskHull"]
 
 # A Dask array of shape (n, 3), or point files (a list or tuple at runtime).
 _Source = Array | Sequence[str | os.PathLike[str]]
@@ -42,3 +43,10 @@ def check_routes(
     send_scene: bool = ...,
     rotations: Iterable[ArrayLike | None] | None = ...,
 ) -> list[dict[str, Any]]: ...
+def interpolate(
+    interpolator: LinearNDInterpolator | NearestNDInterpolator | CloughTocher2DInterpolator,
+    xi: Array,
+    threads: int = ...,
+    **options: Any,
+) -> Array:
+    """interpolator(xi) block by block on Dask's scheduler: a Dask array."""

@@ -357,3 +357,48 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
     assert [timeless(r) for r in done["reports"]] == expected
     client.wait_for_workers(2, timeout=60)
     assert victim not in client.run(os.getpid).values()  # it was killed, and replaced
+
+
+def test_interpolation_blockwise_equals_the_local_call(client):
+    from hullkit.interpolate import CloughTocher2DInterpolator, LinearNDInterpolator, NearestNDInterpolator
+
+    rng = np.random.default_rng(50)
+    xy, xyz = rng.random((3000, 2)), rng.random((2000, 3))
+    values2, values3 = np.sin(3 * xy[:, 0]) + xy[:, 1], xyz.sum(axis=1)
+    q2 = rng.random((4, 2500, 2)) * 1.2 - 0.1  # leading shape (4, 2500), some outside the hull
+    q3 = rng.random((9000, 3)) * 1.2 - 0.1
+    cases = [
+        (LinearNDInterpolator(xy, values2, fill_value=-1.0), q2, {}),
+        (LinearNDInterpolator(xyz, np.stack([values3, 1j * values3], axis=1)), q3, {}),
+        (NearestNDInterpolator(xyz, np.arange(2000)), q3, {"distance_upper_bound": 0.05}),
+        (NearestNDInterpolator(xy, np.arange(3000)), q2, {}),
+        (CloughTocher2DInterpolator(xy, np.stack([values2, 2 * values2], axis=1), rescale=True), q2, {}),
+    ]
+    before = sum(client.run(lambda: hullkit.dask._builds).values())
+    for interpolator, queries, options in cases:
+        chunks = (2, 700, 2) if queries.ndim == 3 else (1300, 3)
+        lazy = hullkit.dask.interpolate(interpolator, da.from_array(queries, chunks=chunks), **options)
+        local = interpolator(queries, **options)
+        assert lazy.shape == local.shape and lazy.dtype == local.dtype
+        out = lazy.compute()
+        assert out.dtype == local.dtype
+        np.testing.assert_array_equal(out, local)  # bit for bit (NaN where local has NaN)
+    # Each worker built each interpolator at most once, whatever the number of blocks it evaluated.
+    built = sum(client.run(lambda: hullkit.dask._builds).values()) - before
+    assert len(cases) <= built <= 2 * len(cases)
+
+
+def test_interpolation_errors(client):
+    from hullkit.interpolate import LinearNDInterpolator
+
+    f = LinearNDInterpolator(np.random.default_rng(51).random((50, 2)), np.arange(50.0))
+    with pytest.raises(hullkit.HullkitError, match="must be a Dask array"):
+        hullkit.dask.interpolate(f, np.zeros((3, 2)))
+    with pytest.raises(hullkit.HullkitError, match=r"shape \(\.\.\., 2\)"):
+        hullkit.dask.interpolate(f, da.zeros((3, 3)))
+    with pytest.raises(hullkit.HullkitError, match="needs an interpolator of hullkit.interpolate"):
+        hullkit.dask.interpolate(lambda q: q, da.zeros((3, 2)))
+    with pytest.raises(hullkit.HullkitError, match="takes no query options"):
+        hullkit.dask.interpolate(f, da.zeros((3, 2)), distance_upper_bound=1.0)
+    with pytest.raises(hullkit.HullkitError, match="threads must be"):
+        hullkit.dask.interpolate(f, da.zeros((3, 2)), threads=-1)
