@@ -187,3 +187,13 @@ def test_route_legs_that_turn_as_rotations_or_in_the_scene():
         checker.check([[0, 0, 0], [1, 0, 0]], rotations=[[1, 0, 0, 0]])
     with pytest.raises(hullkit.HullkitError, match="not a unit quaternion"):
         checker.check([[0, 0, 0], [1, 0, 0]], rotations=[[1, 0, 0, 0], [1, 0, 0, 0.5]])
+
+
+def test_the_installed_package_carries_its_licence():
+    import importlib.metadata
+
+    licences = [f for f in importlib.metadata.files("hullkit") if f.name.upper().startswith("LICEN")]
+    assert licences, "the installed distribution has no licence file"
+    text = licences[0].read_text()
+    assert "MIT" in text or "Permission is hereby granted" in text
+    assert importlib.metadata.metadata("hullkit")["License"] == "MIT"
