@@ -5,6 +5,7 @@ call in a fresh process; it prints one JSON line.
     python_bench.py hull --lib hullkit|scipy --n N              ConvexHull of N points on a sphere
     python_bench.py delaunay --lib hullkit|scipy --n N          Delaunay of N uniform 2D points
     python_bench.py halfspace --lib hullkit|scipy --n N         HalfspaceIntersection of N planes tangent to a sphere
+    python_bench.py voronoi --lib hullkit|scipy --n N           Voronoi of N uniform 2D points (hullkit: with cell areas)
     python_bench.py conversions --lib "float64 C"|"float32 Fortran" --n N   hullkit.hull outside the core
     python_bench.py write-ply --n N --files K --dir D           a ball of N points as K binary PLY
     python_bench.py files --mode single|dask --dir D            the hull of those files
@@ -38,12 +39,15 @@ def digest(*arrays):
     return h.hexdigest()[:16]
 
 
+def spatial_class(lib, name):
+    """hullkit.spatial's or scipy.spatial's class ``name``."""
+    import importlib
+    return getattr(importlib.import_module("hullkit.spatial" if lib == "hullkit" else "scipy.spatial"), name)
+
+
 def run_hull(args):
     points = sphere(args.n)
-    if args.lib == "hullkit":
-        from hullkit.spatial import ConvexHull
-    else:
-        from scipy.spatial import ConvexHull
+    ConvexHull = spatial_class(args.lib, "ConvexHull")
     start = time.perf_counter()
     h = ConvexHull(points)
     seconds = time.perf_counter() - start
@@ -53,10 +57,7 @@ def run_hull(args):
 
 def run_delaunay(args):
     points = np.random.default_rng(16).random((args.n, 2))
-    if args.lib == "hullkit":
-        from hullkit.spatial import Delaunay
-    else:
-        from scipy.spatial import Delaunay
+    Delaunay = spatial_class(args.lib, "Delaunay")
     start = time.perf_counter()
     d = Delaunay(points)
     seconds = time.perf_counter() - start
@@ -67,15 +68,30 @@ def run_delaunay(args):
 def run_halfspace(args):
     normals = sphere(args.n, seed=17)
     halfspaces = np.column_stack([normals, -np.ones(args.n)])  # n . x <= 1: tangent to the unit sphere
-    if args.lib == "hullkit":
-        from hullkit.spatial import HalfspaceIntersection
-    else:
-        from scipy.spatial import HalfspaceIntersection
+    HalfspaceIntersection = spatial_class(args.lib, "HalfspaceIntersection")
     start = time.perf_counter()
     hs = HalfspaceIntersection(halfspaces, np.zeros(3))
     seconds = time.perf_counter() - start
     return {"seconds": seconds, "corners": int(len(hs.intersections)),
             "vertex_set": digest(np.sort(np.asarray(hs.dual_vertices, dtype=np.int64)))}
+
+
+def run_voronoi(args):
+    points = np.random.default_rng(18).random((args.n, 2))
+    Voronoi = spatial_class(args.lib, "Voronoi")
+    start = time.perf_counter()
+    v = Voronoi(points)
+    areas = v.volumes if args.lib == "hullkit" else None  # scipy has none
+    seconds = time.perf_counter() - start
+    # Then scipy's lists (hullkit makes them on first use; scipy's exist already).
+    start = time.perf_counter()
+    regions, ridges = v.regions, v.ridge_vertices
+    lists = time.perf_counter() - start
+    bounded = sum(1 for r in regions if r and -1 not in r)
+    return {"seconds": seconds, "lists_seconds": lists, "with_lists": seconds + lists, "vertices": int(len(v.vertices)),
+            "ridges": len(ridges), "bounded": bounded,
+            "vertex_set": f"{len(v.vertices)}-{len(ridges)}-{bounded}",
+            "finite_areas": None if areas is None else int(np.isfinite(areas).sum())}
 
 
 def run_conversions(args):
@@ -205,7 +221,7 @@ def run_routes(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("what", choices=["hull", "delaunay", "halfspace", "conversions", "write-ply", "files", "routes"])
+    parser.add_argument("what", choices=["hull", "delaunay", "halfspace", "voronoi", "conversions", "write-ply", "files", "routes"])
     parser.add_argument("--lib", default="hullkit")
     parser.add_argument("--n", type=float, default=1e6)
     parser.add_argument("--files", type=int, default=16)
@@ -217,7 +233,7 @@ def main():
     parser.add_argument("--one-route", action="store_true", help="the legs as one route, not routes of 10 legs")
     args = parser.parse_args()
     args.n = int(args.n)
-    result = {"hull": run_hull, "delaunay": run_delaunay, "halfspace": run_halfspace, "conversions": run_conversions, "write-ply": run_write_ply,
+    result = {"hull": run_hull, "delaunay": run_delaunay, "halfspace": run_halfspace, "voronoi": run_voronoi, "conversions": run_conversions, "write-ply": run_write_ply,
               "files": run_files, "routes": run_routes}[args.what](args)
     print(json.dumps({"what": args.what, "lib": args.lib, "mode": args.mode, "n": args.n, **result,
                       "peak_rss_mb": peak_mb()}))

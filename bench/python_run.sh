@@ -57,6 +57,8 @@ for ((k = 0; k < procs; k++)); do
     py delaunay --lib "$lib" --n "$n_del" | record
     say "[halfspace] $lib $n_half planes tangent to a sphere, process $((k + 1))"
     py halfspace --lib "$lib" --n "$n_half" | record
+    say "[voronoi] $lib $n_del uniform 2D, process $((k + 1))"
+    py voronoi --lib "$lib" --n "$n_del" | record
   done
   for kind in "float64 C" "float32 Fortran"; do
     say "[conversions] $kind, process $((k + 1))"
@@ -120,12 +122,18 @@ out += ["## 1. scipy.spatial against hullkit.spatial", "",
         "| call | points | hullkit | scipy | hullkit ÷ scipy | target | same answer | runs hullkit | runs scipy |",
         "|---|---:|---:|---:|---:|---|---|---|---|"]
 for what, target, key, label in (("hull", 0.2, "vertex_set", "ConvexHull, on a sphere"), ("delaunay", 0.1, "triangle_set", "Delaunay, uniform 2D"),
-                                  ("halfspace", None, "vertex_set", "HalfspaceIntersection, planes tangent to a sphere (3D)")):
+                                  ("halfspace", None, "vertex_set", "HalfspaceIntersection, planes tangent to a sphere (3D)"),
+                                  ("voronoi", 0.05, "vertex_set", "Voronoi, uniform 2D (hullkit with cell areas; its lists on first use)")):
     h, s = pick(what=what, lib="hullkit"), pick(what=what, lib="scipy")
     ratio = med(h) / med(s)
     same = "yes" if h and s and len({r[key] for r in h + s}) == 1 else "no"
     goal = "no target" if target is None else f"<= {target}, {status(ratio <= target)}"
     out.append(f"| {label} | {h[0]['n'] if h else '-'} | {med(h):.3g} s | {med(s):.3g} s | {ratio:.3f} | {goal} | {same} | {runs(h)} | {runs(s)} |")
+vh, vs = pick(what="voronoi", lib="hullkit"), pick(what="voronoi", lib="scipy")
+if vh and vs:
+    whole = statistics.median(r["with_lists"] for r in vh)
+    out.append(f"| Voronoi, the same, with hullkit's regions and ridge_vertices lists made too | {vh[0]['n']} | {whole:.3g} s | {med(vs):.3g} s | "
+               f"{whole / med(vs):.3f} | no target | | {runs(vh, 'with_lists')} | |")
 conv = pick(what="conversions")
 out += ["", "## 2. Time outside the core", "",
         "The first `hullkit.hull(points)` of a process timed in its parts, 1e6 points on a sphere: converting the input (`as_points`: nothing to do for float64 C input, one converting copy for float32 Fortran), the C++ core, and wrapping its arrays (`Hull`: numpy arrays that take over the core's vectors). \"outside\" = (convert + wrap) / whole. Target: <= 5%.", "",

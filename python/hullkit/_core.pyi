@@ -62,6 +62,9 @@ def verify_triangles(points: NDArray[np.float64], triangles: NDArray[np.uint32],
 def surface_extras(
     points: NDArray[np.float64], triangles: NDArray[np.uint32], /
 ) -> tuple[NDArray[np.int32], NDArray[np.float64]]: ...
+def nested_lists(
+    flat: NDArray[np.int64], offsets: NDArray[np.int64], rows: NDArray[np.int64], leading_empty: bool, /
+) -> list[list[int]]: ...
 def facet_sides(
     points: NDArray[np.float64], facets: NDArray[np.uint32], query: NDArray[np.float64], /
 ) -> NDArray[np.int8]: ...
@@ -121,6 +124,15 @@ class Triangulation:
         self, values: NDArray[np.float64], tolerance: float, max_iterations: int, /
     ) -> tuple[NDArray[np.float64], int, bool]:
         """(gradients (n, k, 2), sweeps, converged)."""
+    def scipy_voronoi(self, infinity_region: bool, /) -> tuple[
+        NDArray[np.float64],
+        NDArray[np.int32],
+        NDArray[np.int64],
+        NDArray[np.int64],
+        NDArray[np.int64],
+        NDArray[np.intp],
+        NDArray[np.float64],
+    ]: ...
     def voronoi(
         self, xmin: float, ymin: float, xmax: float, ymax: float, /
     ) -> tuple[NDArray[np.uint32], NDArray[np.float64]]: ...

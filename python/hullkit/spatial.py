@@ -533,22 +533,6 @@ def tsearch(tri, xi):
 
 # -- Voronoi ---------------------------------------------------------------------------------------
 
-def _circumcentres(a, b, c):
-    """The circumcentres of the triangles a, b, c ((m, 2) each), from the differences to a (the
-    corner's coordinates added last, so that a cloud far from the origin loses nothing more),
-    each triangle's scaled by a power of two to about 1 (exactly: no overflow or underflow in the
-    squares of tiny or huge triangles)."""
-    ba, ca = b - a, c - a
-    _, exponent = _np.frexp(_np.maximum(_np.abs(ba).max(axis=1), _np.abs(ca).max(axis=1)))
-    ba, ca = _np.ldexp(ba, -exponent[:, None]), _np.ldexp(ca, -exponent[:, None])
-    lb, lc = _np.einsum("ij,ij->i", ba, ba), _np.einsum("ij,ij->i", ca, ca)
-    denominator = 2.0 * (ba[:, 0] * ca[:, 1] - ba[:, 1] * ca[:, 0])
-    with _np.errstate(all="ignore"):  # a centre beyond the doubles' range: inf
-        x = (ca[:, 1] * lb - ba[:, 1] * lc) / denominator
-        y = (ba[:, 0] * lc - ca[:, 0] * lb) / denominator
-        return a + _np.ldexp(_np.stack([x, y], axis=1), exponent[:, None])
-
-
 class _no_collection:
     """Python's cyclic garbage collector paused while millions of lists are made (it would walk
     them over and over: twice the time), and restored as it was."""
@@ -563,11 +547,13 @@ class _no_collection:
         return False
 
 
-def _grouped(flat, offsets, rows):
-    """Python lists flat[offsets[r]:offsets[r + 1]] for each r in rows (ints, as scipy's)."""
-    with _no_collection():
-        values, bounds = flat.tolist(), offsets.tolist()
-        return [values[bounds[r]: bounds[r + 1]] for r in rows]
+def _grouped(flat, offsets, rows=None, leading_empty=False):
+    """Python lists flat[offsets[r]:offsets[r + 1]] of ints for each r in ``rows`` (all when
+    None), after an empty one with ``leading_empty`` (made in the core: _core.nested_lists)."""
+    rows = _np.zeros(0, dtype=_np.int64) if rows is None else _np.ascontiguousarray(rows, dtype=_np.int64)
+    with _no_collection(), _translated():
+        return _core.nested_lists(_np.ascontiguousarray(flat, dtype=_np.int64),
+                                  _np.ascontiguousarray(offsets, dtype=_np.int64), rows, bool(leading_empty))
 
 
 def _offsets(sizes):
@@ -647,11 +633,11 @@ class Voronoi(_Incremental):
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self.furthest_site = False
-        self._ridge_dict = None
-        if self.ndim == 3:
-            representative, cells, offsets, volumes = self._from_3d(array)
-        else:
-            representative, cells, offsets, volumes = self._from_2d(array)
+        self._ridge_dict = self._ridge_vertices = self._regions = None
+        parts = self._from_3d(array) if self.ndim == 3 else self._from_2d(array)
+        if parts is None:  # the core made every array (2D)
+            return
+        representative, cells, offsets, volumes = parts
         # One region per distinct point (ascending), after scipy's empty one.
         representative = _np.asarray(representative, dtype=_np.intp)
         distinct = _np.flatnonzero(representative == _np.arange(self.npoints))
@@ -659,8 +645,26 @@ class Voronoi(_Incremental):
         first = 1 if self._infinity_region else 0
         region[distinct] = _np.arange(first, len(distinct) + first)
         self.point_region = region[representative]
-        self.regions = [[]] * first + _grouped(cells, offsets, distinct)
+        self._region_lists = (cells, offsets, distinct)
         self.volumes = volumes[representative]
+
+    # The lists are made on first use, from flat arrays (millions of small Python lists cost more
+    # time and memory than the diagram; a user who reads only the vertices, ridge_points,
+    # point_region or volumes never pays for them).
+    @property
+    def regions(self):
+        """scipy's regions: a list of vertex indices per region (made on first use)."""
+        if self._regions is None:
+            self._regions = _grouped(*self._region_lists, leading_empty=self._infinity_region)
+        return self._regions
+
+    @property
+    def ridge_vertices(self):
+        """scipy's ridge_vertices: a list of vertex indices per ridge, -1 at infinity (made on
+        first use)."""
+        if self._ridge_vertices is None:
+            self._ridge_vertices = _grouped(*self._ridge_lists)
+        return self._ridge_vertices
 
     @property
     def ridge_dict(self):
@@ -680,97 +684,32 @@ class Voronoi(_Incremental):
         """Points on a line (or one point): ridges between the points of ``chain`` consecutive in
         it (``ridge``: each one's vertex list), no vertices."""
         chain = _np.asarray(chain, dtype=_np.int64)
-        self._set_ridges(_np.stack([chain[:-1], chain[1:]], axis=1) if len(chain) > 1 else _np.zeros((0, 2)),
-                         [list(ridge) for _ in range(max(len(chain) - 1, 0))])
+        count = max(len(chain) - 1, 0)
+        self._set_ridges(_np.stack([chain[:-1], chain[1:]], axis=1) if count else _np.zeros((0, 2)),
+                         _np.tile(_np.asarray(ridge, dtype=_np.int64), count), _offsets(_np.full(count, len(ridge))))
         return self._without_vertices(representative)
 
-    def _set_ridges(self, pairs, vertices):
+    def _set_ridges(self, pairs, flat, offsets):
+        """ridge_points from the pairs (each sorted); ridge k's vertices flat[offsets[k]:offsets[k + 1]]."""
         self.ridge_points = _np.sort(_np.asarray(pairs, dtype=_np.int64).reshape(-1, 2), axis=1).astype(_np.int32)
-        self.ridge_vertices = vertices
+        self._ridge_lists = (flat, offsets)
 
     # -- 2D ------------------------------------------------------------------------------------
     def _from_2d(self, xy):
+        """The diagram from the Delaunay polygons (cocircular triangles merged), made in the core
+        (Triangulation.scipy_voronoi in python/src/core.cpp: one vertex per polygon, a ridge per
+        Delaunay edge, each point's cell counter-clockwise); None when done."""
         with _translated():
             core = _core.Triangulation(xy, "incremental", True, 0)
         self.dimension = core.dimension
         if core.dimension < 2:  # collinear: the points in order along the line (or one point)
             return self._along_line(core.representative, core.hull, (-1, -1))
-        n = len(xy)
-        offsets = core.polygon_offsets.astype(_np.int64)
-        corners = core.polygon_vertices.astype(_np.int64)
-        sizes = _np.diff(offsets)
-        polygon = _np.repeat(_np.arange(len(sizes)), sizes)  # each corner's (directed edge's) polygon
-        edge = _np.arange(len(corners))
-        following = edge + 1
-        following[offsets[1:] - 1] = offsets[:-1]
-        preceding = edge - 1
-        preceding[offsets[:-1]] = offsets[1:] - 1
-        # Directed edge e runs from corners[e] to corners[following[e]], its polygon on one side
-        # (the polygons are clockwise); its twin runs the other way in the polygon across, or is
-        # -1 on the hull. Twins are neighbours once the edges are sorted without their direction.
-        start, end = corners, corners[following]
-        order = _np.argsort(_np.minimum(start, end) * n + _np.maximum(start, end), kind="stable")
-        pair = _np.flatnonzero((start[order[1:]] == end[order[:-1]]) & (end[order[1:]] == start[order[:-1]]))
-        twin = _np.full(len(corners), -1, dtype=_np.int64)
-        twin[order[pair]], twin[order[pair + 1]] = order[pair + 1], order[pair]
-
-        # One vertex per Delaunay polygon: the circle through its corners 0, m/3, 2m/3.
-        first = offsets[:-1]
-        self.vertices = _circumcentres(xy[corners[first]], xy[corners[first + sizes // 3]],
-                                       xy[corners[first + 2 * sizes // 3]])
-        # A ridge per Delaunay edge (each once): between two polygons, or a ray from a hull edge's.
-        once = (twin < 0) | (edge < twin)
-        across = _np.where(twin < 0, -1, polygon[twin])
-        with _no_collection():
-            ridge_vertices = _np.stack([across[once], polygon[once]], axis=1).tolist()
-        self._set_ridges(_np.stack([start[once], end[once]], axis=1), ridge_vertices)
-
-        # Cells: the polygons around each point, counter-clockwise: from the polygon of out-edge e
-        # across e (to the twin's polygon, whose out-edge of the point follows the twin). A hull
-        # point's chain starts where the edge into it has no twin and ends at an out-edge without.
-        turn = _np.where(twin >= 0, following[twin], -1)
-        opens = twin[preceding] < 0
-        head = _np.zeros(n, dtype=_np.int64)
-        head[start] = edge  # any out-edge of a bounded cell's point (the cell is turned below)
-        unbounded = _np.zeros(n, dtype=bool)
-        unbounded[start[opens]] = True
-        head[start[opens]] = edge[opens]
-        # Steps to the chain's end (each bounded cell's cycle cut before its head), by pointer
-        # jumping: log2 of the largest degree rounds.
-        jump = _np.where(turn == head[start], -1, turn)
-        remaining = (jump >= 0).astype(_np.int64)
-        live = _np.flatnonzero(jump >= 0)
-        while len(live):
-            ahead = jump[live]
-            remaining[live] = remaining[live] + remaining[ahead]
-            jump[live] = jump[ahead]
-            live = live[jump[live] >= 0]
-        degree = _np.bincount(start, minlength=n)
-        rank = degree[start] - 1 - remaining  # the head's is 0
-        # A bounded cell turned to start at its lowest vertex (the same lists for the same points).
-        around = _offsets(degree)
-        ring = _np.empty(len(corners), dtype=_np.int64)
-        ring[around[start] + rank] = polygon
-        some = _np.flatnonzero(degree)
-        lowest = _np.full(n, -1, dtype=_np.int64)
-        lowest[some] = _np.minimum.reduceat(ring, around[some])
-        shift = _np.zeros(n, dtype=_np.int64)
-        shift[start[polygon == lowest[start]]] = rank[polygon == lowest[start]]
-        rank = _np.where(unbounded[start], rank, (rank - shift[start]) % degree[start])
-        cell_offsets = _offsets(degree + unbounded)
-        cells = _np.full(cell_offsets[-1], -1, dtype=_np.int64)
-        cells[cell_offsets[start] + rank] = polygon  # the -1 of an unbounded cell stays last
-
-        # Areas of the bounded cells: the fan from the point over each edge of the cell.
-        closed = _np.flatnonzero(~unbounded[start])
-        corner = self.vertices[polygon]
-        site = xy[start[closed]]
-        with _np.errstate(all="ignore"):  # areas beyond the doubles' range: inf
-            u, v = corner[closed] - site, corner[turn[closed]] - site
-            cross = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
-            volumes = 0.5 * _np.bincount(start[closed], weights=cross, minlength=n)
-        volumes[unbounded] = _np.inf
-        return core.representative, cells, cell_offsets, volumes
+        with _translated():
+            (self.vertices, self.ridge_points, ridge_vertices, cells, offsets, self.point_region,
+             self.volumes) = core.scipy_voronoi(self._infinity_region)
+        self._ridge_lists = (ridge_vertices.ravel(), _np.arange(0, 2 * len(ridge_vertices) + 1, 2, dtype=_np.int64))
+        self._region_lists = (cells, offsets, None)
+        return None
 
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, xyz):
@@ -797,7 +736,7 @@ class Voronoi(_Incremental):
         flat = _np.full(ridge_offsets[-1], -1, dtype=_np.int64)
         position = _np.arange(len(corners)) - offsets[face]
         flat[ridge_offsets[face] + unbounded[face] + position] = corners
-        self._set_ridges(face_points, _grouped(flat, ridge_offsets, range(len(sizes))))
+        self._set_ridges(face_points, flat, ridge_offsets)
         # Cells: each point's vertices over its faces (ascending), -1 (first) when one is unbounded.
         count = len(self.vertices) + 1
         pairs = _np.concatenate([face_points[face, 0] * count + corners + 1, face_points[face, 1] * count + corners + 1,
@@ -826,7 +765,7 @@ class Voronoi(_Incremental):
         v = pyramid.voronoi()
         real = v["face_points"][:, 1] < n  # not the apex's faces
         pairs = v["face_points"][real]
-        self._set_ridges(pairs, [[-1] for _ in range(len(pairs))])
+        self._set_ridges(pairs, _np.full(len(pairs), -1, dtype=_np.int64), _np.arange(len(pairs) + 1, dtype=_np.int64))
         return self._without_vertices(d.representative)
 
     def __repr__(self):
@@ -973,7 +912,7 @@ class HalfspaceIntersection:
             offsets = h["face_offsets"].astype(_np.int64) if bounded else _np.zeros(1, dtype=_np.int64)
             self.dual_equations = self._face_planes(flat, offsets)
             triangles = h["triangles"].reshape(-1, 3)
-        self.dual_facets = _grouped(flat, offsets, range(len(offsets) - 1))
+        self.dual_facets = _grouped(flat, offsets)
         if bounded:  # the origin (the interior point) strictly inside the dual hull: exactly
             with _translated():
                 sides = _core.facet_sides(_np.ascontiguousarray(self.dual_points),

@@ -74,8 +74,11 @@ class Voronoi(_Cloud, _Incremental):
     furthest_site: bool
     vertices: NDArray[np.float64]  # (nv, ndim)
     ridge_points: NDArray[np.int32]  # (nr, 2)
-    ridge_vertices: list[list[int]]  # -1: the vertex at infinity
-    regions: list[list[int]]
+    @property
+    def ridge_vertices(self) -> list[list[int]]:
+        """-1: the vertex at infinity (made on first use)."""
+    @property
+    def regions(self) -> list[list[int]]: ...
     point_region: NDArray[np.intp]  # (n,)
     volumes: NDArray[np.float64]  # (n,): area in 2D, volume in 3D; inf when unbounded
     def __init__(

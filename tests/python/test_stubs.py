@@ -140,7 +140,7 @@ def _stub_signature(function):
 def _same_type(pybind, stub):
     if pybind is None:  # a dict: the stub names a TypedDict or a dict
         return re.fullmatch(r"_\w+|dict\[.*\]( \| dict\[.*\])*", stub) is not None
-    return stub.startswith("tuple[") if pybind == "tuple" else pybind == stub
+    return stub.startswith(f"{pybind}[") if pybind in ("tuple", "list") else pybind == stub
 
 
 def _core_pairs():

@@ -487,22 +487,64 @@ std::vector<std::uint32_t> hull_cycle(const std::vector<std::uint32_t>& triangle
     return hull;
 }
 
-/// merge_cocircular: the faces turned clockwise, each from its lowest index, sorted like triangles.
-void fill_polygons(const Faces& faces, const std::vector<std::uint32_t>& original, Delaunay& out) {
-    std::vector<std::vector<std::uint32_t>> polygons(faces.size());
+/// merge_cocircular's polygons: `flat` holds faces of `corners(f)` corners each (from `begin`,
+/// 3 each when `begin` is empty), every face already clockwise from its lowest original index;
+/// written sorted as sequences (lexicographically, a prefix first) into out.polygon_*. A counting
+/// sort by the first corner, then each small bucket by the rest.
+void write_polygons(const std::vector<std::uint32_t>& flat, const std::vector<std::uint32_t>& begin,
+                    std::size_t point_count, Delaunay& out) {
+    const std::size_t count = begin.empty() ? flat.size() / 3 : begin.size() - 1;
+    auto first = [&](std::size_t f) { return begin.empty() ? 3 * f : begin[f]; };
+    auto last = [&](std::size_t f) { return begin.empty() ? 3 * f + 3 : begin[f + 1]; };
+    std::vector<std::uint32_t> start(point_count + 1, 0);
+    for (std::size_t f = 0; f < count; ++f) ++start[flat[first(f)] + 1];
+    for (std::size_t i = 0; i < point_count; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> order(count);
+    {
+        std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+        for (std::size_t f = 0; f < count; ++f) order[next[flat[first(f)]]++] = static_cast<std::uint32_t>(f);
+    }
+    auto before = [&](std::uint32_t u, std::uint32_t v) {
+        return std::lexicographical_compare(flat.begin() + first(u), flat.begin() + last(u), flat.begin() + first(v),
+                                            flat.begin() + last(v));
+    };
+    for (std::size_t i = 0; i < point_count; ++i) {
+        std::uint32_t* lo = order.data() + start[i];
+        std::uint32_t* hi = order.data() + start[i + 1];
+        if (hi - lo > 16) {  // the lowest corner of many faces (the centre of a fan)
+            std::sort(lo, hi, before);
+            continue;
+        }
+        for (std::uint32_t* q = lo + 1; q < hi; ++q) {  // insertion sort: a handful each
+            const std::uint32_t f = *q;
+            std::uint32_t* r = q;
+            for (; r > lo && before(f, r[-1]); --r) *r = r[-1];
+            *r = f;
+        }
+    }
+    out.polygon_offsets.assign(1, 0);
+    out.polygon_offsets.reserve(count + 1);
+    out.polygon_vertices.reserve(flat.size());
+    for (std::uint32_t f : order) {
+        out.polygon_vertices.insert(out.polygon_vertices.end(), flat.begin() + first(f), flat.begin() + last(f));
+        out.polygon_offsets.push_back(static_cast<std::uint32_t>(out.polygon_vertices.size()));
+    }
+}
+
+/// merge_cocircular: the faces turned clockwise, each from its lowest index, sorted as sequences.
+void fill_polygons(const Faces& faces, const std::vector<std::uint32_t>& original, std::size_t point_count,
+                   Delaunay& out) {
+    std::vector<std::uint32_t> flat(faces.vertices.size());
+    std::vector<std::uint32_t> begin(faces.size() + 1, 0);
     for (std::size_t f = 0; f < faces.size(); ++f) {
         const std::uint32_t* c = &faces.vertices[faces.begin(f)];
         const std::size_t m = faces.corners(f);
-        auto& polygon = polygons[f];
-        for (std::size_t k = 0; k < m; ++k) polygon.push_back(original[c[m - 1 - k]]);
-        std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+        std::uint32_t* polygon = flat.data() + begin[f];
+        for (std::size_t k = 0; k < m; ++k) polygon[k] = original[c[m - 1 - k]];
+        std::rotate(polygon, std::min_element(polygon, polygon + m), polygon + m);
+        begin[f + 1] = static_cast<std::uint32_t>(begin[f] + m);
     }
-    std::sort(polygons.begin(), polygons.end());
-    out.polygon_offsets.assign(1, 0);
-    for (const auto& polygon : polygons) {
-        out.polygon_vertices.insert(out.polygon_vertices.end(), polygon.begin(), polygon.end());
-        out.polygon_offsets.push_back(static_cast<std::uint32_t>(out.polygon_vertices.size()));
-    }
+    write_polygons(flat, begin, point_count, out);
 }
 
 }  // namespace
@@ -650,9 +692,11 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
     } else {
         delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in, options.progress);
         const bool parallel = options.threads != 1 && m >= 50000;
-        if (!options.merge_cocircular && write_canonical_mesh(p, mesh, in.original, parallel, out)) {
+        if (write_canonical_mesh(p, mesh, in.original, parallel, out)) {
+            // General position: every face is a triangle, already clockwise from its lowest index.
             mesh = delaunay_detail::Mesh();
             out.hull = hull_cycle(out.triangles, out.halfedges, input.count);
+            if (options.merge_cocircular) write_polygons(out.triangles, {}, input.count, out);
             return out;
         }
         faces = delaunay_detail::mesh_faces(p, std::move(mesh));
@@ -664,7 +708,7 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
         write_canonical(local, twins, in.original, out);
     }
     out.hull = hull_cycle(out.triangles, out.halfedges, input.count);
-    if (options.merge_cocircular) fill_polygons(faces, in.original, out);
+    if (options.merge_cocircular) fill_polygons(faces, in.original, input.count, out);
     return out;
 }
 
