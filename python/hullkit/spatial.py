@@ -66,7 +66,8 @@ import numpy as _np
 
 from . import HullkitError, _core, _translated, as_points, delaunay, delaunay3, hull
 
-__all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch"]
+__all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch",
+           "delaunay_plot_2d", "convex_hull_plot_2d", "voronoi_plot_2d"]
 
 #: scipy.spatial's QhullError is hullkit's HullkitError here: ``except QhullError`` keeps working.
 QhullError = HullkitError
@@ -993,3 +994,96 @@ def chebyshev_center(halfspaces):
     if not radius > 0:
         raise HullkitError("the intersection of the halfspaces has no interior (its largest ball has radius 0)")
     return result.x[:k].copy(), radius
+
+
+# -- Plots (matplotlib, as scipy.spatial's) ------------------------------------------------------
+
+def _plot_axes(ax, thing, what):
+    """The axes to draw on (a new figure's when None), after checking ``thing`` is 2D."""
+    points = getattr(thing, "points", None)
+    if points is None or _np.ndim(points) != 2 or _np.shape(points)[1] != 2:
+        raise HullkitError(f"{what} draws 2D diagrams; got {type(thing).__name__}"
+                           + (f" of points with shape {_np.shape(points)}" if points is not None else ""))
+    if ax is None:
+        import matplotlib.pyplot as plt
+        ax = plt.figure().gca()
+    return ax
+
+
+def _fit_view(ax, points):
+    """The view around the points with a tenth of their extent to spare on each side."""
+    if len(points):
+        spare = 0.1 * _np.ptp(points, axis=0)
+        low, high = points.min(axis=0) - spare, points.max(axis=0) + spare
+        if high[0] > low[0]:
+            ax.set_xlim(low[0], high[0])
+        if high[1] > low[1]:
+            ax.set_ylim(low[1], high[1])
+
+
+def delaunay_plot_2d(tri, ax=None):
+    """Draws a 2D Delaunay triangulation (its points and triangles) on ``ax`` (a new figure's
+    axes when None), as scipy.spatial.delaunay_plot_2d; returns the figure. Needs matplotlib."""
+    ax = _plot_axes(ax, tri, "delaunay_plot_2d")
+    x, y = tri.points[:, 0], tri.points[:, 1]
+    ax.plot(x, y, "o")
+    if len(tri.simplices):
+        ax.triplot(x, y, _np.array(tri.simplices))
+    _fit_view(ax, tri.points)
+    return ax.figure
+
+
+def convex_hull_plot_2d(hull, ax=None):
+    """Draws a 2D convex hull (the points and the hull's edges) on ``ax``, as
+    scipy.spatial.convex_hull_plot_2d; returns the figure. Needs matplotlib."""
+    from matplotlib.collections import LineCollection
+
+    ax = _plot_axes(ax, hull, "convex_hull_plot_2d")
+    ax.plot(hull.points[:, 0], hull.points[:, 1], "o")
+    ax.add_collection(LineCollection(hull.points[hull.simplices], colors="k", linestyle="solid"))
+    _fit_view(ax, hull.points)
+    return ax.figure
+
+
+def voronoi_plot_2d(vor, ax=None, **kw):
+    """Draws a 2D Voronoi diagram on ``ax``, as scipy.spatial.voronoi_plot_2d, with its keywords:
+    show_points, show_vertices (True), line_colors ("k"), line_width (1.0), line_alpha (1.0),
+    point_size (None). Finite ridges are solid; a ray (a ridge to infinity) is dashed, from its
+    vertex away from the points across the hull edge it bisects, as long as the points' extent; a
+    line between two collinear points (no vertex) is drawn whole, dashed. Returns the figure.
+    Needs matplotlib."""
+    from matplotlib.collections import LineCollection
+
+    known = {"show_points", "show_vertices", "line_colors", "line_width", "line_alpha", "point_size"}
+    unknown = sorted(set(kw) - known)
+    if unknown:
+        raise HullkitError(f"voronoi_plot_2d: unknown keywords {unknown}; it takes {sorted(known)}")
+    ax = _plot_axes(ax, vor, "voronoi_plot_2d")
+    points, vertices = vor.points, vor.vertices
+    if kw.get("show_points", True):
+        ax.plot(points[:, 0], points[:, 1], ".", markersize=kw.get("point_size"))
+    if kw.get("show_vertices", True) and len(vertices):
+        ax.plot(vertices[:, 0], vertices[:, 1], "o")
+    centre = points.mean(axis=0)
+    reach = float(_np.ptp(points, axis=0).max()) if len(points) else 1.0
+    finite, rays = [], []
+    for (p, q), ridge in zip(vor.ridge_points.tolist(), vor.ridge_vertices):
+        ends = [v for v in ridge if v >= 0]
+        if len(ends) == len(ridge):
+            finite.append(vertices[ridge])
+            continue
+        # Perpendicular to p-q, away from the points: the centroid lies strictly inside their hull,
+        # so strictly on the inner side of the hull edge p-q that the ray crosses.
+        tangent = points[q] - points[p]
+        normal = _np.array([-tangent[1], tangent[0]]) / _np.hypot(tangent[0], tangent[1])
+        middle = (points[p] + points[q]) / 2
+        if not ends:  # collinear points: the whole bisector line
+            rays.append([middle - normal * reach, middle + normal * reach])
+            continue
+        direction = -normal if float((centre - middle) @ normal) > 0 else normal
+        rays.append([vertices[ends[0]], vertices[ends[0]] + direction * reach])
+    style = {"colors": kw.get("line_colors", "k"), "lw": kw.get("line_width", 1.0), "alpha": kw.get("line_alpha", 1.0)}
+    ax.add_collection(LineCollection(finite, linestyle="solid", **style))
+    ax.add_collection(LineCollection(rays, linestyle="dashed", **style))
+    _fit_view(ax, points)
+    return ax.figure

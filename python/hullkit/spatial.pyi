@@ -1,12 +1,25 @@
 """Type stubs of hullkit.spatial (scipy.spatial's ConvexHull, Delaunay, Voronoi and tsearch); see
 spatial.py."""
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import HullkitError
 
-__all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch"]
+__all__ = [
+    "ConvexHull",
+    "Delaunay",
+    "Voronoi",
+    "HalfspaceIntersection",
+    "QhullError",
+    "chebyshev_center",
+    "tsearch",
+    "delaunay_plot_2d",
+    "convex_hull_plot_2d",
+    "voronoi_plot_2d",
+]
 
 QhullError = HullkitError
 
@@ -115,3 +128,8 @@ class HalfspaceIntersection:
 
 def chebyshev_center(halfspaces: ArrayLike) -> tuple[NDArray[np.float64], float]:
     """(centre, radius) of the largest ball inside the halfspaces."""
+
+# matplotlib's Axes and Figure (Debian's matplotlib 3.6 has no type information: Any here).
+def delaunay_plot_2d(tri: Delaunay, ax: Any = ...) -> Any: ...
+def convex_hull_plot_2d(hull: ConvexHull, ax: Any = ...) -> Any: ...
+def voronoi_plot_2d(vor: Voronoi, ax: Any = ..., **kw: Any) -> Any: ...

@@ -271,3 +271,58 @@ def test_halfspace_incremental_and_chebyshev_center():
         chebyshev_center([[1, 0, -1], [0, 1, -1]])
     with pytest.raises(HullkitError, match="no interior"):
         chebyshev_center([[1, 0, 0], [-1, 0, 0], [0, 1, -1], [0, -1, -1]])  # x = 0 exactly
+
+
+# -- plots ---------------------------------------------------------------------------------------
+
+def segments_of(ax, style):
+    """The line segments of the axes' LineCollections drawn in ``style`` ("solid" or "dashed")."""
+    from matplotlib.collections import LineCollection
+    out = []
+    for collection in ax.collections:
+        if isinstance(collection, LineCollection) and collection.get_segments():
+            dashed = collection.get_linestyle()[0][1] is not None
+            if dashed == (style == "dashed"):
+                out += [np.asarray(s) for s in collection.get_segments()]
+    return out
+
+
+def test_plots_draw_the_diagrams():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from hullkit.spatial import convex_hull_plot_2d, delaunay_plot_2d, voronoi_plot_2d
+
+    rng = np.random.default_rng(70)
+    points = rng.random((40, 2))
+    vor = Voronoi(points)
+    figure = voronoi_plot_2d(vor, line_colors="orange", line_width=2, point_size=3)
+    ax = figure.axes[0]
+    solid, dashed = segments_of(ax, "solid"), segments_of(ax, "dashed")
+    finite = [r for r in vor.ridge_vertices if -1 not in r]
+    assert len(solid) == len(finite) and len(dashed) == len(vor.ridge_vertices) - len(finite)
+    for segment, ridge in zip(solid, finite):
+        assert np.array_equal(segment, vor.vertices[ridge])
+    hull = ConvexHull(points)
+    outside = lambda x: (hull.equations[:, :2] @ x + hull.equations[:, 2]).max()
+    for segment in dashed:  # each ray leaves the hull: its far end is outside, beyond its start
+        assert outside(segment[1]) > max(outside(segment[0]), 0)
+    plt.close(figure)
+
+    figure = delaunay_plot_2d(Delaunay(points))
+    assert len(figure.axes[0].lines) >= 2  # the points and the triangles' edges
+    plt.close(figure)
+    figure, ax = plt.subplots()
+    assert convex_hull_plot_2d(hull, ax=ax) is figure
+    assert sorted(map(lambda s: tuple(sorted(map(tuple, s.tolist()))), segments_of(ax, "solid"))) == sorted(
+        tuple(sorted(map(tuple, points[s].tolist()))) for s in hull.simplices)
+    plt.close(figure)
+    # Collinear points: each bisector line drawn whole.
+    line = Voronoi(np.c_[np.arange(4.0), np.zeros(4)])
+    figure = voronoi_plot_2d(line)
+    assert len(segments_of(figure.axes[0], "dashed")) == 3
+    plt.close(figure)
+    with pytest.raises(HullkitError, match="draws 2D diagrams"):
+        voronoi_plot_2d(Voronoi(rng.random((20, 3))))
+    with pytest.raises(HullkitError, match="unknown keywords"):
+        voronoi_plot_2d(vor, colour="red")
