@@ -387,7 +387,8 @@ class CloughTocher2DInterpolator(_Base):
 def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=False, *, threads=0):
     """Interpolates scattered data at ``xi``, as scipy.interpolate.griddata, in 2D and 3D:
     ``method`` "linear" (LinearNDInterpolator), "nearest" (NearestNDInterpolator; ``fill_value``
-    is not used, as in scipy) or, in 2D, "cubic" (CloughTocher2DInterpolator).
+    is not used, as in scipy) or, in 2D, "cubic" (CloughTocher2DInterpolator). On 1-D points,
+    as scipy's interp1d: linear, nearest, or the not-a-knot cubic spline.
 
     Examples
     --------
@@ -399,8 +400,7 @@ def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=Fa
     [[0.0, 1.0, 2.0], [1.0, 2.0, 3.0], [2.0, 3.0, 4.0]]
     """
     if _np.ndim(points) == 1 or (isinstance(points, tuple) and len(points) == 1) or _np.shape(points)[-1:] == (1,):
-        raise HullkitError("griddata in 1 dimension is not supported by hullkit (no triangulation to make): "
-                           "use numpy.interp or scipy.interpolate.interp1d")
+        return _griddata_1d(points, values, xi, method, fill_value)
     if method == "linear":
         return LinearNDInterpolator(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(xi)
     if method == "nearest":
@@ -408,3 +408,119 @@ def griddata(points, values, xi, method="linear", fill_value=_np.nan, rescale=Fa
     if method == "cubic":
         return CloughTocher2DInterpolator(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(xi)
     raise HullkitError(f"unknown interpolation method {method!r}: 'linear', 'nearest' or 'cubic'")
+
+
+def _griddata_1d(points, values, xi, method, fill_value):
+    """griddata on 1-D points, as scipy's (which hands them to interp1d): "linear" (fill_value
+    outside), "nearest" (the nearest point's value everywhere; ties: the lower point) and "cubic"
+    (the not-a-knot cubic spline through the points, fill_value outside). A query exactly at a
+    point gets its value exactly; of equal points the first is kept."""
+    if isinstance(points, tuple):
+        points = points[0]
+    try:
+        x = _np.asarray(points, dtype=_np.float64).reshape(-1)
+    except (TypeError, ValueError) as error:
+        raise HullkitError(f"points must be numbers convertible to float64: {error}") from None
+    if not _np.isfinite(x).all():
+        bad = int(_np.flatnonzero(~_np.isfinite(x))[0])
+        raise HullkitError(f"point {bad} is not finite ({x[bad]})", bad)
+    y, trailing = _values(values, len(x), keep_dtype=method == "nearest")
+    if isinstance(xi, tuple):
+        if len(xi) != 1:
+            raise HullkitError(f"expected 1 coordinate array for 1-D points, got {len(xi)}")
+        xi = xi[0]
+    try:
+        q = _np.asarray(xi, dtype=_np.float64)
+    except (TypeError, ValueError) as error:
+        raise HullkitError(f"query points must be numbers convertible to float64: {error}") from None
+    shape = q.shape[:-1] if q.ndim > 1 and q.shape[-1] == 1 else q.shape
+    q = q.reshape(-1)
+    order = _np.argsort(x, kind="stable")
+    xs, keep = _np.unique(x[order], return_index=True)  # the first of equal points (stable sort)
+    ys = y[order][keep]
+    if method not in ("linear", "nearest", "cubic"):
+        raise HullkitError(f"unknown interpolation method {method!r}: 'linear', 'nearest' or 'cubic'")
+    if len(xs) == 0:
+        raise HullkitError("griddata needs at least one point")
+    if method == "nearest":
+        out = ys[_nearest_1d(xs, q)]
+    else:
+        if len(xs) < (4 if method == "cubic" else 2):
+            raise HullkitError(f"griddata(method={method!r}) on 1-D points needs at least {4 if method == 'cubic' else 2} "
+                               f"distinct points, got {len(xs)}")
+        i = _np.clip(_np.searchsorted(xs, q, side="right") - 1, 0, len(xs) - 2)
+        with _np.errstate(all="ignore"):
+            t = ((q - xs[i]) / (xs[i + 1] - xs[i]))[:, None]
+            if method == "linear":
+                out = (1 - t) * ys[i] + t * ys[i + 1]  # exactly ys[i] at t = 0, ys[i + 1] at t = 1
+            else:
+                out = _cubic_1d(xs, ys, q, i)
+        outside = ~((q >= xs[0]) & (q <= xs[-1]))
+        out = out.astype(_np.result_type(out.dtype, _np.asarray(fill_value).dtype))
+        out[outside] = fill_value
+        at = _np.searchsorted(xs, q)  # a query at a point: its value, exactly
+        hit = (at < len(xs)) & (xs[_np.minimum(at, len(xs) - 1)] == q)
+        out[hit] = ys[at[hit]]
+    return out.reshape(shape + trailing)
+
+
+def _nearest_1d(xs, q):
+    """The index of the nearest of the sorted distinct ``xs`` to each query; the lower on a tie.
+    Distances compared in floating point where they differ clearly, exactly (rationals) where not."""
+    from fractions import Fraction
+
+    above = _np.clip(_np.searchsorted(xs, q), 1, max(len(xs) - 1, 1))
+    below = above - 1
+    if len(xs) == 1:
+        return _np.zeros(len(q), dtype=_np.int64)
+    low, high = xs[below], xs[above]
+    with _np.errstate(all="ignore"):
+        to_low, to_high = _np.abs(q - low), _np.abs(high - q)
+        unsure = ~(_np.abs(to_low - to_high) > 4 * _np.finfo(float).eps * _np.maximum.reduce([_np.abs(q), _np.abs(low), _np.abs(high)]))
+    pick = _np.where(to_high < to_low, above, below)
+    for k in _np.flatnonzero(unsure).tolist():
+        a, b, c = Fraction(float(low[k])), Fraction(float(high[k])), Fraction(float(q[k]))
+        pick[k] = above[k] if abs(b - c) < abs(c - a) else below[k]
+    return pick
+
+
+def _cubic_1d(xs, ys, q, i):
+    """The not-a-knot cubic spline through (xs, ys) (scipy's interp1d(kind="cubic")) at q, which lies
+    in [xs[i], xs[i + 1]] (or beyond the ends: filled by the caller). Second derivatives M from
+    the spline's equations, the not-a-knot rows folded into the first and last, a tridiagonal
+    solve (one pass down, one up)."""
+    n = len(xs)
+    h = _np.diff(xs)
+    slope = (ys[1:] - ys[:-1]) / h[:, None]
+    rhs = 6 * (slope[1:] - slope[:-1])  # rows 1 .. n-2
+    m = n - 2
+    lower = h[:-1].copy()            # coefficient of M[i-1] in row i
+    diagonal = 2 * (h[:-1] + h[1:])  # of M[i]
+    upper = h[1:].copy()             # of M[i+1]
+    # Not-a-knot: M0 = ((h0 + h1) M1 - h0 M2) / h1, and the same at the far end.
+    h0, h1 = h[0], h[1]
+    diagonal[0] += h0 * (h0 + h1) / h1
+    upper[0] -= h0 * h0 / h1
+    g0, g1 = h[-1], h[-2]
+    diagonal[-1] += g0 * (g0 + g1) / g1
+    lower[-1] -= g0 * g0 / g1
+    c, d = _np.empty(m), _np.empty_like(rhs)
+    c[0] = upper[0] / diagonal[0]
+    d[0] = rhs[0] / diagonal[0]
+    for k in range(1, m):
+        w = diagonal[k] - lower[k] * c[k - 1]
+        c[k] = upper[k] / w if k < m - 1 else 0.0
+        d[k] = (rhs[k] - lower[k] * d[k - 1]) / w
+    inner = _np.empty_like(rhs)
+    inner[-1] = d[-1]
+    for k in range(m - 2, -1, -1):
+        inner[k] = d[k] - c[k] * inner[k + 1]
+    moments = _np.empty_like(ys, dtype=inner.dtype)
+    moments[1:-1] = inner
+    moments[0] = ((h0 + h1) * inner[0] - h0 * inner[1]) / h1
+    moments[-1] = ((g0 + g1) * inner[-1] - g0 * inner[-2]) / g1
+    a, b = xs[i + 1] - q, q - xs[i]
+    w = h[i]
+    a, b, w = a[:, None], b[:, None], w[:, None]
+    return (moments[i] * a ** 3 + moments[i + 1] * b ** 3) / (6 * w) + (ys[i] / w - moments[i] * w / 6) * a \
+        + (ys[i + 1] / w - moments[i + 1] * w / 6) * b

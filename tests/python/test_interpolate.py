@@ -198,10 +198,39 @@ def test_griddata_matches_scipy():
         np.testing.assert_array_equal(np.isnan(ours), np.isnan(theirs))
         ok = ~np.isnan(ours)
         np.testing.assert_allclose(ours[ok], theirs[ok], rtol=1e-12, atol=1e-12)
-    with pytest.raises(HullkitError, match="1 dimension"):
-        griddata(points[:, 0], values, gx.ravel(), method="cubic")
     with pytest.raises(HullkitError, match="unknown interpolation method"):
         griddata(points, values, (gx, gy), method="spline")
+
+
+@pytest.mark.parametrize("n", [5, 9, 300])
+def test_griddata_on_1d_points_is_scipys_interp1d(n):
+    rng = np.random.default_rng(n)
+    x = rng.random(n) * 10
+    x[1] = x[0]  # a repeated point: the first is kept
+    y = np.stack([np.sin(x), x ** 2 + 1j * x], axis=1)  # complex, two columns
+    queries = np.concatenate([rng.random(2000) * 12 - 1, x])
+    keep = np.delete(np.arange(n), 1)
+    for method in ("linear", "nearest", "cubic"):
+        ours = griddata(x, y, queries, method=method)
+        theirs = scipy.interpolate.griddata(x[keep], y[keep], queries, method=method)
+        assert ours.shape == theirs.shape == (len(queries), 2)
+        np.testing.assert_array_equal(np.isnan(ours), np.isnan(theirs))
+        ok = ~np.isnan(ours)
+        np.testing.assert_allclose(ours[ok], theirs[ok], rtol=1e-9, atol=1e-12)
+        # At the points: their values exactly (the first of the repeated pair's).
+        at = griddata(x, y, x[keep], method=method)
+        assert np.array_equal(at, y[keep]), method
+    # The forms scipy takes: (n, 1) points, one-tuple coordinates, fill_value.
+    np.testing.assert_array_equal(griddata(x.reshape(-1, 1), y[:, 0], (queries,)), griddata(x, y[:, 0], queries))
+    assert griddata(x, y[:, 0], [x.max() + 1], fill_value=-5.0)[0] == -5.0
+    # Nearest: decided exactly, ties to the lower point. The doubles nearest 0.1, 0.2 and 0.3 put 0.2
+    # nearer 0.3 (by 3e-17), where the rounded midpoint (scipy's interp1d) calls it a tie.
+    assert griddata(np.array([0.1, 0.3]), np.array([1, 2]), [0.2], method="nearest").tolist() == [2]
+    assert griddata(np.array([1.0, 3.0]), np.array([1, 2]), [2.0, np.nextafter(2.0, 3)], method="nearest").tolist() == [1, 2]
+    with pytest.raises(HullkitError, match="needs at least 4 distinct points"):
+        griddata(np.arange(3.0), np.arange(3.0), [0.5], method="cubic")
+    with pytest.raises(HullkitError, match="point 2 is not finite"):
+        griddata(np.array([0, 1, np.nan, 3]), np.arange(4.0), [0.5])
 
 
 def test_flat_input_is_exact_at_the_points_and_fill_elsewhere():
@@ -307,10 +336,6 @@ EXPECTED_FAILURES = {
     # Four cocircular corners of a square: the test assumes Qhull's diagonal, hullkit's exact
     # tie-break takes the other one (both are Delaunay).
     "test_interpnd.py::TestLinearNDInterpolation::test_square",
-    # griddata on 1-D points (scipy hands them to interp1d): not a triangulation; a clear error.
-    "test_ndgriddata.py::TestGriddata::test_1d",
-    "test_ndgriddata.py::TestGriddata::test_1d_borders",
-    "test_ndgriddata.py::TestGriddata::test_1d_unsorted",
 }
 
 
