@@ -103,6 +103,9 @@ class Voronoi(_Cloud, _Incremental):
     ) -> None: ...
     @property
     def ridge_dict(self) -> dict[tuple[int, int], list[int]]: ...
+    def clipped_cells(self, lower: ArrayLike | None = ..., upper: ArrayLike | None = ...) -> list[NDArray[np.float64]]:
+        """2D: each point's cell clipped to the box, (k, 2) counter-clockwise."""
+    def clipped_volumes(self, lower: ArrayLike | None = ..., upper: ArrayLike | None = ...) -> NDArray[np.float64]: ...
 
 class HalfspaceIntersection:
     halfspaces: NDArray[np.float64]  # (nineq, ndim + 1): [A; b] for A x + b <= 0

@@ -343,3 +343,31 @@ def test_tsearch_is_find_simplex():
         assert np.array_equal(tsearch(tri, queries), tri.find_simplex(queries))
     with pytest.raises(HullkitError, match="needs a Delaunay triangulation"):
         tsearch(np.zeros((3, 2)), [[0, 0]])
+
+
+def test_clipped_cells_tile_the_box():
+    rng = np.random.default_rng(80)
+    points = np.vstack([rng.random((300, 2)), [[0.5, 0.5]]])  # the last repeats no point: the box's centre
+    points = np.vstack([points, points[:3]])  # and three repeats of the first points
+    vor = Voronoi(points)
+    cells = vor.clipped_cells([0, 0], [1, 1])
+    areas = vor.clipped_volumes([0, 0], [1, 1])
+    assert len(cells) == len(points) and areas.shape == (len(points),)
+    distinct = np.arange(len(points)) < 301
+    assert areas[distinct].sum() == pytest.approx(1.0, rel=1e-12)  # the cells tile the box
+    assert np.array_equal(areas[301:], areas[:3])  # repeats: their first's cell
+    # A bounded cell inside the box is the cell itself.
+    inside = [i for i in range(301) if np.isfinite(vor.volumes[i])
+              and all((vor.vertices[v] > 0).all() and (vor.vertices[v] < 1).all() for v in vor.regions[vor.point_region[i]])]
+    assert len(inside) > 100
+    for i in inside:
+        assert areas[i] == pytest.approx(vor.volumes[i], rel=1e-9)
+    for i, corners in enumerate(cells[:301]):  # each corner is nearest its own point (or tied)
+        d = np.linalg.norm(points[None, :301] - corners[:, None], axis=2)
+        assert (d[:, i] <= d.min(axis=1) + 1e-12).all()
+    # The default box is the points' bounding box; 3D and a bad box are refused.
+    assert vor.clipped_volumes()[distinct].sum() == pytest.approx(np.prod(np.ptp(points, axis=0)), rel=1e-12)
+    with pytest.raises(HullkitError, match="lower < upper"):
+        vor.clipped_cells([0, 0], [1, 0])
+    with pytest.raises(HullkitError, match="clipped_cells in 3D is not supported"):
+        Voronoi(rng.random((30, 3))).clipped_cells()
