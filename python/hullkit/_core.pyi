@@ -65,6 +65,9 @@ def surface_extras(
 def nested_lists(
     flat: NDArray[np.int64], offsets: NDArray[np.int64], rows: NDArray[np.int64], leading_empty: bool, /
 ) -> list[list[int]]: ...
+def furthest_delaunay(
+    points: NDArray[np.float64], hull: NDArray[np.uint32], /
+) -> tuple[NDArray[np.int32], NDArray[np.int32], NDArray[np.int32], NDArray[np.float64], NDArray[np.int32]]: ...
 def facet_sides(
     points: NDArray[np.float64], facets: NDArray[np.uint32], query: NDArray[np.float64], /
 ) -> NDArray[np.int8]: ...

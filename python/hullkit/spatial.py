@@ -54,7 +54,10 @@ again from everything added so far: the result is exactly that of one call with 
 Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact; Qc is accepted
 by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
 ``coplanar``), Fv by Voronoi, QGn and QG-n by ConvexHull (``good``). Any other option raises
-HullkitError naming it; so do ``furthest_site=True`` and more than 3 dimensions.
+HullkitError naming it; so do ``furthest_site=True`` in 3D and more than 3 dimensions.
+``furthest_site=True`` in 2D (Delaunay, Voronoi): the furthest-site triangulation of the hull's
+corners (every circumcircle holds every point) and its diagram, exactly (Lawson's flips with the
+exact in-circle test).
 
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
 point; ``QhullError`` is the same class, so scipy code that catches it keeps working).
@@ -172,11 +175,6 @@ class _Incremental:
     def close(self):
         """Ends the incremental mode: add_points raises from now on."""
         self._closed = True
-
-
-def _not_furthest_site(furthest_site, cls):
-    if furthest_site:
-        _not_supported("furthest_site=True", cls)
 
 
 class ConvexHull(_Incremental):
@@ -298,6 +296,10 @@ class Delaunay(_Incremental):
     coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and dimension. Methods:
     find_simplex, lift_points, plane_distance, add_points and close (``incremental=True``).
 
+    ``furthest_site=True`` (2D): the triangulation of the hull's corners whose circumcircles hold
+    every point (the upper hull of the lifted points), exact; ``equations`` then point up, and
+    points inside the hull are in no simplex (``coplanar`` is empty, as scipy's).
+
     ``equations`` are the planes of the simplices lifted onto the paraboloid
     z = paraboloid_scale * |x|^2 + paraboloid_shift (scale 1, shift 0: hullkit does not rescale),
     unit normals pointing down, as scipy's; they are computed on first use (the triangulation
@@ -322,8 +324,8 @@ class Delaunay(_Incremental):
     paraboloid_shift = 0.0
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
-        _not_furthest_site(furthest_site, "Delaunay")
         _parsed_options(qhull_options, "Delaunay")
+        self._furthest = bool(furthest_site)
         self._start(incremental)
         self._build(_checked_points(points, "Delaunay"))
 
@@ -333,12 +335,16 @@ class Delaunay(_Incremental):
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self._equations = None
         if self.ndim == 3:
+            if self._furthest:
+                _not_supported("furthest_site=True in 3D", "Delaunay")
             self._from_3d(array)
         else:
             self._from_2d(array)
+            if self._furthest and self.dimension == 2:
+                self._furthest_2d(array)
         self.nsimplex = len(self.simplices)
         self.coplanar = _np.zeros((0, 3), dtype=_np.int32)
-        if self._duplicate_count:
+        if self._duplicate_count and not self._furthest:
             representative = _np.asarray(self._representative, dtype=_np.int64)
             repeats = _np.flatnonzero(representative != _np.arange(self.npoints))
             simplex_of = self._corner_simplex()
@@ -382,7 +388,7 @@ class Delaunay(_Incremental):
             normal = _np.stack([(-1) ** j * _np.linalg.det(_np.delete(rows, j, axis=2)) for j in range(k + 1)], axis=1)
             with _np.errstate(all="ignore"):  # a flat simplex (none here) would give NaN, not a warning
                 normal /= _np.linalg.norm(normal, axis=1)[:, None]
-            normal *= -_np.sign(normal[:, -1:])
+            normal *= _np.sign(normal[:, -1:]) * (1 if self._furthest else -1)  # up for the upper hull
             lifted_first = self.lift_points(first)
             offset = -_np.einsum("mi,mi->m", normal, lifted_first)
             self._equations = _np.concatenate([normal, offset[:, None]], axis=1) if len(corners) else _np.zeros((0, k + 2))
@@ -411,6 +417,16 @@ class Delaunay(_Incremental):
             self.convex_hull = _np.stack([hull_cycle[:-1], hull_cycle[1:]], axis=1)
         else:
             self.convex_hull = _np.zeros((0, 2), dtype=_np.int32)
+        self._chain = self.convex_hull
+
+    def _furthest_2d(self, xy):
+        """furthest_site=True (2D): the triangulation of the hull's corners whose circumcircles hold
+        every point (exactly: _core.furthest_delaunay, Lawson's flips with the exact in-circle
+        test); its hull the corners' cycle. Points inside the hull are in no simplex."""
+        with _translated():
+            self.simplices, self.neighbors, self._groups, self._centres, corners = _core.furthest_delaunay(
+                xy, _np.ascontiguousarray(self._triangulation.hull, dtype=_np.uint32))
+        self.convex_hull = _np.stack([corners, _np.roll(corners, -1)], axis=1).astype(_np.int32)
         self._chain = self.convex_hull
 
     # -- 3D ------------------------------------------------------------------------------------
@@ -443,10 +459,27 @@ class Delaunay(_Incremental):
         if array.shape[-1:] != (dims,):
             raise HullkitError(f"xi must have shape (..., {dims}), got {array.shape}")
         flat = as_points(array.reshape(-1, dims), dims, "xi")
+        if self._furthest:
+            return self._furthest_find(flat).reshape(array.shape[:-1])
         if dims == 3:
             found = self._tetrahedralization.locate(flat)["tetrahedron"]
             return found.reshape(array.shape[:-1])
         return self._triangulation.locate(flat)["triangle"].reshape(array.shape[:-1])
+
+    def _furthest_find(self, flat):
+        """find_simplex in the furthest-site triangulation: each query against every triangle's
+        edges (exactly, _core.facet_sides); the lowest-indexed triangle holding it, -1 outside."""
+        found = _np.full(len(flat), -1, dtype=_np.int32)
+        if not self.nsimplex:
+            return found
+        edges = _np.ascontiguousarray(self.simplices[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), dtype=_np.uint32)
+        for i, query in enumerate(flat):
+            with _translated():
+                inside = (_core.facet_sides(self.points, edges, query).reshape(-1, 3) <= 0).all(axis=1)
+            hits = _np.flatnonzero(inside)
+            if len(hits):
+                found[i] = hits[0]
+        return found
 
     @property
     def vertex_neighbor_vertices(self):
@@ -570,7 +603,7 @@ class Voronoi(_Incremental):
     ``vertices`` (nv, ndim) float64, ``ridge_points`` (nr, 2) int32 (p < q), ``ridge_vertices``
     (a list per ridge; -1 is the vertex at infinity), ``ridge_dict`` ({(p, q): ridge vertices}),
     ``regions`` (lists of vertex indices, -1 in an unbounded one), ``point_region`` (intp, each
-    point's index into ``regions``), ``furthest_site`` (False). And two scipy lacks: ``volumes``
+    point's index into ``regions``), ``furthest_site``. And two scipy lacks: ``volumes``
     (per point, its cell's area in 2D or volume in 3D; inf when unbounded) and ``dimension``
     (what the points span: 2 or 3, less for degenerate input).
 
@@ -595,7 +628,9 @@ class Voronoi(_Incremental):
       ``[-1]`` between each pair of points whose cells share a face (the planar Voronoi edge swept
       along the normal), collinear points a plane ``[-1]`` between consecutive points. One point
       has the whole space as its cell (region ``[-1]``). Every cell is then unbounded.
-    * ``furthest_site=True`` raises "not supported", ``qhull_options`` as the module says;
+    * ``furthest_site=True`` (2D): each hull corner's furthest-site cell (unbounded: -1 last), the
+      other points' cells empty (region 0, volume 0); 3D raises "not supported".
+      ``qhull_options`` as the module says;
       NaN or infinite coordinates and wrong shapes raise HullkitError (a ValueError).
 
     Examples
@@ -621,7 +656,7 @@ class Voronoi(_Incremental):
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None):
-        _not_furthest_site(furthest_site, "Voronoi")
+        self._furthest = bool(furthest_site)
         # scipy's regions[0] is empty: the region of the point at infinity that Qhull's option Qz
         # (in scipy's default options) adds. Options given without Qz: no such region, as scipy's.
         options = _parsed_options(qhull_options, "Voronoi")[1]
@@ -633,9 +668,12 @@ class Voronoi(_Incremental):
         self.points = array
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
-        self.furthest_site = False
+        self.furthest_site = self._furthest
         self._ridge_dict = self._ridge_vertices = self._regions = None
-        parts = self._from_3d(array) if self.ndim == 3 else self._from_2d(array)
+        if self._furthest:
+            parts = self._furthest_2d(array)
+        else:
+            parts = self._from_3d(array) if self.ndim == 3 else self._from_2d(array)
         if parts is None:  # the core made every array (2D)
             return
         representative, cells, offsets, volumes = parts
@@ -710,6 +748,56 @@ class Voronoi(_Incremental):
              self.volumes) = core.scipy_voronoi(self._infinity_region)
         self._ridge_lists = (ridge_vertices.ravel(), _np.arange(0, 2 * len(ridge_vertices) + 1, 2, dtype=_np.int64))
         self._region_lists = (cells, offsets, None)
+        return None
+
+    def _furthest_2d(self, xy):
+        """furthest_site=True (2D): the diagram of the points' furthest-site cells, dual to the
+        furthest-site Delaunay triangulation (Delaunay(furthest_site=True)): a vertex per group of
+        exactly cocircular triangles, a ridge per edge between two groups or on the hull (a ray),
+        a cell (unbounded: -1 last) for each hull corner, counter-clockwise; the other points'
+        cells are empty (region 0, volume 0)."""
+        if self.ndim == 3:
+            _not_supported("furthest_site=True in 3D", "Voronoi")
+        tri = Delaunay(xy, furthest_site=True)
+        self.dimension = tri.dimension
+        if tri.nsimplex == 0:
+            _not_supported("furthest_site=True for collinear points or fewer than three distinct points", "Voronoi")
+        self._infinity_region = True  # the points that are no corner share the empty region 0
+        simplices, neighbors, groups = tri.simplices, tri.neighbors, tri._groups
+        self.vertices = tri._centres
+        pairs, ridges = [], []
+        for q in range(tri.nsimplex):
+            for k in range(3):
+                other = int(neighbors[q, k])
+                edge = (int(simplices[q, (k + 1) % 3]), int(simplices[q, (k + 2) % 3]))
+                if other < 0:
+                    pairs.append(edge), ridges.append((-1, int(groups[q])))
+                elif other > q and groups[other] != groups[q]:
+                    pairs.append(edge), ridges.append((int(groups[other]), int(groups[q])))
+        self._set_ridges(pairs, _np.asarray(ridges, dtype=_np.int64).reshape(-1), _np.arange(0, 2 * len(ridges) + 1, 2))
+        # Each corner's triangles, counter-clockwise around it: from the one whose edge to the next
+        # corner is on the hull, across the edge to the previous corner, to the hull again.
+        at = {}
+        for q in range(tri.nsimplex):
+            for k in range(3):
+                at.setdefault(int(simplices[q, k]), []).append((q, k))
+        corners = sorted(at)
+        cells, sizes = [], []
+        for p in corners:
+            place = dict(at[p])
+            q = next(t for t, k in at[p] if neighbors[t, (k + 2) % 3] < 0)
+            chain = []
+            while q >= 0:
+                if not chain or chain[-1] != groups[q]:
+                    chain.append(int(groups[q]))
+                q = int(neighbors[q, (place[q] + 1) % 3])
+            cells += chain + [-1]
+            sizes.append(len(chain) + 1)
+        region = _np.zeros(self.npoints, dtype=_np.intp)
+        region[corners] = _np.arange(1, len(corners) + 1)
+        self.point_region = region
+        self._region_lists = (_np.asarray(cells, dtype=_np.int64), _offsets(sizes), None)
+        self.volumes = _np.where(region > 0, _np.inf, 0.0)
         return None
 
     # -- 3D ------------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <numeric>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -224,6 +225,172 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
         report = hullkit::verify(span, h);
     }
     return report_dict(report);
+}
+
+/// The centre of the circle through a, b, c (x y each) into out[0], out[1]: from the differences to
+/// a, scaled by a power of two to about 1 (no overflow or underflow in the squares of tiny or huge
+/// triangles; a grid's centres come out exactly); inf or NaN when the points are collinear.
+void circle_centre(const double* a, const double* b, const double* c, double* out) {
+    double ba[2] = {b[0] - a[0], b[1] - a[1]}, ca[2] = {c[0] - a[0], c[1] - a[1]};
+    int exponent = 0;
+    std::frexp(std::max(std::max(std::fabs(ba[0]), std::fabs(ba[1])), std::max(std::fabs(ca[0]), std::fabs(ca[1]))), &exponent);
+    for (double* v : {ba, ca}) v[0] = std::ldexp(v[0], -exponent), v[1] = std::ldexp(v[1], -exponent);
+    const double lb = ba[0] * ba[0] + ba[1] * ba[1], lc = ca[0] * ca[0] + ca[1] * ca[1];
+    const double denominator = 2.0 * (ba[0] * ca[1] - ba[1] * ca[0]);
+    const double x = (ca[1] * lb - ba[1] * lc) / denominator;
+    const double y = (ba[0] * lc - ca[0] * lb) / denominator;
+    out[0] = a[0] + std::ldexp(x, exponent);  // a centre beyond the doubles' range: inf
+    out[1] = a[1] + std::ldexp(y, exponent);
+}
+
+/// The furthest-site Delaunay triangulation of 2D points, from their hull cycle `hull` (the
+/// indices of the points on the hull's boundary, in order either way): the triangulation of the
+/// hull's strictly convex corners whose triangles' circumcircles hold every corner (inside or on),
+/// i.e. the upper hull of the points lifted to the paraboloid. Exact: the corners by orient2d,
+/// the triangles by Lawson's flips from the fan of the lowest-indexed corner, flipping while an
+/// edge's opposite corner lies strictly outside a circle (incircle); each flip raises the lifted
+/// surface, so they end, at the unique answer up to cocircular ties (which keep the fan's edges).
+/// Returns (triangles (m, 3) int32, counter-clockwise (y up), each from its lowest index and
+/// sorted; neighbors (m, 3) int32, across from each corner, -1 on the hull; group (m,) int32:
+/// triangles whose circumcircles coincide exactly, joined across their edges, share a number
+/// (0, 1, ... by first triangle); centres (groups, 2): each group's circumcentre; corners (h,)
+/// int32: the corners counter-clockwise from the lowest index).
+py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& hull) {
+    const std::size_t n = rows(points, 2, "points");
+    const std::size_t count = static_cast<std::size_t>(hull.size());
+    const std::uint32_t* cycle = hull.data();
+    for (std::size_t k = 0; k < count; ++k) {
+        if (cycle[k] >= n) throw std::invalid_argument("hull index out of range");
+    }
+    // The corners' coordinates, scaled by one power of two into incircle's exact range.
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < count; ++k) {
+        for (int axis = 0; axis < 2; ++axis) {
+            const double magnitude = std::fabs(points.data()[2 * cycle[k] + axis]);
+            if (!std::isfinite(magnitude)) throw std::invalid_argument("coordinates must be finite");
+            largest = std::max(largest, magnitude);
+            if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+        }
+    }
+    int exponent = 0;
+    if (!hullkit::incircle_range_ok(largest, smallest) && !hullkit::incircle_scale_exponent(largest, smallest, &exponent))
+        throw std::invalid_argument("the nonzero |coordinates| span more than the exact in-circle test's range");
+    auto at = [&](std::uint32_t i, int axis) { return std::ldexp(points.data()[2 * i + axis], exponent); };
+    auto orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        return hullkit::orient2d(at(a, 0), at(a, 1), at(b, 0), at(b, 1), at(c, 0), at(c, 1));
+    };
+    auto incircle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+        return hullkit::incircle(at(a, 0), at(a, 1), at(b, 0), at(b, 1), at(c, 0), at(c, 1), at(d, 0), at(d, 1));
+    };
+    // The strictly convex corners (a point inside a hull edge is no vertex: lifted, it lies below).
+    std::vector<std::uint32_t> corners;
+    int turn = 0;
+    for (std::size_t k = 0; k < count && count >= 3; ++k) {
+        const int o = orient(cycle[(k + count - 1) % count], cycle[k], cycle[(k + 1) % count]);
+        if (o != 0) corners.push_back(cycle[k]), turn = o;
+    }
+    if (turn < 0) std::reverse(corners.begin(), corners.end());
+    if (!corners.empty()) std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+    const std::size_t h = corners.size();
+    std::vector<std::uint32_t> tri;    // 3 corners per triangle, counter-clockwise
+    std::vector<std::int32_t> twin;    // per half-edge (corner k to k + 1 of its triangle)
+    for (std::size_t i = 1; i + 1 < h; ++i) {
+        tri.insert(tri.end(), {corners[0], corners[i], corners[i + 1]});
+        twin.insert(twin.end(), {-1, -1, -1});
+        if (i > 1) {  // the fan: edge corners[i] -> corners[0] of triangle i - 1 meets 0 -> i of triangle i
+            const std::int32_t previous = static_cast<std::int32_t>(3 * (i - 2) + 2), current = static_cast<std::int32_t>(3 * (i - 1));
+            twin[previous] = current, twin[current] = previous;
+        }
+    }
+    auto next = [](std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; };
+    auto prev = [](std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; };
+    auto link = [&](std::int32_t a, std::int32_t b) {
+        twin[a] = b;
+        if (b >= 0) twin[b] = a;
+    };
+    std::vector<std::int32_t> stack;
+    for (std::int32_t e = 0; e < static_cast<std::int32_t>(twin.size()); ++e) {
+        if (twin[e] > e) stack.push_back(e);
+    }
+    while (!stack.empty()) {
+        const std::int32_t a = stack.back();
+        stack.pop_back();
+        const std::int32_t b = twin[a];
+        if (b < 0) continue;
+        // Triangle (pr, pl, p0) on half-edge a = pr -> pl, and (pl, pr, p1) across it.
+        const std::int32_t al = next(a), ar = prev(a), bl = prev(b), br = next(b);
+        const std::uint32_t pr = tri[a], pl = tri[al], p0 = tri[ar], p1 = tri[bl];
+        if (incircle(pr, pl, p0, p1) >= 0) continue;  // p1 inside or on the circle: furthest-legal
+        tri[a] = p1, tri[b] = p0;                      // now (p1, pl, p0) and (p0, pr, p1)
+        const std::int32_t hbl = twin[bl], har = twin[ar];
+        link(a, hbl), link(b, har), link(ar, bl);
+        stack.insert(stack.end(), {a, al, b, br});
+    }
+    // Canonical: each triangle from its lowest corner, the triangles sorted.
+    const std::size_t m = tri.size() / 3;
+    std::vector<std::uint32_t> shift(m);
+    for (std::size_t t = 0; t < m; ++t) {
+        const std::uint32_t* c = &tri[3 * t];
+        shift[t] = c[1] < c[0] && c[1] < c[2] ? 1 : c[2] < c[0] && c[2] < c[1] ? 2 : 0;
+    }
+    auto corner_of = [&](std::size_t t, std::size_t k) { return tri[3 * t + (shift[t] + k) % 3]; };
+    std::vector<std::uint32_t> order(m);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t u, std::uint32_t v) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (corner_of(u, k) != corner_of(v, k)) return corner_of(u, k) < corner_of(v, k);
+        }
+        return false;
+    });
+    std::vector<std::int32_t> slot(m);
+    for (std::size_t q = 0; q < m; ++q) slot[order[q]] = static_cast<std::int32_t>(q);
+    std::vector<std::int32_t> triangles(3 * m), neighbors(3 * m, -1);
+    for (std::size_t q = 0; q < m; ++q) {
+        const std::size_t t = order[q];
+        for (std::size_t k = 0; k < 3; ++k) {
+            triangles[3 * q + k] = static_cast<std::int32_t>(corner_of(t, k));
+            // Across from corner k: the half-edge from corner k + 1 to k + 2.
+            const std::int32_t e = twin[3 * t + (shift[t] + k + 1) % 3];
+            neighbors[3 * q + k] = e < 0 ? -1 : slot[e / 3];
+        }
+    }
+    // Groups: triangles joined across edges whose far corner is exactly on the circle.
+    std::vector<std::int32_t> parent(m);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](std::int32_t t) {
+        while (parent[t] != t) t = parent[t] = parent[parent[t]];
+        return t;
+    };
+    for (std::size_t q = 0; q < m; ++q) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::int32_t other = neighbors[3 * q + k];
+            if (other < static_cast<std::int32_t>(q)) continue;  // -1, or looked at from the other side
+            const std::int32_t* c = &triangles[3 * q];
+            const std::int32_t* d = &triangles[3 * other];
+            const std::int64_t far = std::int64_t{d[0]} + d[1] + d[2] - c[(k + 1) % 3] - c[(k + 2) % 3];
+            if (incircle(c[0], c[1], c[2], static_cast<std::uint32_t>(far)) == 0) {
+                const std::int32_t r1 = find(static_cast<std::int32_t>(q)), r2 = find(other);
+                parent[std::max(r1, r2)] = std::min(r1, r2);
+            }
+        }
+    }
+    std::vector<std::int32_t> group(m), number(m, -1);
+    std::vector<double> centres;
+    for (std::size_t q = 0; q < m; ++q) {
+        const std::int32_t root = find(static_cast<std::int32_t>(q));
+        if (number[root] < 0) {
+            number[root] = static_cast<std::int32_t>(centres.size() / 2);
+            centres.resize(centres.size() + 2);
+            const double* xy = points.data();
+            circle_centre(xy + 2 * triangles[3 * q], xy + 2 * triangles[3 * q + 1], xy + 2 * triangles[3 * q + 2],
+                          &centres[centres.size() - 2]);
+        }
+        group[q] = number[root];
+    }
+    std::vector<std::int32_t> corner_list(corners.begin(), corners.end());
+    const auto rows_m = static_cast<py::ssize_t>(m);
+    return py::make_tuple(owned(std::move(triangles), {rows_m, 3}), owned(std::move(neighbors), {rows_m, 3}),
+                          owned(std::move(group)), owned_points(std::move(centres), 2), owned(std::move(corner_list)));
 }
 
 /// The side of each hull facet `query` lies on, exactly: +1 strictly outside (beyond the facet's
@@ -678,23 +845,9 @@ public:
                     following[e] = e + 1 < last ? e + 1 : first;
                     preceding[e] = e > first ? e - 1 : last - 1;
                 }
-                // The circle through corners 0, size/3 and 2 size/3, from the differences to the
-                // first, each polygon's scaled by a power of two to about 1 (no overflow or underflow
-                // in the squares of tiny or huge polygons; grids come out exactly).
-                const double* a = xy + 2 * corner[first];
-                const double* b = xy + 2 * corner[first + size / 3];
-                const double* c = xy + 2 * corner[first + 2 * size / 3];
-                double ba[2] = {b[0] - a[0], b[1] - a[1]}, ca[2] = {c[0] - a[0], c[1] - a[1]};
-                int exponent = 0;
-                std::frexp(std::max(std::max(std::fabs(ba[0]), std::fabs(ba[1])), std::max(std::fabs(ca[0]), std::fabs(ca[1]))),
-                           &exponent);
-                for (double* v : {ba, ca}) v[0] = std::ldexp(v[0], -exponent), v[1] = std::ldexp(v[1], -exponent);
-                const double lb = ba[0] * ba[0] + ba[1] * ba[1], lc = ca[0] * ca[0] + ca[1] * ca[1];
-                const double denominator = 2.0 * (ba[0] * ca[1] - ba[1] * ca[0]);
-                const double x = (ca[1] * lb - ba[1] * lc) / denominator;
-                const double y = (ba[0] * lc - ca[0] * lb) / denominator;
-                vertices[2 * p] = a[0] + std::ldexp(x, exponent);  // a centre beyond the doubles' range: inf
-                vertices[2 * p + 1] = a[1] + std::ldexp(y, exponent);
+                // The circle through corners 0, size/3 and 2 size/3.
+                circle_centre(xy + 2 * corner[first], xy + 2 * corner[first + size / 3], xy + 2 * corner[first + 2 * size / 3],
+                              &vertices[2 * p]);
             }
             // Twins: the half-edges grouped by their lower end (a counting sort), matched within.
             auto lower = [&](std::size_t e) { return std::min(corner[e], corner[following[e]]); };
@@ -1149,6 +1302,7 @@ PYBIND11_MODULE(_core, m) {
     m.def("surface_extras", &surface_extras);
     m.def("facet_sides", &facet_sides);
     m.def("nested_lists", &nested_lists);
+    m.def("furthest_delaunay", &furthest_delaunay);
     m.def("verify_hull", &verify_hull);
     m.def("verify_delaunay", &verify_delaunay);
     m.def("verify_delaunay3", &verify_delaunay3, py::arg("points"), py::arg("tetrahedra"), py::arg("perturbed") = true);

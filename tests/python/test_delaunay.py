@@ -106,8 +106,7 @@ def test_bad_input_and_unsupported_options():
     assert caught.value.point == 3
     with pytest.raises(hullkit.HullkitError, match="not supported"):
         Delaunay(np.zeros((5, 4)))  # 3D is supported (tests/python/test_spatial.py), 4D not
-    for option, message in (({"furthest_site": True}, "furthest_site=True is not supported"),
-                            ({"qhull_options": "Qbb Qu"}, "Qhull option 'Qu' .* not supported"),
+    for option, message in (({"qhull_options": "Qbb Qu"}, "Qhull option 'Qu' .* not supported"),
                             ({"qhull_options": "QG0"}, "Qhull option 'QG0' .* not supported by hullkit.spatial.Delaunay")):
         with pytest.raises(hullkit.HullkitError, match=message):
             Delaunay(np.random.default_rng(2).random((10, 2)), **option)

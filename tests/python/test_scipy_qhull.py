@@ -25,14 +25,14 @@ EXPECTED_FAILURES = {
     f"{D}test_nd_simplex",  # 2 to 7 dimensions in one test: 2 and 3 pass, 4 raises
     f"{U}test_more_barycentric_transforms",  # grids in 2 to 5 dimensions: 2 and 3 pass, 4 raises
     f"{H}test_self_dual_polytope_intersection",  # a 4D polytope
-    # furthest_site=True: not supported.
-    f"{D}test_furthest_site", f"{V}test_furthest_site", f"{V}test_furthest_site_flag",
     # The order of Qhull's output, which the tests compare item by item: a square's four cocircular
     # corners get the other diagonal of the two that are both Delaunay (test_find_simplex,
     # test_2d_square) and so another hull edge order (test_convex_hull); ConvexHull's facets come
     # in another order, so `good` (correct as a set of facets: tests/python/test_spatial_extras.py)
     # marks other positions; HalfspaceIntersection's corners (test_cube_halfspace_intersection:
-    # hullkit's are counter-clockwise) and dual facets (test_cube: the same facets as sets) too.
+    # hullkit's are counter-clockwise) and dual facets (test_cube: the same facets as sets) too;
+    # the furthest-site triangles and Voronoi vertices (the same sets: tests/python/test_spatial_extras.py).
+    f"{D}test_furthest_site", f"{V}test_furthest_site",
     f"{U}test_find_simplex", f"{U}test_convex_hull", f"{D}test_2d_square",
     f"{C}test_good2d[False]", f"{C}test_good2d[True]", f"{C}test_good3d[False]", f"{C}test_good3d[True]",
     *(f"{C}test_good2d_incremental_changes[new_gen{k}-expected{k}-QG{sign}4]" for k in (1, 2, 3) for sign in ("", "-")),
@@ -68,6 +68,6 @@ def test_scipy_test_qhull_passes_with_hullkit(tmp_path):
         f"test__plotutils.py::TestPlotting::test_{what}" for what in ("delaunay", "voronoi", "convex_hull")}
     assert not any("Test_Qhull" in name for name in outcomes)
     assert_failures_are(outcomes, EXPECTED_FAILURES)
-    # 108 of test_qhull.py's 177 pass (December 2026; 43 of the 69 failures are of more than 3
+    # 109 of test_qhull.py's 177 pass (December 2026; 43 of the 68 failures are of more than 3
     # dimensions), and the 3 of test__plotutils.py.
     assert sum(outcome == "passed" for outcome in outcomes.values()) == len(outcomes) - len(EXPECTED_FAILURES)

@@ -326,3 +326,71 @@ def test_plots_draw_the_diagrams():
         voronoi_plot_2d(Voronoi(rng.random((20, 3))))
     with pytest.raises(HullkitError, match="unknown keywords"):
         voronoi_plot_2d(vor, colour="red")
+
+
+# -- furthest site -------------------------------------------------------------------------------
+
+def incircle_sign(a, b, c, d):
+    """Exact sign of the in-circle determinant (positive: d inside the circle of counter-clockwise a, b, c)."""
+    rows = [[Fraction(float(p[0])) - Fraction(float(d[0])), Fraction(float(p[1])) - Fraction(float(d[1]))] for p in (a, b, c)]
+    rows = [r + [r[0] ** 2 + r[1] ** 2] for r in rows]
+    value = Fraction_det(rows)
+    return (value > 0) - (value < 0)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_furthest_site_delaunay_and_voronoi_match_scipy(seed):
+    rng = np.random.default_rng(90 + seed)
+    points = rng.random((60, 2))
+    ours, theirs = Delaunay(points, furthest_site=True), scipy.spatial.Delaunay(points, furthest_site=True)
+    assert sorted(map(sorted, ours.simplices.tolist())) == sorted(map(sorted, theirs.simplices.tolist()))
+    hull_corners = set(ConvexHull(points).vertices.tolist())
+    assert set(ours.simplices.ravel().tolist()) == hull_corners and len(ours.coplanar) == 0
+    # Every circumcircle holds every point (exactly), and the triangles are counter-clockwise.
+    for a, b, c in ours.simplices:
+        assert exact_side(points[[b, a]], points[c]) > 0  # c left of a -> b
+        assert all(incircle_sign(points[a], points[b], points[c], q) >= 0 for q in points)
+    # Neighbours across each corner, the hull as the corners' cycle, equations pointing up.
+    for t, row in enumerate(ours.neighbors):
+        for k, u in enumerate(row):
+            shared = set(ours.simplices[t].tolist()) - {int(ours.simplices[t, k])}
+            if u >= 0:
+                assert shared <= set(ours.simplices[u].tolist()) and t in ours.neighbors[u]
+            else:
+                assert tuple(sorted(shared)) in {tuple(sorted(e)) for e in ours.convex_hull.tolist()}
+    assert (ours.equations[:, -2] > 0).all()
+    queries = rng.random((200, 2))
+    found = ours.find_simplex(queries)
+    assert np.array_equal(found >= 0, theirs.find_simplex(queries) >= 0)
+    for q, t in zip(queries, found):
+        if t >= 0:
+            assert all(exact_side(points[ours.simplices[t][[i, (i + 1) % 3]]], q) <= 0 for i in range(3))
+    # Voronoi: the same vertices, ridges and regions as scipy's, as sets.
+    vor, svor = Voronoi(points, furthest_site=True), scipy.spatial.Voronoi(points, furthest_site=True)
+    assert vor.furthest_site is True
+    tree = scipy.spatial.cKDTree(svor.vertices)
+    distance, index = tree.query(vor.vertices)
+    assert distance.max() < 1e-9 and len(set(index.tolist())) == len(index) == len(svor.vertices)
+    mapping = {**dict(enumerate(index.tolist())), -1: -1}
+    ours_ridges = {tuple(p): frozenset(mapping[v] for v in r) for p, r in zip(vor.ridge_points.tolist(), vor.ridge_vertices)}
+    their_ridges = {tuple(sorted(p)): frozenset(r) for p, r in zip(svor.ridge_points.tolist(), svor.ridge_vertices)}
+    assert ours_ridges == their_ridges
+    for i in range(len(points)):
+        assert {mapping[v] for v in vor.regions[vor.point_region[i]]} == set(svor.regions[svor.point_region[i]])
+        assert vor.volumes[i] == (np.inf if i in hull_corners else 0.0)
+
+
+def test_furthest_site_on_cocircular_corners_and_refusals():
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0.5], [0.5, 0]], dtype=float)  # centre, edge midpoint
+    tri = Delaunay(square, furthest_site=True)
+    assert tri.nsimplex == 2 and set(tri.simplices.ravel().tolist()) == {0, 1, 2, 3}
+    vor = Voronoi(square, furthest_site=True)
+    assert vor.vertices.tolist() == [[0.5, 0.5]]  # the four corners' one circle: one vertex
+    assert all(vor.regions[vor.point_region[i]] == [0, -1] for i in range(4))
+    assert vor.point_region[4] == vor.point_region[5] == 0 and vor.regions[0] == []
+    with pytest.raises(HullkitError, match="furthest_site=True in 3D is not supported"):
+        Delaunay(np.random.default_rng(1).random((10, 3)), furthest_site=True)
+    with pytest.raises(HullkitError, match="furthest_site=True for collinear points"):
+        Voronoi(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
+    line = Delaunay(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
+    assert line.nsimplex == 0 and line.find_simplex([[1.0, 0.0]]).tolist() == [-1]

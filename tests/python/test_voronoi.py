@@ -330,9 +330,11 @@ def test_errors_say_what_is_wrong():
         Voronoi([["a", "b"]])
     with pytest.raises(ValueError):  # scipy's test_masked_array_fails
         Voronoi(np.ma.masked_all(1))
-    for options in ({"furthest_site": True}, {"qhull_options": "Qbb Qc Qz Qu"}, {"qhull_options": "QG0"}):
+    for options in ({"qhull_options": "Qbb Qc Qz Qu"}, {"qhull_options": "QG0"}):
         with pytest.raises(HullkitError, match="not supported by hullkit.spatial.Voronoi"):
             Voronoi([[0, 0], [1, 0], [0, 1]], **options)
+    with pytest.raises(HullkitError, match="furthest_site=True in 3D is not supported by hullkit.spatial.Voronoi"):
+        Voronoi([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], furthest_site=True)
 
 
 def test_tsearch_is_find_simplex():
