@@ -102,7 +102,8 @@ _NO_EFFECT = {
     "Pp": "no precision warnings", "Po": "forced output",
 }
 _PER_CLASS = {
-    "Qc": ("Delaunay", "Voronoi", "HalfspaceIntersection"),  # coplanar points: Delaunay lists its repeats always
+    # Coplanar points: Delaunay lists its repeats always; ConvexHull fills `coplanar` with them.
+    "Qc": ("ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection"),
     "Fv": ("Voronoi",),  # Voronoi ridges: hullkit's ridges are always listed
 }
 _GOOD = _re.compile(r"QG(-?)([0-9]+)")
@@ -180,8 +181,10 @@ class _Incremental:
 class ConvexHull(_Incremental):
     """The convex hull of points in 2 or 3 dimensions (see the module's documentation).
 
-    Attributes (scipy's): points, vertices, simplices, neighbors, equations, coplanar (always
-    empty: Qhull's Qc is not supported), good (with the option QGn: None without), volume, area,
+    Attributes (scipy's): points, vertices, simplices, neighbors, equations, coplanar (with the
+    option Qc: the points exactly on the boundary that are not vertices, each with a facet whose
+    line or plane holds it and that facet's nearest corner; empty without), good (with the option
+    QGn: None without), volume, area,
     npoints, ndim, min_bound, max_bound; and dimension. Methods: add_points, close
     (``incremental=True``).
 
@@ -204,7 +207,8 @@ class ConvexHull(_Incremental):
     """
 
     def __init__(self, points, incremental=False, qhull_options=None):
-        self._good_option = _parsed_options(qhull_options, "ConvexHull")[0]
+        self._good_option, options = _parsed_options(qhull_options, "ConvexHull")
+        self._keep_coplanar = options is not None and "Qc" in options
         self._start(incremental)
         self._build(_checked_points(points, "ConvexHull", "a hull"))
 
@@ -232,8 +236,31 @@ class ConvexHull(_Incremental):
                 setattr(self, name, indices + (indices >= seen_from).astype(_np.int32))
             with _translated():
                 sides = _core.facet_sides(array, _np.ascontiguousarray(self.simplices, dtype=_np.uint32),
-                                          array[seen_from])
+                                          array[seen_from: seen_from + 1])[0]
             self.good = sides > 0 if visible else sides <= 0
+        if self._keep_coplanar:
+            self.coplanar = self._boundary_points()
+
+    def _boundary_points(self):
+        """Qc: the points on the hull's boundary that are not vertices, exactly (each against every
+        facet's line or plane: _core.facet_holding), as rows (point, a facet whose line or plane
+        holds it, that facet's nearest corner)."""
+        candidates = _np.ones(self.npoints, dtype=bool)
+        candidates[self.vertices] = False
+        if self._good_option is not None:
+            candidates[self._good_option[0]] = False  # QGn's point is no part of the hull
+        candidates = _np.flatnonzero(candidates)
+        if not len(candidates) or not len(self.simplices):
+            return _np.zeros((0, 3), dtype=_np.int32)
+        with _translated():
+            facet = _core.facet_holding(self.points, _np.ascontiguousarray(self.simplices, dtype=_np.uint32),
+                                        self.points[candidates])
+        on = facet >= 0
+        points, facet = candidates[on], facet[on]
+        corners = self.simplices[facet]  # (k, ndim)
+        distance = _np.linalg.norm(self.points[corners] - self.points[points][:, None, :], axis=2)
+        nearest = corners[_np.arange(len(points)), distance.argmin(axis=1)]
+        return _np.stack([points, facet, nearest], axis=1).astype(_np.int32)
 
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, h, xyz):
@@ -473,12 +500,12 @@ class Delaunay(_Incremental):
         if not self.nsimplex:
             return found
         edges = _np.ascontiguousarray(self.simplices[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), dtype=_np.uint32)
-        for i, query in enumerate(flat):
+        for start in range(0, len(flat), 4096):  # (queries, simplices) sides a block at a time
             with _translated():
-                inside = (_core.facet_sides(self.points, edges, query).reshape(-1, 3) <= 0).all(axis=1)
-            hits = _np.flatnonzero(inside)
-            if len(hits):
-                found[i] = hits[0]
+                sides = _core.facet_sides(self.points, edges, flat[start: start + 4096])
+            inside = (sides.reshape(len(sides), -1, 3) <= 0).all(axis=2)
+            hit = inside.any(axis=1)
+            found[start: start + len(sides)][hit] = inside[hit].argmax(axis=1)
         return found
 
     @property
@@ -1039,7 +1066,7 @@ class HalfspaceIntersection:
         if bounded:  # the origin (the interior point) strictly inside the dual hull: exactly
             with _translated():
                 sides = _core.facet_sides(_np.ascontiguousarray(self.dual_points),
-                                          _np.ascontiguousarray(triangles, dtype=_np.uint32), _np.zeros(k))
+                                          _np.ascontiguousarray(triangles, dtype=_np.uint32), _np.zeros((1, k)))
             bounded = bool((sides < 0).all())
         if not bounded:
             raise HullkitError("the intersection of the halfspaces is unbounded: their normals do not surround the "

@@ -37,7 +37,7 @@ class _Cloud:  # not a class at runtime: the attributes that ConvexHull, Delauna
 
 class ConvexHull(_Cloud, _Incremental):
     vertices: NDArray[np.int32]
-    coplanar: NDArray[np.int32]  # (0, 3): Qc is not supported
+    coplanar: NDArray[np.int32]  # (c, 3): with Qc, the boundary points that are not vertices
     good: NDArray[np.bool_] | None  # with qhull_options "QGn" / "QG-n"
     simplices: NDArray[np.int32]  # (m, ndim)
     neighbors: NDArray[np.int32]  # (m, ndim)

@@ -393,56 +393,96 @@ py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_
                           owned(std::move(group)), owned_points(std::move(centres), 2), owned(std::move(corner_list)));
 }
 
-/// The side of each hull facet `query` lies on, exactly: +1 strictly outside (beyond the facet's
-/// line or plane), 0 on that line or plane, -1 inside. `points` (n, 2) with `facets` (m, 2) the
-/// counter-clockwise polygon's edges [a, b] (outside: right of a -> b), or (n, 3) with (m, 3)
-/// triangles counter-clockwise seen from outside. All coordinates scaled by one power of two first
-/// when they leave the predicates' exact range (scaling by 2^k changes no sign).
-py::array_t<std::int8_t> facet_sides(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& facets,
-                                     const Points& query) {
-    if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
-        throw std::invalid_argument("points must have shape (n, 2) or (n, 3)");
-    const auto dims = static_cast<std::size_t>(points.shape(1));
-    const auto n = static_cast<std::size_t>(points.shape(0));
-    if (facets.ndim() != 2 || static_cast<std::size_t>(facets.shape(1)) != dims)
-        throw std::invalid_argument("facets must have shape (m, " + std::to_string(dims) + ")");
-    if (query.ndim() != 1 || static_cast<std::size_t>(query.shape(0)) != dims)
-        throw std::invalid_argument("the query point must have shape (" + std::to_string(dims) + ",)");
-    const std::size_t m = static_cast<std::size_t>(facets.shape(0));
-    const std::uint32_t* f = facets.data();
-    for (std::size_t k = 0; k < dims * m; ++k) {
-        if (f[k] >= n) throw std::invalid_argument("facet corner out of range");
+/// Points and facets for the exact side tests below: the coordinates of `points` (n, 2 or 3) and
+/// of `queries` (k, same) in one array, scaled by one power of two when they leave the
+/// predicates' exact range (scaling by 2^k changes no sign); `facets` (m, dims) checked.
+struct FacetTests {
+    std::size_t dims = 0, n = 0, m = 0, k = 0;
+    const std::uint32_t* facets = nullptr;
+    std::vector<double> xyz;
+
+    FacetTests(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& facet_array, const Points& queries) {
+        if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
+            throw std::invalid_argument("points must have shape (n, 2) or (n, 3)");
+        dims = static_cast<std::size_t>(points.shape(1));
+        n = static_cast<std::size_t>(points.shape(0));
+        if (facet_array.ndim() != 2 || static_cast<std::size_t>(facet_array.shape(1)) != dims)
+            throw std::invalid_argument("facets must have shape (m, " + std::to_string(dims) + ")");
+        if (queries.ndim() != 2 || static_cast<std::size_t>(queries.shape(1)) != dims)
+            throw std::invalid_argument("queries must have shape (k, " + std::to_string(dims) + ")");
+        m = static_cast<std::size_t>(facet_array.shape(0));
+        k = static_cast<std::size_t>(queries.shape(0));
+        facets = facet_array.data();
+        for (std::size_t j = 0; j < dims * m; ++j) {
+            if (facets[j] >= n) throw std::invalid_argument("facet corner out of range");
+        }
+        xyz.assign(points.data(), points.data() + dims * n);
+        xyz.insert(xyz.end(), queries.data(), queries.data() + dims * k);
+        double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+        for (double value : xyz) {
+            if (!std::isfinite(value)) throw std::invalid_argument("coordinates must be finite");
+            const double magnitude = std::fabs(value);
+            largest = std::max(largest, magnitude);
+            if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
+        }
+        int exponent = 0;
+        if (!hullkit::predicates_range_ok(largest, smallest) && !hullkit::predicates_scale_exponent(largest, smallest, &exponent))
+            throw std::invalid_argument("the nonzero |coordinates| span more than the exact predicates' range");
+        if (exponent != 0) {
+            for (double& value : xyz) value = std::ldexp(value, exponent);
+        }
     }
-    std::vector<double> xyz(points.data(), points.data() + dims * n);
-    xyz.insert(xyz.end(), query.data(), query.data() + dims);
-    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-    for (double value : xyz) {
-        if (!std::isfinite(value)) throw std::invalid_argument("coordinates must be finite");
-        const double magnitude = std::fabs(value);
-        largest = std::max(largest, magnitude);
-        if (magnitude != 0.0) smallest = std::min(smallest, magnitude);
-    }
-    int exponent = 0;
-    if (!hullkit::predicates_range_ok(largest, smallest) &&
-        !hullkit::predicates_scale_exponent(largest, smallest, &exponent))
-        throw std::invalid_argument("the nonzero |coordinates| span more than the exact predicates' range");
-    if (exponent != 0) {
-        for (double& value : xyz) value = std::ldexp(value, exponent);
-    }
-    const double* q = xyz.data() + dims * n;
-    std::vector<std::int8_t> side(m);
-    for (std::size_t k = 0; k < m; ++k) {
-        const std::uint32_t* c = f + dims * k;
+
+    /// +1 when query q is strictly outside facet f (right of a 2D edge a -> b; on the side a 3D
+    /// triangle's normal points to), 0 on its line or plane, -1 inside.
+    int side(std::size_t f, std::size_t q) const {
+        const std::uint32_t* c = facets + dims * f;
+        const double* p = xyz.data() + dims * (n + q);
         if (dims == 2) {
             const double* a = xyz.data() + 2 * c[0];
             const double* b = xyz.data() + 2 * c[1];
-            side[k] = static_cast<std::int8_t>(-hullkit::orient2d(a[0], a[1], b[0], b[1], q[0], q[1]));
-        } else {
-            side[k] = static_cast<std::int8_t>(
-                hullkit::orient3d(xyz.data() + 3 * c[0], xyz.data() + 3 * c[1], xyz.data() + 3 * c[2], q));
+            return -hullkit::orient2d(a[0], a[1], b[0], b[1], p[0], p[1]);
+        }
+        return hullkit::orient3d(xyz.data() + 3 * c[0], xyz.data() + 3 * c[1], xyz.data() + 3 * c[2], p);
+    }
+};
+
+/// The side of each hull facet each query lies on, exactly: (k, m) int8, +1 strictly outside,
+/// 0 on the facet's line or plane, -1 inside (FacetTests::side). `points` (n, 2) with `facets`
+/// (m, 2) a counter-clockwise polygon's edges, or (n, 3) with (m, 3) triangles counter-clockwise
+/// seen from outside; `queries` (k, 2 or 3).
+py::array_t<std::int8_t> facet_sides(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& facets,
+                                     const Points& queries) {
+    const FacetTests tests(points, facets, queries);
+    std::vector<std::int8_t> sides(tests.k * tests.m);
+    {
+        py::gil_scoped_release unlocked;
+        for (std::size_t q = 0; q < tests.k; ++q) {
+            for (std::size_t f = 0; f < tests.m; ++f) sides[q * tests.m + f] = static_cast<std::int8_t>(tests.side(f, q));
         }
     }
-    return owned(std::move(side));
+    return owned(std::move(sides), {static_cast<py::ssize_t>(tests.k), static_cast<py::ssize_t>(tests.m)});
+}
+
+/// For each query, the first facet whose line or plane holds it exactly (side 0), -1 for none:
+/// (k,) int32. On a convex hull's facets (the queries inside the hull) that is the query lying on
+/// the hull's boundary. O(k m) exact tests (a float filter decides nearly all of them).
+py::array_t<std::int32_t> facet_holding(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& facets,
+                                        const Points& queries) {
+    const FacetTests tests(points, facets, queries);
+    std::vector<std::int32_t> holding(tests.k, -1);
+    {
+        py::gil_scoped_release unlocked;
+        for (std::size_t q = 0; q < tests.k; ++q) {
+            for (std::size_t f = 0; f < tests.m; ++f) {
+                if (tests.side(f, q) == 0) {
+                    holding[q] = static_cast<std::int32_t>(f);
+                    break;
+                }
+            }
+        }
+    }
+    return owned(std::move(holding));
 }
 
 /// Python lists of ints: for each r of `rows` (all groups when empty), [flat[offsets[r]], ...,
@@ -1301,6 +1341,7 @@ PYBIND11_MODULE(_core, m) {
     m.def("verify_triangles", &verify_triangles);
     m.def("surface_extras", &surface_extras);
     m.def("facet_sides", &facet_sides);
+    m.def("facet_holding", &facet_holding);
     m.def("nested_lists", &nested_lists);
     m.def("furthest_delaunay", &furthest_delaunay);
     m.def("verify_hull", &verify_hull);

@@ -394,3 +394,22 @@ def test_furthest_site_on_cocircular_corners_and_refusals():
         Voronoi(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
     line = Delaunay(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
     assert line.nsimplex == 0 and line.find_simplex([[1.0, 0.0]]).tolist() == [-1]
+
+
+@pytest.mark.parametrize("ndim", [2, 3])
+def test_qc_lists_the_boundary_points_that_are_not_vertices(ndim):
+    grid = np.array(np.meshgrid(*[np.arange(4.0)] * ndim, indexing="ij")).reshape(ndim, -1).T  # 4^ndim grid
+    rng = np.random.default_rng(100 + ndim)
+    points = np.vstack([grid, rng.random((30, ndim)) * 3, grid[:2]])  # inner points, two repeated corners
+    hull = ConvexHull(points, qhull_options="Qc")
+    plain = ConvexHull(points)
+    assert np.array_equal(hull.simplices, plain.simplices) and len(plain.coplanar) == 0
+    on_boundary = ((points == 0) | (points == 3)).any(axis=1)  # exactly, for this grid
+    expected = set(np.flatnonzero(on_boundary).tolist()) - set(hull.vertices.tolist())
+    assert set(hull.coplanar[:, 0].tolist()) == expected and len(expected) > 4
+    for point, facet, nearest in hull.coplanar:
+        assert exact_side(points[hull.simplices[facet]], points[point]) == 0
+        assert nearest in hull.simplices[facet]
+    # The repeated corners are on the boundary and their nearest corner is the point they repeat.
+    rows = {int(p): int(v) for p, _, v in hull.coplanar}
+    assert np.array_equal(points[rows[len(points) - 2]], points[len(points) - 2])
