@@ -67,7 +67,7 @@ import re as _re
 
 import numpy as _np
 
-from . import HullkitError, _core, _translated, as_points, delaunay, delaunay3, hull
+from . import HullkitError, _core, _threads, _translated, as_points, delaunay, delaunay3, hull
 
 __all__ = ["ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection", "QhullError", "chebyshev_center", "tsearch",
            "delaunay_plot_2d", "convex_hull_plot_2d", "voronoi_plot_2d"]
@@ -884,6 +884,21 @@ class Voronoi(_Incremental):
         self._set_ridges(pairs, _np.full(len(pairs), -1, dtype=_np.int64), _np.arange(len(pairs) + 1, dtype=_np.int64))
         return self._without_vertices(d.representative)
 
+    def _box(self, lower, upper):
+        """The box [lower, upper] (default: the points' bounding box, widened where flat) as two
+        float64 arrays of ndim coordinates, or HullkitError."""
+        if lower is None or upper is None:
+            low, high = self.min_bound, self.max_bound
+            pad = _np.where(high > low, 0.0, 1.0)  # a flat box would have no area
+            lower = low - pad if lower is None else lower
+            upper = high + pad if upper is None else upper
+        low, high = (_np.asarray(v, dtype=_np.float64).reshape(-1) for v in (lower, upper))
+        k = self.ndim
+        if low.shape != (k,) or high.shape != (k,) or not (_np.isfinite(low).all() and _np.isfinite(high).all()) \
+                or not (low < high).all():
+            raise HullkitError(f"the box needs finite lower < upper, each of {k} coordinates; got {low.tolist()}, {high.tolist()}")
+        return low, high
+
     def clipped_cells(self, lower=None, upper=None):
         """2D: each point's cell clipped to the box [lower, upper] (default: the points' bounding
         box): a list, per point, of its corners as a (k, 2) array, counter-clockwise (empty when the
@@ -891,32 +906,34 @@ class Voronoi(_Incremental):
         Unbounded cells end on the box's sides. The corners are rounded; which Delaunay neighbours
         bound each cell is exact (hullkit.Delaunay.voronoi)."""
         if self.ndim != 2:
-            _not_supported("clipped_cells in 3D", "Voronoi")
-        if lower is None or upper is None:
-            if not self.npoints:
-                return []
-            low, high = self.min_bound, self.max_bound
-            pad = _np.where(high > low, 0.0, 1.0)  # a flat box would have no area
-            lower = low - pad if lower is None else lower
-            upper = high + pad if upper is None else upper
-        low, high = (_np.asarray(v, dtype=_np.float64).reshape(-1) for v in (lower, upper))
-        if low.shape != (2,) or high.shape != (2,) or not (_np.isfinite(low).all() and _np.isfinite(high).all()) \
-                or not (low < high).all():
-            raise HullkitError(f"the box needs finite lower < upper, each of 2 coordinates; got {low.tolist()}, {high.tolist()}")
+            _not_supported("clipped_cells in 3D (clipped_volumes has the volumes)", "Voronoi")
+        if not self.npoints:
+            return []
+        low, high = self._box(lower, upper)
         triangulation = delaunay(self.points)
         cells = triangulation.voronoi((low[0], low[1], high[0], high[1]))
         representative = _np.asarray(triangulation.representative)
         return [cells[r] for r in representative.tolist()]
 
-    def clipped_volumes(self, lower=None, upper=None):
-        """(n,) float64: the area of each point's cell inside the box [lower, upper] (2D; see
-        clipped_cells): finite for every cell, 0 for a cell that misses the box."""
-        areas = _np.zeros(self.npoints)
-        for i, corners in enumerate(self.clipped_cells(lower, upper)):
-            if len(corners) >= 3:
-                x, y = corners[:, 0] - corners[0, 0], corners[:, 1] - corners[0, 1]
-                areas[i] = 0.5 * float((x[:-1] * y[1:] - x[1:] * y[:-1]).sum())
-        return areas
+    def clipped_volumes(self, lower=None, upper=None, threads=0):
+        """(n,) float64: the area (2D) or volume (3D) of each point's cell inside the box [lower,
+        upper] (default: the points' bounding box): finite for every cell; a repeated point gets its
+        first's. 2D: from clipped_cells (0 for a cell that misses the box). 3D: every point must lie
+        in the box (sides included); each cell is the box's halfspaces and the bisectors with its
+        Delaunay neighbours, intersected through the exact hull of their dual points (as
+        HalfspaceIntersection), on ``threads`` threads (0: every core; the same bits for any)."""
+        if self.ndim == 2:
+            areas = _np.zeros(self.npoints)
+            for i, corners in enumerate(self.clipped_cells(lower, upper)):
+                if len(corners) >= 3:
+                    x, y = corners[:, 0] - corners[0, 0], corners[:, 1] - corners[0, 1]
+                    areas[i] = 0.5 * float((x[:-1] * y[1:] - x[1:] * y[:-1]).sum())
+            return areas
+        if self.dimension != 3:
+            _not_supported("clipped_volumes of points that do not span space", "Voronoi")
+        low, high = self._box(lower, upper)
+        with _translated():
+            return delaunay3(self.points)._core.clipped_volumes(low, high, _threads(threads))
 
     def __repr__(self):
         return (f"hullkit.spatial.Voronoi(npoints={self.npoints}, ndim={self.ndim}, dimension={self.dimension}, "

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <charconv>
 #include <cmath>
@@ -1080,6 +1081,129 @@ public:
         return located_tuple<4>(std::move(found.tetrahedron), found, barycentric, nearest);
     }
 
+    /// Each point's Voronoi cell cut to the box [low, high] (3 each; every point in it, sides
+    /// included): its volume, (n,) float64 (a repeated point's is its representative's). The cell
+    /// is the box's six halfspaces and the halfspaces on the point's side of the bisector planes
+    /// with its Delaunay neighbours; their polar dual about a point strictly inside the cell and the
+    /// box (the point itself unless it is on the box) is hulled exactly (hullkit::hull on
+    /// the rounded dual points, as hullkit.spatial.HalfspaceIntersection does), each dual face is a
+    /// corner, and the volume is that of the exact hull of the corners. On `threads` threads, each
+    /// cell's volume computed alone (the same bits for any count).
+    py::array_t<double> clipped_volumes(const Points& low, const Points& high, unsigned threads) const {
+        if (low.ndim() != 1 || low.shape(0) != 3 || high.ndim() != 1 || high.shape(0) != 3)
+            throw std::invalid_argument("the box needs lower and upper corners of 3 coordinates");
+        const double* lo = low.data();
+        const double* hi = high.data();
+        const std::size_t n = static_cast<std::size_t>(points_.shape(0));
+        const double* xyz = points_.data();
+        for (int a = 0; a < 3; ++a) {
+            if (!(std::isfinite(lo[a]) && std::isfinite(hi[a]) && lo[a] < hi[a]))
+                throw std::invalid_argument("the box needs finite lower < upper on every axis");
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (int a = 0; a < 3; ++a) {
+                if (!(xyz[3 * i + a] >= lo[a] && xyz[3 * i + a] <= hi[a]))
+                    throw CoreError("point " + std::to_string(i) + " is outside the box", static_cast<std::int64_t>(i));
+            }
+        }
+        std::atomic<std::int64_t> failed{-1};
+        std::vector<double> volume(n, 0.0);
+        const hullkit::Delaunay3& r = result_;
+        if (r.dimension != 3) throw std::invalid_argument("clipped volumes need points that span space");
+        // Each point's Delaunay neighbours: both ends of every tetrahedron edge, sorted and unique.
+        std::vector<std::vector<std::uint32_t>> neighbours(n);
+        const std::size_t tets = r.tetrahedra.size() / 4;
+        for (std::size_t t = 0; t < tets; ++t) {
+            const std::uint32_t* c = &r.tetrahedra[4 * t];
+            for (int i = 0; i < 4; ++i) {
+                for (int j = 0; j < 4; ++j) {
+                    if (i != j) neighbours[c[i]].push_back(c[j]);
+                }
+            }
+        }
+        {
+            py::gil_scoped_release unlocked;
+            auto cells = [&](std::size_t begin, std::size_t end) {
+                std::vector<double> dual, corners;
+                hullkit::HullOptions options;
+                options.threads = 1;
+                for (std::size_t i = begin; i < end; ++i) {
+                    if (r.representative[i] != i) continue;
+                    std::vector<std::uint32_t>& near = neighbours[i];
+                    std::sort(near.begin(), near.end());
+                    near.erase(std::unique(near.begin(), near.end()), near.end());
+                    const double* site = xyz + 3 * i;
+                    // The dual's centre p: the point itself, or, for a point on the box's boundary, a
+                    // point a quarter of the way to its nearest neighbour's bisector, towards the
+                    // box's centre (strictly inside both the cell and the box).
+                    double p[3] = {site[0], site[1], site[2]};
+                    bool on_box = false;
+                    for (int a = 0; a < 3; ++a) on_box = on_box || site[a] == lo[a] || site[a] == hi[a];
+                    if (on_box) {
+                        double nearest = std::numeric_limits<double>::infinity();
+                        for (std::uint32_t q : near) {
+                            const double* o = xyz + 3 * q;
+                            nearest = std::min(nearest, std::hypot(o[0] - site[0], o[1] - site[1], o[2] - site[2]));
+                        }
+                        double toward[3], length = 0;
+                        for (int a = 0; a < 3; ++a) toward[a] = (lo[a] / 2 + hi[a] / 2) - site[a], length += toward[a] * toward[a];
+                        length = std::sqrt(length);
+                        const double step = std::min(nearest / 8, length / 2) / length;
+                        for (int a = 0; a < 3; ++a) p[a] = site[a] + toward[a] * step;
+                    }
+                    // Halfspaces a . x <= b, shifted to p: a . y <= b - a . p = c, which must be > 0;
+                    // their dual points a / c.
+                    dual.clear();
+                    bool inside = true;
+                    auto add = [&](double ax, double ay, double az, double c) {
+                        inside = inside && c > 0 && std::isfinite(1 / c);
+                        dual.insert(dual.end(), {ax / c, ay / c, az / c});
+                    };
+                    for (std::uint32_t q : near) {
+                        const double* o = xyz + 3 * q;
+                        // (o - s) . x <= (|o|^2 - |s|^2) / 2, at p: (o - s) . (m - p) with m the midpoint.
+                        const double d[3] = {o[0] - site[0], o[1] - site[1], o[2] - site[2]};
+                        const double m[3] = {site[0] + d[0] / 2 - p[0], site[1] + d[1] / 2 - p[1], site[2] + d[2] / 2 - p[2]};
+                        add(d[0], d[1], d[2], d[0] * m[0] + d[1] * m[1] + d[2] * m[2]);  // the bisector
+                    }
+                    for (int a = 0; a < 3; ++a) {
+                        double e[3] = {0, 0, 0};
+                        e[a] = 1;
+                        add(e[0], e[1], e[2], hi[a] - p[a]);
+                        e[a] = -1;
+                        add(e[0], e[1], e[2], p[a] - lo[a]);
+                    }
+                    if (!inside) {  // the box too thin around the point for floating point
+                        failed = static_cast<std::int64_t>(i);
+                        continue;
+                    }
+                    const hullkit::Hull h = hullkit::hull(hullkit::PointSpan(dual.data(), dual.size() / 3), options);
+                    if (h.dimension != 3) continue;  // (cannot happen: the box alone bounds the cell)
+                    corners.clear();
+                    for (std::size_t f = 0; f < h.triangles.size() / 3; ++f) {
+                        const double* a = &dual[3 * h.triangles[3 * f]];
+                        const double* b = &dual[3 * h.triangles[3 * f + 1]];
+                        const double* c = &dual[3 * h.triangles[3 * f + 2]];
+                        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+                        const double nx = u[1] * v[2] - u[2] * v[1], ny = u[2] * v[0] - u[0] * v[2], nz = u[0] * v[1] - u[1] * v[0];
+                        const double offset = nx * a[0] + ny * a[1] + nz * a[2];  // > 0: the origin is inside
+                        corners.insert(corners.end(), {p[0] + nx / offset, p[1] + ny / offset, p[2] + nz / offset});
+                    }
+                    volume[i] = hullkit::hull(hullkit::PointSpan(corners.data(), corners.size() / 3), options).volume;
+                }
+            };
+            const std::size_t parts = n < 256 ? 1 : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, threads ? threads : 64);
+            JoinedThreads workers;
+            for (std::size_t k = 1; k < parts; ++k) workers.threads.emplace_back(cells, n * k / parts, n * (k + 1) / parts);
+            cells(0, n / parts);
+        }
+        if (failed >= 0)
+            throw CoreError("point " + std::to_string(failed.load()) + " is too close to the box's side for its cell to be cut",
+                            failed.load());
+        for (std::size_t i = 0; i < n; ++i) volume[i] = volume[r.representative[i]];
+        return owned(std::move(volume));
+    }
+
     /// Linear interpolation of (n, k) values at (q, 3) queries: (simplex int32 (q,), values (q, k),
     /// NaN outside the hull).
     py::tuple interpolate(const Points& queries, const Points& values, unsigned threads) const {
@@ -1404,6 +1528,7 @@ PYBIND11_MODULE(_core, m) {
         .def("locate", &Tetrahedralization::locate, py::arg("queries"), py::arg("barycentric") = false,
              py::arg("nearest") = false, py::arg("threads") = 0u)
         .def("voronoi", &Tetrahedralization::voronoi)
+        .def("clipped_volumes", &Tetrahedralization::clipped_volumes)
         .def("interpolate", &Tetrahedralization::interpolate);
 
     py::class_<Checker>(m, "RouteChecker")

@@ -371,5 +371,29 @@ def test_clipped_cells_tile_the_box():
     assert vor.clipped_volumes()[distinct].sum() == pytest.approx(np.prod(np.ptp(points, axis=0)), rel=1e-12)
     with pytest.raises(HullkitError, match="lower < upper"):
         vor.clipped_cells([0, 0], [1, 0])
-    with pytest.raises(HullkitError, match="clipped_cells in 3D is not supported"):
+    with pytest.raises(HullkitError, match=r"clipped_cells in 3D \(clipped_volumes has the volumes\) is not supported"):
         Voronoi(rng.random((30, 3))).clipped_cells()
+
+
+def test_clipped_volumes_in_3d_fill_the_box():
+    rng = np.random.default_rng(81)
+    points = rng.random((400, 3))
+    points[:4] = [[0, 0.5, 0.5], [1, 1, 1], [0.25, 0, 0.75], [0.5, 0.5, 1]]  # on the box's sides and a corner
+    points = np.vstack([points, points[5:7]])  # repeats
+    vor = Voronoi(points)
+    volumes = vor.clipped_volumes([0, 0, 0], [1, 1, 1])
+    assert volumes.shape == (402,) and (volumes[:400] > 0).all()
+    assert volumes[:400].sum() == pytest.approx(1.0, rel=1e-10)  # the cells tile the box
+    assert np.array_equal(volumes[400:], volumes[5:7])
+    # A bounded cell inside the box keeps its volume.
+    inside = [i for i in range(400) if np.isfinite(vor.volumes[i])
+              and all(((vor.vertices[v] > 0) & (vor.vertices[v] < 1)).all() for v in vor.regions[vor.point_region[i]])]
+    assert len(inside) > 20
+    np.testing.assert_allclose(volumes[inside], vor.volumes[inside], rtol=1e-9)
+    # The same bits for any number of threads; the default box is the bounding box.
+    assert np.array_equal(vor.clipped_volumes([0, 0, 0], [1, 1, 1], threads=1), volumes)
+    assert vor.clipped_volumes()[:400].sum() == pytest.approx(np.prod(np.ptp(points, axis=0)), rel=1e-10)
+    with pytest.raises(HullkitError, match="point 1 is outside the box"):
+        vor.clipped_volumes([0, 0, 0], [0.99, 1, 1])
+    with pytest.raises(HullkitError, match="lower < upper"):
+        vor.clipped_volumes([0, 0, 0], [1, 1, 0])
