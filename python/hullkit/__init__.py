@@ -3,8 +3,9 @@ swept traverses, from hullkit's C++ core.
 
 Every decision is made by exact predicates, so flat, collinear, repeated and nearly degenerate
 inputs get an answer rather than an error. ``hullkit.spatial`` offers scipy.spatial's
-``ConvexHull`` and ``Delaunay`` on the same core; ``hullkit.dask`` spreads hulls and route checks
-over a Dask cluster.
+``ConvexHull``, ``Delaunay``, ``Voronoi`` and ``HalfspaceIntersection`` on the same core,
+``hullkit.interpolate`` scipy.interpolate's triangulation interpolators and ``griddata``;
+``hullkit.dask`` spreads hulls, route checks and interpolation over a Dask cluster.
 """
 import json as _json
 import os as _os
