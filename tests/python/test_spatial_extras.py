@@ -413,3 +413,57 @@ def test_qc_lists_the_boundary_points_that_are_not_vertices(ndim):
     # The repeated corners are on the boundary and their nearest corner is the point they repeat.
     rows = {int(p): int(v) for p, _, v in hull.coplanar}
     assert np.array_equal(points[rows[len(points) - 2]], points[len(points) - 2])
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_furthest_site_on_degenerate_integer_clouds(seed):
+    """Small integer clouds (many cocircular, collinear and repeated points): the furthest-site
+    triangles tile the hull, every circumcircle holds every point (exact), and every hull corner is
+    used; cocircular neighbours share one Voronoi vertex."""
+    rng = np.random.default_rng(200 + seed)
+    points = rng.integers(-3, 4, size=(rng.integers(4, 40), 2)).astype(float)
+    hull = ConvexHull(points)
+    if hull.dimension < 2:
+        return
+    tri = Delaunay(points, furthest_site=True)
+    corners = set(hull.vertices.tolist())
+    assert set(tri.simplices.ravel().tolist()) == corners
+    area = sum(0.5 * float(np.cross(points[b] - points[a], points[c] - points[a])) for a, b, c in tri.simplices)
+    assert area == pytest.approx(hull.volume, abs=1e-12)
+    for a, b, c in tri.simplices:
+        assert exact_side(points[[b, a]], points[c]) > 0
+        assert all(incircle_sign(points[a], points[b], points[c], q) >= 0 for q in points)
+    vor = Voronoi(points, furthest_site=True)
+    for (p, q), ridge in zip(vor.ridge_points.tolist(), vor.ridge_vertices):
+        if -1 not in ridge:  # a finite ridge joins two different circles
+            assert not np.allclose(vor.vertices[ridge[0]], vor.vertices[ridge[1]], rtol=0, atol=1e-12)
+    assert len(vor.vertices) == len({tuple(np.round(c, 9)) for c in vor.vertices})
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_halfspace_corners_equal_brute_force_on_integer_planes(seed):
+    """Integer planes around the origin (many meeting in one corner, some repeated or redundant):
+    the corners equal those found by solving every triple of planes and keeping the feasible ones,
+    one per distinct corner."""
+    import itertools
+
+    rng = np.random.default_rng(300 + seed)
+    normals = rng.integers(-2, 3, size=(14, 3)).astype(float)
+    normals = normals[np.abs(normals).sum(axis=1) > 0]
+    halfspaces = np.column_stack([normals, -rng.integers(1, 3, size=len(normals)).astype(float)])
+    halfspaces = np.vstack([halfspaces, np.column_stack([np.vstack([np.eye(3), -np.eye(3)]), -3 * np.ones(6)]), halfspaces[:2]])
+    hs = HalfspaceIntersection(halfspaces, np.zeros(3))
+    brute = set()
+    for rows in itertools.combinations(range(len(halfspaces)), 3):
+        a = halfspaces[list(rows), :3]
+        if abs(np.linalg.det(a)) < 1e-9:
+            continue
+        x = np.linalg.solve(a, -halfspaces[list(rows), 3])
+        if (halfspaces[:, :3] @ x + halfspaces[:, 3] <= 1e-9).all():
+            brute.add(tuple(np.round(x, 9) + 0.0))
+    ours = {tuple(np.round(x, 9) + 0.0) for x in hs.intersections}
+    assert ours == brute and len(hs.intersections) == len(brute)
+    for corner, facet in zip(hs.intersections, hs.dual_facets):
+        values = halfspaces[:, :3] @ corner + halfspaces[:, 3]
+        assert np.abs(values[facet]).max() < 1e-9 and values.max() < 1e-9
+        assert sorted(facet) == sorted(set(facet))
