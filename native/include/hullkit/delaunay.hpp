@@ -89,7 +89,8 @@ struct Delaunay {
 
     /// With DelaunayOptions::merge_cocircular: polygon p is
     /// polygon_vertices[polygon_offsets[p]] ... polygon_vertices[polygon_offsets[p + 1] - 1], in the
-    /// triangles' orientation, starting at its lowest index. Empty otherwise.
+    /// triangles' orientation, starting at its lowest index; the polygons sorted as sequences of
+    /// indices (lexicographically, a prefix first), whichever path built them. Empty otherwise.
     std::vector<std::uint32_t> polygon_offsets;
     std::vector<std::uint32_t> polygon_vertices;
 
