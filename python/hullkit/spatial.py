@@ -53,7 +53,8 @@ again from everything added so far: the result is exactly that of one call with 
 ``qhull_options``: the options that steer Qhull's precision handling or speed (Qt, QJ, Qbb, QbB,
 Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact; Qc is accepted
 by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
-``coplanar``), Fv by Voronoi, QGn and QG-n by ConvexHull (``good``). Any other option raises
+``coplanar``), Fv by Voronoi; ConvexHull takes QGn and QG-n (``good``), Qc (``coplanar``: the
+points exactly on the boundary that are not vertices) and Qi (the points inside). Any other option raises
 HullkitError naming it; so do ``furthest_site=True`` in 3D and more than 3 dimensions.
 ``furthest_site=True`` in 2D (Delaunay, Voronoi): the furthest-site triangulation of the hull's
 corners (every circumcircle holds every point) and its diagram, exactly (Lawson's flips with the
@@ -105,6 +106,7 @@ _PER_CLASS = {
     # Coplanar points: Delaunay lists its repeats always; ConvexHull fills `coplanar` with them.
     "Qc": ("ConvexHull", "Delaunay", "Voronoi", "HalfspaceIntersection"),
     "Fv": ("Voronoi",),  # Voronoi ridges: hullkit's ridges are always listed
+    "Qi": ("ConvexHull",),  # interior points in `coplanar`, with their nearest facet
 }
 _GOOD = _re.compile(r"QG(-?)([0-9]+)")
 
@@ -183,7 +185,8 @@ class ConvexHull(_Incremental):
 
     Attributes (scipy's): points, vertices, simplices, neighbors, equations, coplanar (with the
     option Qc: the points exactly on the boundary that are not vertices, each with a facet whose
-    line or plane holds it and that facet's nearest corner; empty without), good (with the option
+    line or plane holds it and that facet's nearest corner; with Qi the points strictly inside,
+    each with its nearest facet; empty without either), good (with the option
     QGn: None without), volume, area,
     npoints, ndim, min_bound, max_bound; and dimension. Methods: add_points, close
     (``incremental=True``).
@@ -209,6 +212,7 @@ class ConvexHull(_Incremental):
     def __init__(self, points, incremental=False, qhull_options=None):
         self._good_option, options = _parsed_options(qhull_options, "ConvexHull")
         self._keep_coplanar = options is not None and "Qc" in options
+        self._keep_interior = options is not None and "Qi" in options
         self._start(incremental)
         self._build(_checked_points(points, "ConvexHull", "a hull"))
 
@@ -238,13 +242,15 @@ class ConvexHull(_Incremental):
                 sides = _core.facet_sides(array, _np.ascontiguousarray(self.simplices, dtype=_np.uint32),
                                           array[seen_from: seen_from + 1])[0]
             self.good = sides > 0 if visible else sides <= 0
-        if self._keep_coplanar:
+        if self._keep_coplanar or self._keep_interior:
             self.coplanar = self._boundary_points()
 
     def _boundary_points(self):
         """Qc: the points on the hull's boundary that are not vertices, exactly (each against every
         facet's line or plane: _core.facet_holding), as rows (point, a facet whose line or plane
-        holds it, that facet's nearest corner)."""
+        holds it, that facet's nearest corner). Qi: the points strictly inside, with the facet whose
+        plane is nearest (the largest signed distance, in floating point: a choice of facet, not a
+        decision about the hull) and its nearest corner. Rows in point order."""
         candidates = _np.ones(self.npoints, dtype=bool)
         candidates[self.vertices] = False
         if self._good_option is not None:
@@ -256,7 +262,16 @@ class ConvexHull(_Incremental):
             facet = _core.facet_holding(self.points, _np.ascontiguousarray(self.simplices, dtype=_np.uint32),
                                         self.points[candidates])
         on = facet >= 0
-        points, facet = candidates[on], facet[on]
+        if self._keep_interior:  # the interior points' nearest facet
+            inside = _np.flatnonzero(~on)
+            normals, offsets = self.equations[:, :-1], self.equations[:, -1]
+            for start in range(0, len(inside), 8192):
+                rows = inside[start: start + 8192]
+                facet[rows] = (self.points[candidates[rows]] @ normals.T + offsets).argmax(axis=1)
+            keep = _np.ones_like(on) if self._keep_coplanar else ~on
+        else:
+            keep = on
+        points, facet = candidates[keep], facet[keep]
         corners = self.simplices[facet]  # (k, ndim)
         distance = _np.linalg.norm(self.points[corners] - self.points[points][:, None, :], axis=2)
         nearest = corners[_np.arange(len(points)), distance.argmin(axis=1)]

@@ -413,6 +413,16 @@ def test_qc_lists_the_boundary_points_that_are_not_vertices(ndim):
     # The repeated corners are on the boundary and their nearest corner is the point they repeat.
     rows = {int(p): int(v) for p, _, v in hull.coplanar}
     assert np.array_equal(points[rows[len(points) - 2]], points[len(points) - 2])
+    # Qi: the points strictly inside, each with its nearest facet (largest signed distance); Qc Qi: both.
+    interior = ConvexHull(points, qhull_options="Qi")
+    inner = set(np.flatnonzero(~on_boundary).tolist())
+    assert set(interior.coplanar[:, 0].tolist()) == inner
+    for point, facet, nearest in interior.coplanar:
+        distances = hull.equations[:, :-1] @ points[point] + hull.equations[:, -1]
+        assert distances[facet] == distances.max() < 0 and nearest in hull.simplices[facet]
+    both = ConvexHull(points, qhull_options="Qc Qi")
+    assert set(both.coplanar[:, 0].tolist()) == inner | expected
+    assert np.array_equal(both.coplanar[:, 0], np.sort(both.coplanar[:, 0]))
 
 
 @pytest.mark.parametrize("seed", range(6))
