@@ -553,10 +553,8 @@ class _Recipe:
 
     def build(self):
         from . import interpolate as _interpolate
-        points, values, fill_value, rescale, _ = self.inputs
-        if self.cls is _interpolate.NearestNDInterpolator:
-            return self.cls(points, values, rescale=rescale, threads=self.threads)
-        return self.cls(points, values, fill_value=fill_value, rescale=rescale, threads=self.threads, **self.options)
+        # As unpickling does, with this recipe's threads in place of the interpolator's.
+        return _interpolate._rebuild(self.cls, self.inputs[:-1] + (self.threads,), self.options)
 
 
 _built = weakref.WeakKeyDictionary()

@@ -8,7 +8,6 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <charconv>
 #include <cmath>
@@ -530,6 +529,48 @@ py::list nested_lists(const py::array_t<std::int64_t, py::array::c_style>& flat,
     return out;
 }
 
+/// Pairs the half-edges that join the same two points: for half-edges h = 0 .. count - 1 with ends
+/// lower(h) < n and higher(h) (the smaller and larger point index), calls pair(h, g) once for each
+/// two with equal ends (a surface's twins; a half-edge without a partner, on the rim of an open
+/// surface, is left alone). A counting sort by the lower end (in ascending half-edge order), then
+/// each end's few by the higher (stable): partners are then neighbours, as in a sort by (lower,
+/// higher, half-edge). A radix sort of 64-bit keys took 1.1 s for 2e6 triangles, mostly in its five
+/// passes over 6e6 keys; this takes two.
+template <class Lower, class Higher, class Pair>
+void pair_half_edges(std::size_t n, std::size_t count, Lower lower, Higher higher, Pair pair) {
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (std::size_t h = 0; h < count; ++h) ++start[lower(h) + 1];
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::unique_ptr<std::uint32_t[]> order(new std::uint32_t[count]);  // every slot is written below
+    {
+        std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+        for (std::size_t h = 0; h < count; ++h) order[next[lower(h)]++] = static_cast<std::uint32_t>(h);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t* first = order.get() + start[i];
+        std::uint32_t* last = order.get() + start[i + 1];
+        if (last - first > 32) {  // a point of high degree (a cone's apex, a fan's centre)
+            std::stable_sort(first, last, [&](std::uint32_t a, std::uint32_t b) { return higher(a) < higher(b); });
+        } else {
+            for (std::uint32_t* a = first + 1; a < last; ++a) {  // insertion sort: a handful each
+                const std::uint32_t h = *a;
+                const auto key = higher(h);
+                std::uint32_t* b = a;
+                for (; b > first && higher(b[-1]) > key; --b) *b = b[-1];
+                *b = h;
+            }
+        }
+        for (std::uint32_t* a = first; a + 1 < last;) {
+            if (higher(a[0]) != higher(a[1])) {
+                ++a;
+                continue;
+            }
+            pair(a[0], a[1]);
+            a += 2;
+        }
+    }
+}
+
 /// scipy's ConvexHull extras for triangles (m, 3) of a closed (or open: -1 across the rim)
 /// oriented surface: neighbors[t][j], the triangle across the edge opposite corner j, found by
 /// matching each directed edge with its reverse through per-vertex lists (linear time); and
@@ -553,46 +594,13 @@ py::tuple surface_extras(const Points& points, const py::array_t<std::uint32_t, 
         JoinedThreads planes;
         // (The corners were checked above: plane_equations cannot throw here.)
         planes.threads.emplace_back([&] { equations = hullkit::plane_equations(hullkit::PointSpan(xyz, n), v, m); });
-        // The half-edges grouped by their lower corner (a counting sort: one pass to count, one
-        // to place, in ascending half-edge order), then within each corner's few by the higher
-        // corner (stable): a half-edge and its reverse are then neighbours in the order, as in a
-        // sort by (lower, higher, half-edge). A radix sort of 64-bit keys took 1.1 s for 2e6
-        // triangles, mostly in its five passes over 6e6 keys; this takes two.
         auto lower = [v](std::size_t h) { return std::min(v[h], v[h - h % 3 + (h % 3 + 1) % 3]); };
         auto higher = [v](std::size_t h) { return std::max(v[h], v[h - h % 3 + (h % 3 + 1) % 3]); };
-        std::vector<std::uint32_t> start(n + 1, 0);
-        for (std::size_t h = 0; h < 3 * m; ++h) ++start[lower(h) + 1];
-        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-        std::unique_ptr<std::uint32_t[]> order(new std::uint32_t[3 * m]);  // every slot is written below
-        std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-        for (std::size_t h = 0; h < 3 * m; ++h) order[next[lower(h)]++] = static_cast<std::uint32_t>(h);
-        next = {};
-        for (std::size_t i = 0; i < n; ++i) {
-            std::uint32_t* first = order.get() + start[i];
-            std::uint32_t* last = order.get() + start[i + 1];
-            if (last - first > 32) {  // a corner of high degree (a cone's apex)
-                std::stable_sort(first, last, [&](std::uint32_t a, std::uint32_t b) { return higher(a) < higher(b); });
-            } else {
-                for (std::uint32_t* a = first + 1; a < last; ++a) {  // insertion sort: a handful each
-                    const std::uint32_t h = *a;
-                    const std::uint32_t key = higher(h);
-                    std::uint32_t* b = a;
-                    for (; b > first && higher(b[-1]) > key; --b) *b = b[-1];
-                    *b = h;
-                }
-            }
-            for (std::uint32_t* a = first; a + 1 < last;) {
-                if (higher(a[0]) != higher(a[1])) {
-                    ++a;  // an edge on the rim of an open surface: no neighbour
-                    continue;
-                }
-                const std::uint32_t h = a[0], g = a[1];
-                // Across edge h (corners k, k + 1 of its triangle) lies g's triangle: opposite corner k + 2.
-                neighbors[h - h % 3 + (h % 3 + 2) % 3] = static_cast<std::int32_t>(g / 3);
-                neighbors[g - g % 3 + (g % 3 + 2) % 3] = static_cast<std::int32_t>(h / 3);
-                a += 2;
-            }
-        }
+        pair_half_edges(n, 3 * m, lower, higher, [&](std::uint32_t h, std::uint32_t g) {
+            // Across edge h (corners k, k + 1 of its triangle) lies g's triangle: opposite corner k + 2.
+            neighbors[h - h % 3 + (h % 3 + 2) % 3] = static_cast<std::int32_t>(g / 3);
+            neighbors[g - g % 3 + (g % 3 + 2) % 3] = static_cast<std::int32_t>(h / 3);
+        });
     }
     const auto count = static_cast<py::ssize_t>(m);
     return py::make_tuple(owned(std::move(neighbors), {count, 3}), owned(std::move(equations), {count, 4}));
@@ -890,32 +898,12 @@ public:
                 circle_centre(xy + 2 * corner[first], xy + 2 * corner[first + size / 3], xy + 2 * corner[first + 2 * size / 3],
                               &vertices[2 * p]);
             }
-            // Twins: the half-edges grouped by their lower end (a counting sort), matched within.
+            // Twins: the half-edges with the same two ends.
             auto lower = [&](std::size_t e) { return std::min(corner[e], corner[following[e]]); };
             auto higher = [&](std::size_t e) { return std::max(corner[e], corner[following[e]]); };
-            std::vector<std::uint32_t> start(n + 1, 0);
-            for (std::size_t e = 0; e < edges; ++e) ++start[lower(e) + 1];
-            for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-            std::vector<std::uint32_t> order(edges), next(start.begin(), start.end() - 1);
-            for (std::size_t e = 0; e < edges; ++e) order[next[lower(e)]++] = static_cast<std::uint32_t>(e);
-            for (std::size_t i = 0; i < n; ++i) {
-                std::uint32_t* group = order.data() + start[i];
-                std::uint32_t* end = order.data() + start[i + 1];
-                if (end - group > 16) {  // a point of high degree (the centre of a circle of points)
-                    std::sort(group, end, [&](std::uint32_t u, std::uint32_t v) { return higher(u) < higher(v); });
-                } else {
-                    for (std::uint32_t* u = group + 1; u < end; ++u) {  // insertion sort: a handful each
-                        const std::uint32_t h = *u;
-                        std::uint32_t* v = u;
-                        for (; v > group && higher(v[-1]) > higher(h); --v) *v = v[-1];
-                        *v = h;
-                    }
-                }
-                for (std::uint32_t* u = group; u + 1 < end; ++u) {
-                    if (higher(u[0]) == higher(u[1]))
-                        twin[u[0]] = static_cast<std::int32_t>(u[1]), twin[u[1]] = static_cast<std::int32_t>(u[0]), ++u;
-                }
-            }
+            pair_half_edges(n, edges, lower, higher, [&](std::uint32_t e, std::uint32_t f) {
+                twin[e] = static_cast<std::int32_t>(f), twin[f] = static_cast<std::int32_t>(e);
+            });
             ridge_points.reserve(edges + 2);
             ridge_edge.reserve(edges / 2 + 1);
             cells.reserve(edges + n);
@@ -1106,7 +1094,7 @@ public:
                     throw CoreError("point " + std::to_string(i) + " is outside the box", static_cast<std::int64_t>(i));
             }
         }
-        std::atomic<std::int64_t> failed{-1};
+        std::vector<char> failed(n, 0);  // per point, so that the error names the lowest, whatever the threads
         std::vector<double> volume(n, 0.0);
         const hullkit::Delaunay3& r = result_;
         if (r.dimension != 3) throw std::invalid_argument("clipped volumes need points that span space");
@@ -1174,7 +1162,7 @@ public:
                         add(e[0], e[1], e[2], p[a] - lo[a]);
                     }
                     if (!inside) {  // the box too thin around the point for floating point
-                        failed = static_cast<std::int64_t>(i);
+                        failed[i] = 1;
                         continue;
                     }
                     const hullkit::Hull h = hullkit::hull(hullkit::PointSpan(dual.data(), dual.size() / 3), options);
@@ -1197,9 +1185,9 @@ public:
             for (std::size_t k = 1; k < parts; ++k) workers.threads.emplace_back(cells, n * k / parts, n * (k + 1) / parts);
             cells(0, n / parts);
         }
-        if (failed >= 0)
-            throw CoreError("point " + std::to_string(failed.load()) + " is too close to the box's side for its cell to be cut",
-                            failed.load());
+        const auto bad = static_cast<std::int64_t>(std::find(failed.begin(), failed.end(), 1) - failed.begin());
+        if (bad < static_cast<std::int64_t>(n))
+            throw CoreError("point " + std::to_string(bad) + " is too close to the box's side for its cell to be cut", bad);
         for (std::size_t i = 0; i < n; ++i) volume[i] = volume[r.representative[i]];
         return owned(std::move(volume));
     }
