@@ -2,10 +2,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <vector>
 
 #include "hullkit/delaunay.hpp"
+#include "hullkit/predicates.hpp"
 
 namespace hullkit {
 namespace delaunay_detail {
@@ -43,6 +46,21 @@ inline double coordinate_span(PointSpan2 p) {
         ymin = std::min(ymin, p[i][1]), ymax = std::max(ymax, p[i][1]);
     }
     return std::max(xmax - xmin, ymax - ymin);
+}
+
+/// The power of two delaunay() scales these points by before its exact tests (0 when they are in
+/// incircle's range, and for points delaunay() refuses: non-finite, or spanning too much).
+inline int incircle_exponent(PointSpan2 p) {
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 2 * p.count; ++i) {
+        const double m = std::fabs(p.xy[i]);
+        if (!(m <= std::numeric_limits<double>::max())) return 0;
+        largest = std::max(largest, m);
+        if (m != 0.0) smallest = std::min(smallest, m);
+    }
+    int exponent = 0;
+    if (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent)) return 0;
+    return exponent;
 }
 
 /// The incremental algorithm's working mesh: counter-clockwise triangles (3 vertices each) with

@@ -59,23 +59,7 @@ void for_each_neighbour(const Delaunay& d, const std::vector<std::int32_t>& outg
     }
 }
 
-/// The power of two delaunay() scales these points by before its exact tests (0 when they are in
-/// range): distances are compared on the same scaled coordinates, where squares neither underflow
-/// nor overflow. (Points outside every scale were refused by delaunay(); 0 then.)
-int scale_exponent(PointSpan2 p) {
-    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < p.count; ++i) {
-        for (int axis = 0; axis < 2; ++axis) {
-            const double m = std::fabs(p[i][axis]);
-            if (!(m <= std::numeric_limits<double>::max())) return 0;
-            largest = std::max(largest, m);
-            if (m != 0.0) smallest = std::min(smallest, m);
-        }
-    }
-    int exponent = 0;
-    if (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent)) return 0;
-    return exponent;
-}
+int scale_exponent(PointSpan2 p) { return delaunay_detail::incircle_exponent(p); }
 
 /// Greedy walk to the nearest point, then the lowest index among the exactly equidistant ones
 /// (they lie on one empty circle, so they are connected by Delaunay edges). Coordinates are

@@ -1,0 +1,134 @@
+// hullkit: constrained Delaunay triangulation of planar straight-line graphs and of polygons with
+// holes, exact.
+//
+// A constrained Delaunay triangulation (CDT) keeps given segments as edges and is otherwise as
+// Delaunay as the segments allow: no triangle's circumcircle holds a point that is visible from the
+// triangle's inside (visibility is blocked by segments). Built here in three steps, every decision
+// an exact orient2d or incircle (predicates.hpp) on the coordinates scaled by one power of two as
+// delaunay() scales them:
+//  1. delaunay() triangulates the points (duplicates merged: the representative map).
+//  2. Each segment is inserted by walking from one end to the other over the triangles it crosses.
+//     A point lying exactly on the segment splits it there (the pieces are inserted in turn). When
+//     nothing blocks the way, the crossed triangles are removed and the two polygons either side are
+//     re-triangulated by the recursive empty-circle rule for pseudo-polygons (Anglada, "An improved
+//     incremental algorithm for constructing restricted Delaunay triangulations", Computers &
+//     Graphics 21, 1997): the result is again a CDT.
+//  3. A segment that crosses an earlier segment (self-intersecting rings, overlapping outlines):
+//     the crossing point is computed exactly (rational, from the exact orientations) and rounded to
+//     the nearest double in each coordinate (ties to even), and is inserted as a new point (a point
+//     of a CDT inserted by Bowyer-Watson, whose cavity never crosses a segment). Both segments
+//     become chains through it, and the pieces are inserted again, so a piece that now crosses
+//     another segment is split the same way; this repeats until no piece crosses another (iterated
+//     rounding of crossings; a simpler rule than Hobby's snap rounding, with the same aim: an exact
+//     CDT of the rounded graph). A rounded point that lands exactly on another segment splits it;
+//     one that lands on an existing point is that point. Every added point is within half a unit in
+//     the last place (per coordinate) of an exact crossing of two pieces.
+// The triangulation is therefore a valid, exact CDT of the rounded graph: no triangle has zero area,
+// no segment is crossed, every edge that is not on a segment is locally Delaunay.
+//
+// Output in delaunator's form, like delaunay(): triangles clockwise with y up, `halfedges` with -1
+// where no returned triangle is across, and per half-edge a flag saying it lies on a segment.
+// The same input gives the same arrays every time, for any thread count (the steps are one fixed
+// sequence; only delaunay() may use a second thread, and it returns the same bits either way).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hullkit/delaunay.hpp"
+
+namespace hullkit {
+
+/// Which points a set of rings encloses. Winding number w of a point: how many times the rings go
+/// round it counter-clockwise (y up) minus clockwise.
+enum class FillRule {
+    EvenOdd,  ///< inside where w is odd: holes are holes whatever their orientation (earcut, SVG default)
+    NonZero,  ///< inside where w is not 0: the rings' orientation matters (holes wound the other way)
+};
+
+struct ConstrainedOptions {
+    /// Threads for step 1 (delaunay()): 0 lets a second thread help with large inputs, 1 keeps
+    /// everything on the calling thread. The result is the same.
+    unsigned threads = 0;
+    /// Stop with an error once this many points have been added at crossings (0: no overall cap).
+    /// Independently, two input segments whose pieces have crossed 16 times are an error naming
+    /// them: iterated rounding settles after one or two points per crossing pair on every input
+    /// hullkit has met, and the guard turns a pathological one into an error instead of a long run.
+    std::size_t max_added_points = 0;
+};
+
+struct PolygonOptions {
+    FillRule fill = FillRule::EvenOdd;
+    unsigned threads = 0;
+    std::size_t max_added_points = 0;  ///< as ConstrainedOptions::max_added_points
+};
+
+/// A constrained Delaunay triangulation. On failure `error` says what is wrong, naming the point
+/// (`error_point`) or the segment (`error_segment`) where one is to blame, and the arrays are empty.
+struct ConstrainedDelaunay {
+    /// As Delaunay::dimension: 2 when the points span the plane; 1, 0, -1 for collinear, one, no
+    /// distinct points (then there are no triangles; the segments lie on the line).
+    int dimension = -1;
+    /// The input points followed by the points added at crossings, x y each, in the input's units.
+    /// Triangles index into this array.
+    std::vector<double> coords;
+    std::size_t input_count = 0;  ///< input points; coords holds input_count + added points
+    std::vector<std::uint32_t> triangles;  ///< 3 indices per triangle, clockwise with y up
+    std::vector<std::int32_t> halfedges;   ///< per half-edge: the opposite half-edge, -1 if none
+    /// Per half-edge: 1 when it lies on a segment (a constraint, a ring edge, or a piece of one).
+    std::vector<std::uint8_t> constrained;
+    /// Per input point: itself, or the lowest index with exactly the same coordinates.
+    std::vector<std::uint32_t> representative;
+    std::size_t duplicate_count = 0;
+    std::size_t crossing_count = 0;  ///< crossings of two segments resolved by adding or reusing a point
+
+    std::string error;
+    std::int64_t error_point = -1;
+    std::int64_t error_segment = -1;
+
+    bool ok() const { return error.empty(); }
+    std::size_t triangle_count() const { return triangles.size() / 3; }
+    std::size_t added_count() const { return coords.size() / 2 - input_count; }
+};
+
+/// The CDT of `points` and `segment_count` segments (index pairs, `segments[2k]`, `segments[2k+1]`)
+/// covering the convex hull of the points. Segments between repeated points and repeated segments
+/// are harmless; an index past the points is an error naming the segment. Fails as delaunay() does
+/// on bad points.
+ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t* segments, std::size_t segment_count,
+                                         const ConstrainedOptions& options = {});
+
+/// Triangulates the inside of polygons with holes given as rings, earcut's way: ring 0 is
+/// points [0, ring_starts[0]), ring k is [ring_starts[k - 1], ring_starts[k]), the last runs to the
+/// end (ring_starts are earcut's holeIndices; none means one ring). Rings may be given closed (last
+/// point equal to the first) or open, in any orientation, order and nesting, may touch, overlap or
+/// cross themselves and each other; the inside is decided by `fill`. Only the triangles inside are
+/// returned; half-edges on the boundary of the inside have no opposite (-1) and are constrained.
+/// ring_starts must be increasing and at most the point count (else an error naming the ring).
+ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
+                                        const PolygonOptions& options = {});
+
+/// An exact check of a constrained triangulation, independent of how it was built: every triangle
+/// clockwise with nonzero area (orient2d); no directed edge used twice; `halfedges` (when given,
+/// may be null) pairing exactly the half-edges whose reverse is present; the flags symmetric; every
+/// edge shared by two triangles that is not flagged passes the empty-circle test (incircle); with
+/// `boundary_constrained` every unshared edge is flagged (the boundary of a polygon's inside);
+/// otherwise the unshared edges must form the convex hull of the used points, winding once, with
+/// T = 2n - h - 2 (a triangulation of the hull). Coordinates scaled by a power of two as
+/// delaunay() does.
+struct ConstrainedVerifyReport {
+    bool ok = true;
+    std::vector<std::string> problems;  ///< at most a few dozen, then counted
+    std::size_t problem_count = 0;
+};
+ConstrainedVerifyReport verify_constrained(PointSpan2 coords, const std::uint32_t* triangles, std::size_t triangle_count,
+                                           const std::int32_t* halfedges, const std::uint8_t* constrained,
+                                           bool boundary_constrained);
+
+const char* fill_rule_name(FillRule fill);
+/// "evenodd" or "nonzero"; false (and *out left alone) for anything else.
+bool parse_fill_rule(const std::string& name, FillRule* out);
+
+}  // namespace hullkit
