@@ -216,6 +216,43 @@ export interface Hullkit {
    */
   delaunay(points: ArrayLike<Point2>, options?: DelaunayOptions): DelaunayResult;
   /**
+   * The triangles inside polygons with holes, exactly — earcut's arguments and a constrained
+   * Delaunay triangulation: `coords` flat (x y per vertex, or `dim` numbers per vertex of which the
+   * first two are used), `holeIndices` the vertex index at which each hole (each ring after the
+   * first) starts. Or a GeoJSON Polygon, MultiPolygon or a Feature holding one (no holeIndices).
+   * Rings may be open or closed, in any orientation, order and nesting; they may touch, overlap
+   * and cross: the inside is decided by `fill` ('evenodd', the default, or 'nonzero'). Every ring
+   * edge is an edge of the result (split where a vertex lies on it; where two ring edges cross,
+   * the crossing is computed exactly, rounded to the nearest double and added to `coords`), and
+   * every other edge is as Delaunay as the rings allow. Every decision is an exact orient2d or
+   * incircle: no overlapping or zero-area triangle, nothing dropped, for any input.
+   *
+   * @example
+   * // earcut(coords, holeIndices) becomes:
+   * const { triangles } = hullkit.triangulatePolygon(coords, holeIndices);
+   *
+   * @throws {HullkitError} for a non-finite coordinate (`pointIndex`), holeIndices that decrease or
+   *   pass the vertex count, a GeoJSON value that is not a (Multi)Polygon, or an unknown option.
+   */
+  triangulatePolygon(
+    coords: Float64Array | ArrayLike<number> | GeoJSONPolygonLike,
+    holeIndices?: Uint32Array | ArrayLike<number> | null,
+    options?: PolygonOptions,
+  ): ConstrainedResult;
+  /**
+   * The constrained Delaunay triangulation of points `coords` (x y per point) with segments
+   * `edges` (index pairs, flat): every segment is an edge of the result (split at points that lie
+   * on it; crossing segments meet at their exactly computed crossing rounded to the nearest double,
+   * added to `coords`), and the triangulation covers the convex hull, as Delaunay as the segments
+   * allow. Delaunator + Constrainautor's job in one call, without "constraining edge intersects
+   * point" errors. Repeated points are merged (`representative`), zero-length and repeated
+   * segments are harmless.
+   *
+   * @throws {HullkitError} for a non-finite coordinate (`pointIndex`), an edge index past the points
+   *   (`segmentIndex`), an odd number of edge indices.
+   */
+  constrainedDelaunay(coords: Float64Array | ArrayLike<number>, edges: Uint32Array | ArrayLike<number>, options?: Record<string, never>): ConstrainedResult;
+  /**
    * The index of the input point nearest to (x, y) (exact ties: the lowest index; a duplicate is
    * never returned, its representative is), found by walking `triangulation` from point `start`
    * (default 0; the previous answer is a good start for a moving query). -1 when there are no points.
@@ -273,6 +310,8 @@ export interface Hullkit {
   voronoi(xy: Points2, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
   /** The algorithm names `delaunay` accepts, the default first. */
   readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
+  /** The fill rules triangulatePolygon accepts, the default first: ['evenodd', 'nonzero']. */
+  readonly fillRules: readonly ('evenodd' | 'nonzero')[];
   /**
    * The Delaunay view's gift wrap, recorded by the C++ core: the wrap of
    * `delaunay(xy, {algorithm: 'giftwrap'})` on the points lifted to z = x² + y² (same code, the
@@ -549,6 +588,45 @@ export interface DelaunayResult {
    */
   polygonOffsets?: Uint32Array;
   polygonVertices?: Uint32Array;
+}
+
+/** A GeoJSON Polygon or MultiPolygon, or a Feature holding one (positions [x, y, ...]). */
+export type GeoJSONPolygonLike =
+  | { type: 'Polygon'; coordinates: number[][][] }
+  | { type: 'MultiPolygon'; coordinates: number[][][][] }
+  | { type: 'Feature'; geometry: { type: 'Polygon'; coordinates: number[][][] } | { type: 'MultiPolygon'; coordinates: number[][][][] } };
+
+export interface PolygonOptions {
+  /** Numbers per vertex in flat `coords` (default 2; earcut's `dim`): the first two are x and y. */
+  dim?: number;
+  /** Which points the rings enclose: 'evenodd' (default; holes whatever their orientation) or 'nonzero'. */
+  fill?: 'evenodd' | 'nonzero';
+}
+
+/** What triangulatePolygon and constrainedDelaunay return. */
+export interface ConstrainedResult {
+  /** 2 when the points span the plane; 1, 0, -1 for collinear, one, no distinct points (no triangles). */
+  dimension: 2 | 1 | 0 | -1;
+  /**
+   * Three indices per triangle into the vertices of `coords` (the input vertices, then the added
+   * crossing points), clockwise with y up as delaunator's. A repeated vertex is named by its
+   * representative (the first with the same coordinates).
+   */
+  triangles: Uint32Array;
+  /** Per half-edge, the opposite half-edge, or -1 (on the hull, or on the boundary of a polygon's inside). */
+  halfedges: Int32Array;
+  /** Per half-edge, 1 when it lies on a segment or ring edge (or a piece of one), else 0. */
+  constrained: Uint8Array;
+  /** The input vertices (x y) followed by the points added at crossings. */
+  coords: Float64Array;
+  /** The number of input vertices; `coords.length / 2 - inputCount` were added (`addedCount`). */
+  inputCount: number;
+  addedCount: number;
+  /** Per input vertex, itself or the first vertex with the same coordinates. */
+  representative: Uint32Array;
+  duplicateCount: number;
+  /** Crossings of two segments resolved by adding (or reusing) a point. */
+  crossingCount: number;
 }
 
 export interface LocateOptions {
@@ -943,6 +1021,8 @@ export class HullkitError extends Error {
   pointIndex?: number;
   /** locate and locate3: index of the query to blame (a non-finite or out-of-range coordinate). */
   queryIndex?: number;
+  /** constrainedDelaunay: index of the segment to blame (an index past the points). */
+  segmentIndex?: number;
   /** readPoints / readPoints2d / readMesh: the 1-based line the reader names, when it names one. */
   line?: number;
 }

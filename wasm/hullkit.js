@@ -4,6 +4,7 @@ import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
 import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
+import { constrainedDelaunay, triangulatePolygon, FILL_RULES } from './constrained.js';
 import { checkRoute, RouteChecker } from './route.js';
 
 export { HullkitError };
@@ -44,6 +45,8 @@ export default async function createHullkit() {
     locate: (xy, triangulation, queries, options) => delaunayLocate(core, xy, triangulation, queries, options),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
+    triangulatePolygon: (coords, holeIndices, options) => triangulatePolygon(core, coords, holeIndices, options),
+    constrainedDelaunay: (coords, edges, options) => constrainedDelaunay(core, coords, edges, options),
     delaunay3: (xyz, options) => delaunay3(core, xyz, options),
     verifyDelaunay3: (xyz, tetrahedra, options) => verifyDelaunay3(core, xyz, tetrahedra, options),
     locate3: (xyz, triangulation, queries, options) => locate3(core, xyz, triangulation, queries, options),
@@ -57,6 +60,7 @@ export default async function createHullkit() {
     algorithms: Object.freeze([...ALGORITHMS]),
     traceLimits: Object.freeze({ 'single-pass': TRACE_MAX_POINTS, restart: TRACE_MAX_RESTART, delaunay: DELAUNAY_TRACE_MAX_POINTS }),
     delaunayAlgorithms: Object.freeze([...DELAUNAY_ALGORITHMS]),
+    fillRules: Object.freeze([...FILL_RULES]),
   });
 }
 

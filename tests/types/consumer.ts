@@ -4,8 +4,8 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions,
-  LocateResult, MeshData,
+  ConstrainedResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions,
+  LocateResult, MeshData, PolygonOptions,
   RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells,
 } from 'hullkit';
 
@@ -88,6 +88,15 @@ check(nearest === 3, 'find');
 const cells: VoronoiCells = hullkit.voronoi(xy, delaunay, [-1, -1, 2, 2]);
 check(cells.cellOffsets.length === xy.length / 2 + 1, 'voronoi');
 check(hullkit.delaunay(xy, { algorithm: 'giftwrap', mergeCocircular: true }).polygonOffsets !== undefined, 'polygons');
+
+// constrained triangulation: earcut's arguments, GeoJSON, graphs
+const polygon: ConstrainedResult = hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3], [4], { fill: 'evenodd' });
+check(polygon.triangles.length === 24 && polygon.constrained instanceof Uint8Array && polygon.addedCount === 0, 'triangulatePolygon');
+const polygonOptions: PolygonOptions = { dim: 3, fill: 'nonzero' };
+check(hullkit.triangulatePolygon(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), null, polygonOptions).triangles.length === 3, 'dim 3');
+check(hullkit.triangulatePolygon({ type: 'Polygon', coordinates: [[[0, 0], [1, 0], [0, 1]]] }).coords.length === 6, 'GeoJSON');
+const graph: ConstrainedResult = hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1, 1, 1], [0, 3]);
+check(graph.constrained.reduce((a, b) => a + b, 0) === 2 && hullkit.fillRules[0] === 'evenodd', 'constrainedDelaunay');
 // Point location in it: (0.5, 0.4) is the point 4 itself (a corner: weights 1, 0, 0), (0, 0.5) is on
 // the hull edge from 0 to 2 (as near to 0 as to 2), (2, 2) is outside.
 const locateOptions: LocateOptions = { barycentric: true, nearest: true };

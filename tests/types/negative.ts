@@ -47,3 +47,6 @@ checker.check([[0, 0, 0], [1, 0]]); // error
 checker.dispose(); // error
 checker.deleted = true; // error
 hullkit.RouteChecker(scene); // error
+hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { fill: 'winding' }); // error
+hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { dim: '3' }); // error
+hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1], [0, 1], { threads: 2 }); // error

@@ -1,0 +1,167 @@
+// hullkit.triangulatePolygon and hullkit.constrainedDelaunay through the WebAssembly build, checked
+// exactly (BigInt orientation, area and empty-circle tests, independent of hullkit) and against
+// earcut (npm) on simple polygons: both triangulate the same vertices, so the areas agree exactly.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+
+import earcut from 'earcut';
+import createHullkit, { HullkitError } from '../../wasm/hullkit.js';
+import { exactPoints, orient2d, seededRandom } from './exact.js';
+
+const hullkit = await createHullkit();
+const next = (e) => (e % 3 === 2 ? e - 2 : e + 1);
+
+/** Twice the total area of clockwise triangles over `coords`, exactly (in the common power-of-two units of exactPoints). */
+function twiceArea(coords, triangles) {
+  const p = exactPoints(coords, 2);
+  let sum = 0n;
+  for (let t = 0; t < triangles.length; t += 3) {
+    const [a, b, c] = [p[triangles[t]], p[triangles[t + 1]], p[triangles[t + 2]]];
+    sum -= (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+  return sum;
+}
+
+/** twiceArea for small integer coordinates, in their own units (Number arithmetic is exact there). */
+function twiceAreaOfIntegers(coords, triangles) {
+  let sum = 0;
+  for (let t = 0; t < triangles.length; t += 3) {
+    const [a, b, c] = [0, 1, 2].map((k) => [coords[2 * triangles[t + k]], coords[2 * triangles[t + k] + 1]]);
+    assert.ok([...a, ...b, ...c].every(Number.isInteger) && [...a, ...b, ...c].every((v) => Math.abs(v) < 2 ** 20));
+    sum -= (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+  return sum;
+}
+
+/** Sign of the in-circle determinant: > 0 when d is inside the circle of counter-clockwise a, b, c. */
+function incircle(a, b, c, d) {
+  const rows = [a, b, c].map((p) => [p[0] - d[0], p[1] - d[1]]);
+  const lift = rows.map(([x, y]) => x * x + y * y);
+  const det = lift[0] * (rows[1][0] * rows[2][1] - rows[2][0] * rows[1][1]) -
+    lift[1] * (rows[0][0] * rows[2][1] - rows[2][0] * rows[0][1]) +
+    lift[2] * (rows[0][0] * rows[1][1] - rows[1][0] * rows[0][1]);
+  return det > 0n ? 1 : det < 0n ? -1 : 0;
+}
+
+/** Exact checks of a result: clockwise nonzero triangles, paired half-edges, flags symmetric, unflagged edges locally Delaunay. */
+function checkValid(result, { boundaryConstrained }) {
+  const { triangles, halfedges, constrained, coords } = result;
+  const p = exactPoints(coords, 2);
+  for (let t = 0; t < triangles.length; t += 3) {
+    assert.equal(orient2d(p[triangles[t]], p[triangles[t + 1]], p[triangles[t + 2]]), -1, `triangle ${t / 3} is clockwise with area`);
+  }
+  for (let e = 0; e < triangles.length; e++) {
+    const f = halfedges[e];
+    if (f === -1) {
+      if (boundaryConstrained) assert.equal(constrained[e], 1, `boundary half-edge ${e} lies on a ring`);
+      continue;
+    }
+    assert.equal(halfedges[f], e);
+    assert.equal(triangles[f], triangles[next(e)]);
+    assert.equal(constrained[f], constrained[e]);
+    if (constrained[e]) continue;
+    const [a, b, c] = [triangles[e], triangles[next(e)], triangles[next(next(e))]];
+    const d = triangles[next(next(f))];
+    assert.notEqual(incircle(p[a], p[c], p[b], p[d]), 1, `edge ${a}-${b} is locally Delaunay`);
+  }
+}
+
+/** A star-shaped ring around (cx, cy) with radii in [lo, hi] (counter-clockwise unless reversed). */
+function starRing(n, cx, cy, lo, hi, random, reversed = false) {
+  const out = [];
+  for (let k = 0; k < n; k++) {
+    const angle = (reversed ? -1 : 1) * 2 * Math.PI * (k + 0.5 * random()) / n;
+    const r = lo + (hi - lo) * random();
+    out.push(cx + r * Math.cos(angle), cy + r * Math.sin(angle));
+  }
+  return out;
+}
+
+test('triangulatePolygon: a square with a square hole, as earcut takes it', () => {
+  const coords = [0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3];
+  const result = hullkit.triangulatePolygon(coords, [4]);
+  assert.equal(result.triangles.length, 24);
+  assert.equal(result.addedCount, 0);
+  assert.equal(result.inputCount, 8);
+  checkValid(result, { boundaryConstrained: true });
+  assert.equal(twiceAreaOfIntegers(result.coords, result.triangles), 24);
+  assert.deepEqual(hullkit.fillRules, ['evenodd', 'nonzero']);
+  // nonzero: a hole wound like the outer ring is filled.
+  assert.equal(twiceAreaOfIntegers(coords, hullkit.triangulatePolygon(coords, [4], { fill: 'nonzero' }).triangles), 32);
+  // dim 3 (earcut's third argument): the z coordinates are skipped.
+  const xyz = [];
+  for (let i = 0; i < coords.length; i += 2) xyz.push(coords[i], coords[i + 1], 7);
+  assert.deepEqual(hullkit.triangulatePolygon(xyz, [4], { dim: 3 }).triangles, result.triangles);
+});
+
+test('triangulatePolygon: the same area as earcut on simple polygons with holes', () => {
+  const random = seededRandom(31);
+  for (let trial = 0; trial < 20; trial++) {
+    const coords = starRing(200 + 50 * trial, 0, 0, 8, 10, random);
+    const holes = [];
+    for (const [cx, cy] of [[-3, 0], [3, 0], [0, 3], [0, -3]]) {
+      holes.push(coords.length / 2);
+      coords.push(...starRing(10 + trial, cx, cy, 0.5, 1.2, random, trial % 2 === 1));
+    }
+    const ours = hullkit.triangulatePolygon(coords, holes);
+    checkValid(ours, { boundaryConstrained: true });
+    const theirs = earcut(coords, holes);
+    assert.equal(ours.triangles.length, theirs.length, `trial ${trial}: as many triangles as earcut`);
+    assert.equal(twiceArea(coords, ours.triangles), -twiceArea(coords, theirs), `trial ${trial}: the same area`);
+  }
+});
+
+test('triangulatePolygon: GeoJSON Polygon, MultiPolygon and Feature', () => {
+  const square = [[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]];
+  const hole = [[1, 1], [1, 3], [3, 3], [3, 1], [1, 1]];
+  const polygon = { type: 'Polygon', coordinates: [square, hole] };
+  const one = hullkit.triangulatePolygon(polygon);
+  assert.equal(twiceAreaOfIntegers(one.coords, one.triangles), 24);
+  const far = square.map(([x, y]) => [x + 10, y]);
+  const multi = hullkit.triangulatePolygon({ type: 'Feature', geometry: { type: 'MultiPolygon', coordinates: [[square, hole], [far]] } });
+  assert.equal(twiceAreaOfIntegers(multi.coords, multi.triangles), 24 + 32);
+  checkValid(multi, { boundaryConstrained: true });
+  assert.throws(() => hullkit.triangulatePolygon({ type: 'LineString', coordinates: [] }), /LineString is not a Polygon/);
+  assert.throws(() => hullkit.triangulatePolygon(polygon, [3]), /not with GeoJSON/);
+  assert.throws(() => hullkit.triangulatePolygon({ type: 'Polygon', coordinates: [[[0, 0], [1]]] }), /ring 0 position 1 is not \[x, y\]/);
+});
+
+test('triangulatePolygon: a self-crossing bow-tie gets its exact crossing point', () => {
+  const result = hullkit.triangulatePolygon([0, 0, 2, 2, 2, 0, 0, 2]);
+  assert.equal(result.crossingCount, 1);
+  assert.equal(result.addedCount, 1);
+  assert.deepEqual(Array.from(result.coords.subarray(8)), [1, 1]);
+  assert.equal(twiceAreaOfIntegers(result.coords, result.triangles), 4);
+  checkValid(result, { boundaryConstrained: true });
+});
+
+test('constrainedDelaunay: segments kept, crossings split, the hull covered', () => {
+  const random = seededRandom(5);
+  const coords = Float64Array.from({ length: 400 }, () => random());
+  const edges = [];
+  for (let k = 0; k < 20; k++) edges.push(Math.floor(random() * 200), Math.floor(random() * 200));
+  const result = hullkit.constrainedDelaunay(coords, edges);
+  checkValid(result, { boundaryConstrained: false });
+  assert.ok(result.crossingCount > 0, 'random segments cross');
+  // Every unshared half-edge is on the convex hull: all points on its inner side (exact).
+  const p = exactPoints(result.coords, 2);
+  for (let e = 0; e < result.triangles.length; e++) {
+    if (result.halfedges[e] !== -1) continue;
+    const a = p[result.triangles[e]], b = p[result.triangles[next(e)]];
+    for (const q of p) assert.notEqual(orient2d(a, b, q), 1, 'hull edge with every point on its right');
+  }
+});
+
+test('triangulatePolygon and constrainedDelaunay: clear errors', () => {
+  assert.throws(() => hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1], [0, 5]), (error) =>
+    error instanceof HullkitError && error.segmentIndex === 0 && /segment 0 joins points 0 and 5/.test(error.message));
+  assert.throws(() => hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1], [0, 1, 2]), /not a whole number of pairs/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, NaN, 1]), (error) => error.pointIndex === 2);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1, 1, 1], [3, 2]), /holeIndices\[1\] = 2 is before the hole before it/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [9]), /past the 3 vertices/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { fill: 'winding' }), /unknown fill "winding"/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { holes: [] }), /unknown option "holes"/);
+  // Degenerate input is a value: collinear rings have no inside.
+  assert.equal(hullkit.triangulatePolygon([0, 0, 1, 1, 2, 2]).triangles.length, 0);
+  assert.equal(hullkit.triangulatePolygon([]).dimension, -1);
+});

@@ -1,0 +1,127 @@
+// hullkit.triangulatePolygon and hullkit.constrainedDelaunay: the JS side of
+// native/include/hullkit/constrained.hpp. triangulatePolygon takes earcut's arguments (flat
+// coordinates, the vertex index where each hole starts, `dim`) or a GeoJSON Polygon/MultiPolygon;
+// constrainedDelaunay takes points and index pairs. Results are fresh typed arrays laid out as
+// delaunator's (clockwise triangles with y up, halfedges), plus a flag per half-edge on a segment.
+import { HullkitError, checkOptions, copyIn, flatCoordinates, toUint32 } from './internal.js';
+
+/** The fill rules triangulatePolygon accepts, the default first. */
+export const FILL_RULES = ['evenodd', 'nonzero'];
+const POLYGON_OPTIONS = ['dim', 'fill'];
+
+/** Copies the core's result out (or throws its error naming the point or segment) and frees it. */
+function takeResult(result, where) {
+  try {
+    if (!result.ok()) {
+      const error = new HullkitError(`${where}: ${result.error}`, { pointIndex: result.errorPoint() });
+      const segment = result.errorSegment();
+      if (segment >= 0) error.segmentIndex = segment;
+      throw error;
+    }
+    const coords = result.coordsView().slice();
+    const representative = result.representativeView().slice();
+    return {
+      dimension: result.dimension,
+      triangles: result.trianglesView().slice(),
+      halfedges: result.halfedgesView().slice(),
+      constrained: result.constrainedView().slice(),
+      coords,
+      inputCount: representative.length,
+      addedCount: coords.length / 2 - representative.length,
+      representative,
+      duplicateCount: result.duplicateCount(),
+      crossingCount: result.crossingCount(),
+    };
+  } finally {
+    result.delete();
+  }
+}
+
+/** Runs `call(addresses...)` with each typed array copied into the heap, freeing them afterwards. */
+function withHeap(core, arrays, where, call) {
+  const addresses = [];
+  try {
+    for (const array of arrays) addresses.push(copyIn(core, array, where));
+    return call(...addresses);
+  } finally {
+    for (const address of addresses) core._free(address);
+  }
+}
+
+/** A GeoJSON Polygon, MultiPolygon or a Feature holding one, as flat x y coordinates and ring starts. */
+function fromGeoJSON(value, where) {
+  const geometry = value.type === 'Feature' ? value.geometry : value;
+  if (geometry === null || typeof geometry !== 'object') throw new HullkitError(`${where}: the Feature has no geometry`);
+  let polygons;
+  if (geometry.type === 'Polygon') polygons = [geometry.coordinates];
+  else if (geometry.type === 'MultiPolygon') polygons = geometry.coordinates;
+  else throw new HullkitError(`${where}: GeoJSON ${String(geometry.type)} is not a Polygon or MultiPolygon`);
+  if (!Array.isArray(polygons)) throw new HullkitError(`${where}: GeoJSON coordinates must be an array`);
+  const xy = [];
+  const starts = [];
+  polygons.forEach((rings, p) => {
+    if (!Array.isArray(rings)) throw new HullkitError(`${where}: polygon ${p} is not an array of rings`);
+    rings.forEach((ring, r) => {
+      if (!Array.isArray(ring)) throw new HullkitError(`${where}: polygon ${p} ring ${r} is not an array of positions`);
+      if (xy.length > 0) starts.push(xy.length / 2);
+      ring.forEach((position, i) => {
+        if (!Array.isArray(position) || position.length < 2 || typeof position[0] !== 'number' || typeof position[1] !== 'number') {
+          throw new HullkitError(`${where}: polygon ${p} ring ${r} position ${i} is not [x, y]`);
+        }
+        xy.push(position[0], position[1]);
+      });
+    });
+  });
+  return { xy: Float64Array.from(xy), starts: Uint32Array.from(starts) };
+}
+
+/**
+ * The triangles inside polygons with holes (see hullkit.d.ts).
+ * @param core the loaded WebAssembly module
+ */
+export function triangulatePolygon(core, coords, holeIndices, options = {}) {
+  const where = 'triangulatePolygon';
+  const { dim = 2, fill = FILL_RULES[0] } = checkOptions(options, POLYGON_OPTIONS, where);
+  if (!FILL_RULES.includes(fill)) throw new HullkitError(`${where}: unknown fill "${fill}" (known: ${FILL_RULES.join(', ')})`);
+  if (!Number.isInteger(dim) || dim < 2) throw new HullkitError(`${where}: dim must be an integer of at least 2, got ${String(dim)}`);
+  let xy;
+  let starts;
+  if (coords !== null && typeof coords === 'object' && !Array.isArray(coords) && !ArrayBuffer.isView(coords) && 'type' in coords) {
+    if (holeIndices != null && holeIndices.length > 0) {
+      throw new HullkitError(`${where}: pass holeIndices with flat coordinates, not with GeoJSON (its rings say where holes start)`);
+    }
+    ({ xy, starts } = fromGeoJSON(coords, where));
+  } else {
+    const flat = flatCoordinates(coords, where, dim);
+    xy = flat;
+    if (dim !== 2) {
+      xy = new Float64Array((flat.length / dim) * 2);
+      for (let i = 0, j = 0; i < flat.length; i += dim, j += 2) {
+        xy[j] = flat[i];
+        xy[j + 1] = flat[i + 1];
+      }
+    }
+    starts = toUint32(holeIndices ?? [], `${where}: holeIndices`);
+  }
+  const count = xy.length / 2;
+  for (let k = 0; k < starts.length; k++) {
+    if (starts[k] > count || (k > 0 && starts[k] < starts[k - 1])) {
+      throw new HullkitError(`${where}: holeIndices[${k}] = ${starts[k]} is ${starts[k] > count ? `past the ${count} vertices` : 'before the hole before it'}`);
+    }
+  }
+  return takeResult(withHeap(core, [xy, starts], where, (p, s) => core.triangulatePolygonFromHeap(p, count, s, starts.length, fill)), where);
+}
+
+/**
+ * The constrained Delaunay triangulation of points and segments (see hullkit.d.ts).
+ * @param core the loaded WebAssembly module
+ */
+export function constrainedDelaunay(core, coords, edges, options = {}) {
+  const where = 'constrainedDelaunay';
+  checkOptions(options, [], where);
+  const xy = flatCoordinates(coords, where, 2);
+  const segments = toUint32(edges ?? [], `${where}: edges`);
+  if (segments.length % 2 !== 0) throw new HullkitError(`${where}: ${segments.length} edge indices is not a whole number of pairs`);
+  const count = xy.length / 2;
+  return takeResult(withHeap(core, [xy, segments], where, (p, s) => core.constrainedDelaunayFromHeap(p, count, s, segments.length / 2)), where);
+}

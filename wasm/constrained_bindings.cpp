@@ -1,0 +1,70 @@
+// embind registrations for constrained Delaunay triangulation (graphs, polygons with holes): the
+// friendly API lives in constrained.js. No geometry here.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cstdint>
+#include <string>
+
+#include "embind_views.hpp"
+#include "hullkit/constrained.hpp"
+
+namespace {
+
+using emscripten::val;
+using hullkit_wasm::heap_at;
+using hullkit_wasm::view_of;
+
+// The JS layer copied the points (2 * count doubles) and the segments or ring starts (uint32) into
+// malloc'ed blocks and checked the options.
+hullkit::ConstrainedDelaunay graph_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t segments,
+                                             std::uint32_t segment_count) {
+    hullkit::ConstrainedOptions options;
+    options.threads = 1;  // no threads in the wasm build; the answer is the same
+    return hullkit::constrained_delaunay(hullkit::PointSpan2(heap_at<double>(xy), count), heap_at<std::uint32_t>(segments),
+                                         segment_count, options);
+}
+
+hullkit::ConstrainedDelaunay polygon_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t starts,
+                                               std::uint32_t ring_count, const std::string& fill) {
+    hullkit::PolygonOptions options;
+    options.threads = 1;
+    if (!hullkit::parse_fill_rule(fill, &options.fill)) {
+        hullkit::ConstrainedDelaunay unknown;
+        unknown.error = "unknown fill rule \"" + fill + "\"";
+        return unknown;
+    }
+    return hullkit::triangulate_polygon(hullkit::PointSpan2(heap_at<double>(xy), count), heap_at<std::uint32_t>(starts),
+                                        ring_count, options);
+}
+
+val triangles_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.triangles); }
+val halfedges_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.halfedges); }
+val constrained_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.constrained); }
+val coords_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.coords); }
+val representative_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.representative); }
+bool result_ok(const hullkit::ConstrainedDelaunay& d) { return d.ok(); }
+double error_point(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.error_point); }
+double error_segment(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.error_segment); }
+double duplicate_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.duplicate_count); }
+double crossing_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.crossing_count); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(hullkit_constrained) {
+    emscripten::class_<hullkit::ConstrainedDelaunay>("ConstrainedDelaunay")
+        .property("dimension", &hullkit::ConstrainedDelaunay::dimension)
+        .property("error", &hullkit::ConstrainedDelaunay::error)
+        .function("ok", &result_ok)
+        .function("errorPoint", &error_point)
+        .function("errorSegment", &error_segment)
+        .function("duplicateCount", &duplicate_count)
+        .function("crossingCount", &crossing_count)
+        .function("trianglesView", &triangles_view)
+        .function("halfedgesView", &halfedges_view)
+        .function("constrainedView", &constrained_view)
+        .function("coordsView", &coords_view)
+        .function("representativeView", &representative_view);
+    emscripten::function("constrainedDelaunayFromHeap", &graph_from_heap);
+    emscripten::function("triangulatePolygonFromHeap", &polygon_from_heap);
+}
