@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli_io.hpp"
+#include "svg.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/mesh_io.hpp"
 #include "hullkit/mesh_read.hpp"
@@ -192,12 +193,6 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
 
 // ---- writers ----
 
-void append_uint(std::string& out, std::uint64_t value) {
-    char buffer[24];
-    out.append(buffer, static_cast<std::size_t>(std::snprintf(buffer, sizeof buffer, "%llu",
-                                                              static_cast<unsigned long long>(value))));
-}
-
 /// Appends `values` as a JSON array of numbers.
 template <typename Int>
 void append_json_array(std::string& out, const std::vector<Int>& values) {
@@ -279,68 +274,15 @@ std::string write_delaunay_json(const hullkit::Delaunay& result) {
     return out;
 }
 
-/// Maps plane coordinates to SVG pixels: y up in the plane, y down on screen.
-struct SvgFrame {
-    double xmin = 0, ymin = 0, xmax = 1, ymax = 1;  ///< the plane rectangle shown (and Voronoi's clip)
-    double scale = 1;
-    static constexpr double kMargin = 12;  ///< pixels around the rectangle
-    static constexpr double kSize = 800;   ///< pixels along the rectangle's longer side
-
-    double x(double px) const { return kMargin + (px - xmin) * scale; }
-    double y(double py) const { return kMargin + (ymax - py) * scale; }
-    double width() const { return 2 * kMargin + (xmax - xmin) * scale; }
-    double height() const { return 2 * kMargin + (ymax - ymin) * scale; }
-};
-
-/// The points' bounding box with a 5% border (a unit square around a single point).
-SvgFrame frame_of(hullkit::PointSpan2 points) {
-    SvgFrame frame;
-    if (points.count == 0) return frame;
-    frame.xmin = frame.xmax = points[0][0];
-    frame.ymin = frame.ymax = points[0][1];
-    for (std::size_t i = 1; i < points.count; ++i) {
-        frame.xmin = std::min(frame.xmin, points[i][0]);
-        frame.xmax = std::max(frame.xmax, points[i][0]);
-        frame.ymin = std::min(frame.ymin, points[i][1]);
-        frame.ymax = std::max(frame.ymax, points[i][1]);
-    }
-    double span = std::max(frame.xmax - frame.xmin, frame.ymax - frame.ymin);
-    if (!(span > 0) || !std::isfinite(span)) span = 1;
-    frame.xmin -= 0.05 * span;
-    frame.xmax += 0.05 * span;
-    frame.ymin -= 0.05 * span;
-    frame.ymax += 0.05 * span;
-    frame.scale = SvgFrame::kSize / (1.1 * span);
-    return frame;
-}
-
-void append_pixel(std::string& out, double value) {
-    char buffer[32];
-    out.append(buffer, static_cast<std::size_t>(std::snprintf(buffer, sizeof buffer, "%.2f", value)));
-}
-
-void append_svg_point(std::string& out, const SvgFrame& frame, double x, double y) {
-    append_pixel(out, frame.x(x));
-    out += ',';
-    append_pixel(out, frame.y(y));
-}
-
 /// The triangulation's edges (each once), the hull, the points and optionally the Voronoi cells.
 std::string write_delaunay_svg(hullkit::PointSpan2 points, const hullkit::Delaunay& result, bool voronoi) {
     const SvgFrame frame = frame_of(points);
-    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-    append_pixel(out, frame.width());
-    out += "\" height=\"";
-    append_pixel(out, frame.height());
-    out += "\" viewBox=\"0 0 ";
-    append_pixel(out, frame.width());
-    out += ' ';
-    append_pixel(out, frame.height());
-    out += "\">\n<title>Delaunay triangulation: ";
-    append_uint(out, points.count);
-    out += " points, ";
-    append_uint(out, result.triangle_count());
-    out += " triangles</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+    std::string title = "Delaunay triangulation: ";
+    append_uint(title, points.count);
+    title += " points, ";
+    append_uint(title, result.triangle_count());
+    title += " triangles";
+    std::string out = svg_header(frame, title);
 
     if (voronoi) {
         const hullkit::VoronoiCells cells =

@@ -6,6 +6,7 @@
 #include "cli_io.hpp"
 #include "delaunay3_command.hpp"
 #include "delaunay_command.hpp"
+#include "triangulate_command.hpp"
 #include "hull_command.hpp"
 #include "route_command.hpp"
 #include "verify_command.hpp"
@@ -33,6 +34,8 @@ Commands:
   verify           check exactly that a mesh file is the convex hull of a point set
   delaunay         Delaunay triangulation of 2D points (by lifting to a paraboloid)
   verify-delaunay  check exactly that a mesh file is a Delaunay triangulation
+  triangulate      constrained Delaunay triangulation of polygons with holes
+                   and planar graphs (rings, GeoJSON, Triangle's .poly)
   delaunay3        Delaunay tetrahedralization of 3D points (by lifting to 4D)
   verify-delaunay3 check exactly that tetrahedra are a Delaunay tetrahedralization
   route            check a traverse's route (straight or turning legs) against obstacles
@@ -69,6 +72,7 @@ int run(int argc, char** argv) {
     if (command == "verify") return hullkit_cli::run_verify(rest);
     if (command == "delaunay") return hullkit_cli::run_delaunay(rest);
     if (command == "verify-delaunay") return hullkit_cli::run_verify_delaunay(rest);
+    if (command == "triangulate") return hullkit_cli::run_triangulate(rest);
     if (command == "delaunay3") return hullkit_cli::run_delaunay3(rest);
     if (command == "verify-delaunay3") return hullkit_cli::run_verify_delaunay3(rest);
     if (command == "route") return hullkit_cli::run_route(rest);

@@ -110,6 +110,16 @@ ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t*
 ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
                                         const PolygonOptions& options = {});
 
+/// Triangle's way of saying what to mesh (its .poly files, its `-p` switch without `-c`): removes from
+/// a constrained_delaunay() result, in place, the triangles of the exterior (those reachable from the
+/// convex hull's edges that are not on a segment, without crossing a segment) when `exterior`, and
+/// of every hole: the region (triangles reachable without crossing a segment) around each point of
+/// `holes` (a hole point on an edge or a corner takes every triangle touching it; a hole point
+/// outside the hull or in a region already removed does nothing). Every test is an exact
+/// orient2d. `halfedges` of the kept triangles across removed ones become -1. Returns the number of
+/// triangles removed.
+std::size_t remove_regions(ConstrainedDelaunay& triangulation, bool exterior, PointSpan2 holes);
+
 /// An exact check of a constrained triangulation, independent of how it was built: every triangle
 /// clockwise with nonzero area (orient2d); no directed edge used twice; `halfedges` (when given,
 /// may be null) pairing exactly the half-edges whose reverse is present; the flags symmetric; every

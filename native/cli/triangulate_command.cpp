@@ -1,0 +1,480 @@
+// `hullkit triangulate`: reading polygons and planar graphs (x y rings, Triangle's .poly, GeoJSON),
+// argument parsing (CLI11) and writing around hullkit::triangulate_polygon,
+// hullkit::constrained_delaunay and hullkit::remove_regions. No geometry here.
+#include "triangulate_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_io.hpp"
+#include "hullkit/constrained.hpp"
+#include "hullkit/mesh_io.hpp"
+#include "svg.hpp"
+
+namespace hullkit_cli {
+namespace {
+
+const char* const kUsage =
+    R"(Usage: hullkit triangulate [INPUT|-] [-o FILE] [--format FORMAT]
+                           [--fill evenodd|nonzero] [--convex] [--stats]
+
+Triangulates polygons with holes, or a planar straight-line graph, exactly: a
+constrained Delaunay triangulation in which every ring edge or segment is an
+edge (split where a point lies on it; where two cross, at their exactly computed
+crossing rounded to the nearest double, which is added to the points) and every
+other edge is as Delaunay as the segments allow. No triangle overlaps another or
+has zero area, whatever the input.
+
+Input (the format from the file name, else the content):
+  x y rings       one vertex per line ("x y" or "x,y"), a blank line between
+                  rings; the first ring is the outline, the others holes, in
+                  any orientation and nesting ('#' starts a comment). Rings are
+                  closed for you; repeating the first vertex is harmless
+  GeoJSON         a Polygon, MultiPolygon, Feature or FeatureCollection of them
+                  (.json, .geojson, or text starting with '{')
+  Triangle .poly  vertices, segments and hole points, as Triangle reads them:
+                  the exterior (reached from the hull without crossing a
+                  segment) and the region around each hole point are removed;
+                  with --convex the exterior is kept (Triangle's -c)
+Rings are filled by --fill: evenodd (default; holes whatever their orientation)
+or nonzero (GeoJSON's and SVG's nonzero rule: holes wound the other way).
+
+Options:
+  -o, --output FILE   write to FILE instead of standard output
+  --format FORMAT     off (default): the points (input vertices, then added
+                        ones) with z = 0 and the triangles;
+                      obj: the same as a Wavefront OBJ (1-based);
+                      json: {"points": [[x,y],...], "triangles": [[i,j,k],...],
+                        "halfedges", "constrained" (1 per half-edge on a
+                        segment), "added", "duplicates": [[i, first],...]};
+                      svg: a picture, segment edges drawn dark;
+                      node: Triangle's .node and .ele files (-o BASE.node or
+                        BASE.ele writes both)
+                      without --format, an output FILE ending in .off, .obj,
+                      .json, .svg, .node or .ele selects that format
+  --fill RULE         evenodd (default) or nonzero, for rings and GeoJSON
+  --convex            .poly input: keep the triangles outside the segments too
+                      (the whole convex hull, hole regions still removed)
+  --stats             print one JSON line to standard error: points, added,
+                      segments, crossings, triangles, seconds
+  -h, --help          show this help
+
+Exit status: 0 on success, 2 on a usage or input problem (one line on standard
+error, naming the line of the file).
+)";
+
+enum class Format { Off, Obj, Json, Svg, Node };
+
+bool parse_format(std::string name, Format* out) {
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "off") *out = Format::Off;
+    else if (name == "obj") *out = Format::Obj;
+    else if (name == "json") *out = Format::Json;
+    else if (name == "svg") *out = Format::Svg;
+    else if (name == "node" || name == "ele") *out = Format::Node;
+    else return false;
+    return true;
+}
+
+std::string extension_of(const std::string& path) {
+    const std::size_t dot = path.find_last_of("./");
+    if (dot == std::string::npos || path[dot] != '.') return "";
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+/// What the input holds: points with, per point, the line it came from; and either ring starts
+/// (rings) or segments and hole points (.poly).
+struct Input {
+    std::vector<double> xy;
+    std::vector<std::size_t> line;  ///< per point, its 1-based line (0 for GeoJSON)
+    bool poly = false;
+    std::vector<std::uint32_t> ring_starts;
+    std::vector<std::uint32_t> segments;
+    std::vector<std::size_t> segment_line;
+    std::vector<double> holes;
+};
+
+/// The numbers on a line, before any '#'; commas count as spaces. False if a word is not a number.
+bool numbers_of(const std::string& raw, std::vector<double>* out) {
+    out->clear();
+    std::string text = raw.substr(0, raw.find('#'));
+    for (char& c : text)
+        if (c == ',' || c == '\r' || c == '\t') c = ' ';
+    std::istringstream words(text);
+    std::string word;
+    while (words >> word) {
+        char* end = nullptr;
+        const double v = std::strtod(word.c_str(), &end);
+        if (end == word.c_str() || *end != '\0') return false;
+        out->push_back(v);
+    }
+    return true;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t begin = 0;
+    while (begin <= text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) end = text.size();
+        lines.push_back(text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    return lines;
+}
+
+void read_rings(const std::string& text, const std::string& source, Input* in) {
+    const std::vector<std::string> lines = lines_of(text);
+    std::vector<double> v;
+    bool ring_open = false;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string where = source + " line " + std::to_string(i + 1);
+        if (!numbers_of(lines[i], &v)) throw UsageError(where + ": expected \"x y\", got \"" + lines[i] + "\"");
+        if (v.empty()) {
+            // A blank line ends a ring (a comment line does not).
+            if (lines[i].find('#') == std::string::npos) ring_open = false;
+            continue;
+        }
+        if (v.size() != 2) throw UsageError(where + ": expected 2 numbers (x y), got " + std::to_string(v.size()));
+        if (!ring_open && !in->xy.empty()) in->ring_starts.push_back(static_cast<std::uint32_t>(in->xy.size() / 2));
+        ring_open = true;
+        in->xy.push_back(v[0]), in->xy.push_back(v[1]);
+        in->line.push_back(i + 1);
+    }
+}
+
+void read_poly(const std::string& text, const std::string& source, Input* in) {
+    in->poly = true;
+    const std::vector<std::string> lines = lines_of(text);
+    std::size_t i = 0;
+    std::vector<double> v;
+    // The next line with numbers on it.
+    auto next = [&](const char* what) -> std::size_t {
+        for (; i < lines.size(); ++i) {
+            if (!numbers_of(lines[i], &v))
+                throw UsageError(source + " line " + std::to_string(i + 1) + ": not numbers in the " + what + ": \"" + lines[i] + "\"");
+            if (!v.empty()) return ++i;
+        }
+        throw UsageError(source + ": the file ends before the " + std::string(what));
+    };
+    auto whole = [&](double value, std::size_t line, const char* what) {
+        if (!(value >= 0 && value < 4294967296.0 && value == static_cast<double>(static_cast<std::uint64_t>(value))))
+            throw UsageError(source + " line " + std::to_string(line) + ": " + what + " must be a whole number, got " + hullkit::format_double(value));
+        return static_cast<std::uint64_t>(value);
+    };
+    std::size_t line = next("header (vertex count, dimension, attributes, markers)");
+    const std::uint64_t count = whole(v[0], line, "the vertex count");
+    if (count == 0) throw UsageError(source + " line " + std::to_string(line) + ": vertices in a separate .node file are not supported; list them in the .poly file");
+    if (v.size() > 1 && v[1] != 2) throw UsageError(source + " line " + std::to_string(line) + ": the dimension must be 2");
+    const std::uint64_t attributes = v.size() > 2 ? whole(v[2], line, "the attribute count") : 0;
+    const std::uint64_t markers = v.size() > 3 ? whole(v[3], line, "the marker count") : 0;
+    std::int64_t first_index = -1;
+    for (std::uint64_t k = 0; k < count; ++k) {
+        line = next("vertices");
+        if (v.size() < 3 + attributes + markers && v.size() < 3)
+            throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
+        const std::uint64_t index = whole(v[0], line, "a vertex index");
+        if (first_index < 0) first_index = static_cast<std::int64_t>(index);
+        if (index != static_cast<std::uint64_t>(first_index) + k)
+            throw UsageError(source + " line " + std::to_string(line) + ": vertex index " + std::to_string(index) + ", expected " +
+                             std::to_string(first_index + static_cast<std::int64_t>(k)));
+        in->xy.push_back(v[1]), in->xy.push_back(v[2]);
+        in->line.push_back(line);
+    }
+    line = next("segment header");
+    const std::uint64_t segments = whole(v[0], line, "the segment count");
+    for (std::uint64_t k = 0; k < segments; ++k) {
+        line = next("segments");
+        if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index a b\"");
+        for (int end = 1; end <= 2; ++end) {
+            const std::uint64_t vertex = whole(v[end], line, "a segment's vertex");
+            if (vertex < static_cast<std::uint64_t>(first_index) || vertex - first_index >= count)
+                throw UsageError(source + " line " + std::to_string(line) + ": segment vertex " + std::to_string(vertex) + " is not one of the " +
+                                 std::to_string(count) + " vertices (numbered from " + std::to_string(first_index) + ")");
+            in->segments.push_back(static_cast<std::uint32_t>(vertex - first_index));
+        }
+        in->segment_line.push_back(line);
+    }
+    if (i >= lines.size()) return;  // no hole section: none
+    bool more = false;
+    for (std::size_t j = i; j < lines.size() && !more; ++j) more = numbers_of(lines[j], &v) && !v.empty();
+    if (!more) return;
+    line = next("hole header");
+    const std::uint64_t holes = whole(v[0], line, "the hole count");
+    for (std::uint64_t k = 0; k < holes; ++k) {
+        line = next("holes");
+        if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
+        in->holes.push_back(v[1]), in->holes.push_back(v[2]);
+    }
+    for (std::size_t j = i; j < lines.size(); ++j) {
+        if (numbers_of(lines[j], &v) && !v.empty())
+            throw UsageError(source + " line " + std::to_string(j + 1) + ": regional attributes and area constraints are not supported yet");
+    }
+}
+
+void add_geojson_polygon(const nlohmann::json& rings, const std::string& where, Input* in) {
+    if (!rings.is_array()) throw UsageError(where + ": a Polygon's coordinates must be an array of rings");
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+        if (!rings[r].is_array()) throw UsageError(where + " ring " + std::to_string(r) + ": not an array of positions");
+        if (!in->xy.empty()) in->ring_starts.push_back(static_cast<std::uint32_t>(in->xy.size() / 2));
+        for (std::size_t i = 0; i < rings[r].size(); ++i) {
+            const nlohmann::json& p = rings[r][i];
+            if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number())
+                throw UsageError(where + " ring " + std::to_string(r) + " position " + std::to_string(i) + ": not [x, y]");
+            in->xy.push_back(p[0].get<double>()), in->xy.push_back(p[1].get<double>());
+            in->line.push_back(0);
+        }
+    }
+}
+
+void add_geojson(const nlohmann::json& value, const std::string& where, Input* in) {
+    if (!value.is_object() || !value.contains("type")) throw UsageError(where + ": not a GeoJSON object");
+    const std::string type = value["type"].is_string() ? value["type"].get<std::string>() : "";
+    if (type == "FeatureCollection") {
+        const nlohmann::json& features = value["features"];
+        if (!features.is_array()) throw UsageError(where + ": a FeatureCollection needs a features array");
+        for (std::size_t k = 0; k < features.size(); ++k) add_geojson(features[k], where + " feature " + std::to_string(k), in);
+    } else if (type == "Feature") {
+        add_geojson(value["geometry"], where, in);
+    } else if (type == "Polygon") {
+        add_geojson_polygon(value["coordinates"], where, in);
+    } else if (type == "MultiPolygon") {
+        const nlohmann::json& polygons = value["coordinates"];
+        if (!polygons.is_array()) throw UsageError(where + ": a MultiPolygon's coordinates must be an array");
+        for (std::size_t k = 0; k < polygons.size(); ++k) add_geojson_polygon(polygons[k], where + " polygon " + std::to_string(k), in);
+    } else {
+        throw UsageError(where + ": GeoJSON " + (type.empty() ? std::string("without a type") : type) + " is not a Polygon or MultiPolygon");
+    }
+}
+
+Input read_input_file(const std::string& path) {
+    const std::string text = read_input(path);
+    const std::string source = path == "-" ? "<stdin>" : path;
+    const std::string ext = extension_of(path);
+    Input in;
+    const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    if (ext == "poly") {
+        read_poly(text, source, &in);
+    } else if (ext == "json" || ext == "geojson" || (first != std::string::npos && text[first] == '{')) {
+        nlohmann::json value;
+        try {
+            value = nlohmann::json::parse(text);
+        } catch (const nlohmann::json::exception& error) {
+            throw UsageError(source + ": not valid JSON (" + error.what() + ")");
+        }
+        add_geojson(value, source, &in);
+    } else {
+        read_rings(text, source, &in);
+    }
+    return in;
+}
+
+struct Args {
+    std::string input = "-", output;
+    Format format = Format::Off;
+    hullkit::FillRule fill = hullkit::FillRule::EvenOdd;
+    bool convex = false, stats = false;
+};
+
+bool parse_args(const std::vector<std::string>& argv, Args* args) {
+    CLI::App app{"hullkit triangulate", "hullkit triangulate"};
+    app.set_help_flag();
+    bool help = false;
+    std::string format_name, fill_name;
+    const auto last = CLI::MultiOptionPolicy::TakeLast;
+    app.add_flag("-h,--help", help);
+    app.add_option("input", args->input);
+    app.add_option("-o,--output", args->output)->multi_option_policy(last);
+    app.add_option("--format", format_name)->multi_option_policy(last);
+    app.add_option("--fill", fill_name)->multi_option_policy(last);
+    app.add_flag("--convex", args->convex);
+    app.add_flag("--stats", args->stats);
+    parse_or_throw(app, argv, "triangulate");
+    if (help) {
+        std::fputs(kUsage, stdout);
+        return false;
+    }
+    if (app.count("--output") && args->output.empty()) throw UsageError("option --output needs a file name");
+    if (app.count("--format")) {
+        if (!parse_format(format_name, &args->format)) throw UsageError("unknown format \"" + format_name + "\" (known: off, obj, json, svg, node)");
+    } else if (!args->output.empty() && args->output != "-") {
+        parse_format(extension_of(args->output), &args->format);
+    }
+    if (app.count("--fill") && !hullkit::parse_fill_rule(fill_name, &args->fill))
+        throw UsageError("unknown fill rule \"" + fill_name + "\" (known: evenodd, nonzero)");
+    if (args->format == Format::Node && (args->output.empty() || args->output == "-"))
+        throw UsageError("--format node writes two files (BASE.node and BASE.ele): give -o BASE.node");
+    if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    return true;
+}
+
+// ---- writers ----
+
+std::string write_off(const hullkit::ConstrainedDelaunay& d) {
+    std::string out = "OFF\n";
+    append_uint(out, d.coords.size() / 2);
+    out += ' ';
+    append_uint(out, d.triangle_count());
+    out += " 0\n";
+    for (std::size_t i = 0; i < d.coords.size(); i += 2)
+        out += hullkit::format_double(d.coords[i]) + ' ' + hullkit::format_double(d.coords[i + 1]) + " 0\n";
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        out += '3';
+        for (int k = 0; k < 3; ++k) out += ' ', append_uint(out, d.triangles[3 * t + k]);
+        out += '\n';
+    }
+    return out;
+}
+
+std::string write_obj(const hullkit::ConstrainedDelaunay& d) {
+    std::string out;
+    for (std::size_t i = 0; i < d.coords.size(); i += 2)
+        out += "v " + hullkit::format_double(d.coords[i]) + ' ' + hullkit::format_double(d.coords[i + 1]) + " 0\n";
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        out += 'f';
+        for (int k = 0; k < 3; ++k) out += ' ', append_uint(out, d.triangles[3 * t + k] + std::uint64_t{1});
+        out += '\n';
+    }
+    return out;
+}
+
+std::string write_json(const hullkit::ConstrainedDelaunay& d) {
+    std::string out = "{\"dimension\":" + std::to_string(d.dimension) + ",\"points\":[";
+    for (std::size_t i = 0; i < d.coords.size(); i += 2) {
+        if (i) out += ',';
+        out += '[' + hullkit::format_json_number(d.coords[i]) + ',' + hullkit::format_json_number(d.coords[i + 1]) + ']';
+    }
+    out += "],\"triangles\":[";
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        if (t) out += ',';
+        out += '[' + std::to_string(d.triangles[3 * t]) + ',' + std::to_string(d.triangles[3 * t + 1]) + ',' +
+               std::to_string(d.triangles[3 * t + 2]) + ']';
+    }
+    out += "],\"halfedges\":[";
+    for (std::size_t e = 0; e < d.halfedges.size(); ++e) out += (e ? "," : "") + std::to_string(d.halfedges[e]);
+    out += "],\"constrained\":[";
+    for (std::size_t e = 0; e < d.constrained.size(); ++e) out += (e ? "," : "") + std::to_string(d.constrained[e]);
+    out += "],\"added\":" + std::to_string(d.added_count()) + ",\"duplicates\":[";
+    bool first = true;
+    for (std::size_t i = 0; i < d.representative.size(); ++i) {
+        if (d.representative[i] == i) continue;
+        out += (first ? "[" : ",[") + std::to_string(i) + ',' + std::to_string(d.representative[i]) + ']';
+        first = false;
+    }
+    out += "]}\n";
+    return out;
+}
+
+std::string write_svg(const hullkit::ConstrainedDelaunay& d) {
+    const hullkit::PointSpan2 points(d.coords);
+    const SvgFrame frame = frame_of(points);
+    std::string title = "Constrained Delaunay triangulation: ";
+    append_uint(title, d.triangle_count());
+    title += " triangles";
+    std::string out = svg_header(frame, title);
+    std::string fill, free_edges, segments;
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        fill += 'M';
+        for (int k = 0; k < 3; ++k) {
+            if (k) fill += 'L';
+            const double* p = points[d.triangles[3 * t + k]];
+            append_svg_point(fill, frame, p[0], p[1]);
+        }
+        fill += 'Z';
+    }
+    for (std::size_t e = 0; e < d.triangles.size(); ++e) {
+        if (d.halfedges[e] >= 0 && static_cast<std::size_t>(d.halfedges[e]) > e) continue;  // each edge once
+        const double* a = points[d.triangles[e]];
+        const double* b = points[d.triangles[e % 3 == 2 ? e - 2 : e + 1]];
+        std::string& path = d.constrained[e] ? segments : free_edges;
+        path += 'M';
+        append_svg_point(path, frame, a[0], a[1]);
+        path += 'L';
+        append_svg_point(path, frame, b[0], b[1]);
+    }
+    out += "<path id=\"inside\" fill=\"#dbeafe\" stroke=\"none\" d=\"" + fill + "\"/>\n";
+    out += "<path id=\"edges\" fill=\"none\" stroke=\"#2563eb\" stroke-width=\"0.8\" d=\"" + free_edges + "\"/>\n";
+    out += "<path id=\"segments\" fill=\"none\" stroke=\"#111827\" stroke-width=\"2\" stroke-linecap=\"round\" d=\"" + segments + "\"/>\n";
+    out += "</svg>\n";
+    return out;
+}
+
+/// Triangle's .node (vertices numbered from 1) and .ele (triangles counter-clockwise, as Triangle
+/// writes them: y up).
+void write_node_ele(const std::string& output, const hullkit::ConstrainedDelaunay& d) {
+    const std::string ext = extension_of(output);
+    const std::string base = ext == "node" || ext == "ele" ? output.substr(0, output.size() - ext.size() - 1) : output;
+    std::string node = std::to_string(d.coords.size() / 2) + " 2 0 0\n";
+    for (std::size_t i = 0; i < d.coords.size(); i += 2)
+        node += std::to_string(i / 2 + 1) + ' ' + hullkit::format_double(d.coords[i]) + ' ' + hullkit::format_double(d.coords[i + 1]) + '\n';
+    std::string ele = std::to_string(d.triangle_count()) + " 3 0\n";
+    for (std::size_t t = 0; t < d.triangle_count(); ++t)
+        ele += std::to_string(t + 1) + ' ' + std::to_string(d.triangles[3 * t] + 1) + ' ' + std::to_string(d.triangles[3 * t + 2] + 1) + ' ' +
+               std::to_string(d.triangles[3 * t + 1] + 1) + '\n';
+    write_output(base + ".node", node);
+    write_output(base + ".ele", ele);
+}
+
+/// The core's error with the input's line (and ring) for the point or segment it names.
+std::string located(const std::string& source, const Input& in, const hullkit::ConstrainedDelaunay& d) {
+    std::string where = source;
+    if (d.error_point >= 0 && static_cast<std::size_t>(d.error_point) < in.line.size()) {
+        const std::size_t p = static_cast<std::size_t>(d.error_point);
+        if (in.line[p] > 0) where += " line " + std::to_string(in.line[p]);
+        if (!in.poly) {
+            std::size_t ring = 0;
+            while (ring < in.ring_starts.size() && in.ring_starts[ring] <= p) ++ring;
+            const std::size_t start = ring == 0 ? 0 : in.ring_starts[ring - 1];
+            where += " (ring " + std::to_string(ring) + ", vertex " + std::to_string(p - start) + ")";
+        }
+    } else if (d.error_segment >= 0 && in.poly && static_cast<std::size_t>(d.error_segment) < in.segment_line.size()) {
+        where += " line " + std::to_string(in.segment_line[static_cast<std::size_t>(d.error_segment)]);
+    }
+    return where + ": " + d.error;
+}
+
+}  // namespace
+
+int run_triangulate(const std::vector<std::string>& argv) {
+    Args args;
+    if (!parse_args(argv, &args)) return kExitOk;
+    const Input in = read_input_file(args.input);
+    const std::string source = args.input == "-" ? "<stdin>" : args.input;
+    const auto started = std::chrono::steady_clock::now();
+    const hullkit::PointSpan2 points(in.xy);
+    hullkit::ConstrainedDelaunay d;
+    if (in.poly) {
+        d = hullkit::constrained_delaunay(points, in.segments.data(), in.segments.size() / 2);
+        if (d.ok()) hullkit::remove_regions(d, !args.convex, hullkit::PointSpan2(in.holes));
+    } else {
+        hullkit::PolygonOptions options;
+        options.fill = args.fill;
+        d = hullkit::triangulate_polygon(points, in.ring_starts.data(), in.ring_starts.size(), options);
+    }
+    if (!d.ok()) throw UsageError(located(source, in, d));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    switch (args.format) {
+        case Format::Off: write_output(args.output, write_off(d)); break;
+        case Format::Obj: write_output(args.output, write_obj(d)); break;
+        case Format::Json: write_output(args.output, write_json(d)); break;
+        case Format::Svg: write_output(args.output, write_svg(d)); break;
+        case Format::Node: write_node_ele(args.output, d); break;
+    }
+    if (args.stats) {
+        const std::size_t segments = in.poly ? in.segments.size() / 2 : in.xy.size() / 2;
+        std::fprintf(stderr, "{\"points\":%zu,\"added\":%zu,\"segments\":%zu,\"crossings\":%zu,\"triangles\":%zu,\"seconds\":%.6f}\n",
+                     in.xy.size() / 2, d.added_count(), segments, d.crossing_count, d.triangle_count(), seconds);
+    }
+    return kExitOk;
+}
+
+}  // namespace hullkit_cli

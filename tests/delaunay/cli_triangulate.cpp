@@ -1,0 +1,151 @@
+// Tests of `hullkit triangulate` (the built binary): every input format and output format, checked
+// independently of the library (JSON parsed; triangle orientation and area with GMP rationals;
+// Triangle's .node/.ele re-read), and the error paths naming the line.
+#include <catch2/catch.hpp>
+#include <gmpxx.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/cli_support.hpp"
+
+namespace {
+
+using hullkit_test::RunResult;
+using hullkit_test::TempDir;
+using hullkit_test::read_text;
+using hullkit_test::run_cli;
+using hullkit_test::write_text;
+
+const char* const kSquareWithHole = "# outline\n0 0\n4 0\n4 4\n0 4\n\n# hole\n1 1\n3 1\n3 3\n1 3\n";
+
+const char* const kSquareWithHolePoly =
+    "8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 3 1\n7 3 3\n8 1 3\n"
+    "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 2 2\n";
+
+/// The JSON output parsed, with every triangle checked clockwise (y up) and the total area returned (exact).
+mpq_class checked_area(const nlohmann::json& j) {
+    mpq_class sum = 0;
+    for (const auto& t : j["triangles"]) {
+        const auto& a = j["points"][t[0].get<std::size_t>()];
+        const auto& b = j["points"][t[1].get<std::size_t>()];
+        const auto& c = j["points"][t[2].get<std::size_t>()];
+        const mpq_class cross = (mpq_class(b[0].get<double>()) - a[0].get<double>()) * (mpq_class(c[1].get<double>()) - a[1].get<double>()) -
+                                (mpq_class(b[1].get<double>()) - a[1].get<double>()) * (mpq_class(c[0].get<double>()) - a[0].get<double>());
+        REQUIRE(cross < 0);
+        sum -= cross;
+    }
+    REQUIRE(j["halfedges"].size() == 3 * j["triangles"].size());
+    REQUIRE(j["constrained"].size() == 3 * j["triangles"].size());
+    return sum / 2;
+}
+
+nlohmann::json json_of(const RunResult& run) {
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    return nlohmann::json::parse(run.out);
+}
+
+}  // namespace
+
+TEST_CASE("hullkit triangulate: x y rings, GeoJSON and .poly give the square with a hole", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    write_text(dir.file("rings.txt"), kSquareWithHole);
+    const nlohmann::json rings = json_of(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json"}));
+    CHECK(checked_area(rings) == 12);
+    CHECK(rings["triangles"].size() == 8);
+    CHECK(rings["added"] == 0);
+    // nonzero: the hole wound like the outline is filled.
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json", "--fill", "nonzero"}))) == 16);
+
+    write_text(dir.file("square.geojson"),
+               R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":)"
+               R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]],[[1,1],[1,3],[3,3],[3,1],[1,1]]]}}]})");
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("square.geojson"), "--format", "json"}))) == 12);
+
+    write_text(dir.file("square.poly"), kSquareWithHolePoly);
+    const nlohmann::json poly = json_of(run_cli(dir, {"triangulate", dir.file("square.poly"), "--format", "json"}));
+    CHECK(checked_area(poly) == 12);
+    // Without the hole point the hole is meshed too; --convex keeps the exterior (none here).
+    std::string no_hole = kSquareWithHolePoly;
+    no_hole.replace(no_hole.rfind("1\n1 2 2\n"), 8, "0\n");
+    write_text(dir.file("filled.poly"), no_hole);
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("filled.poly"), "--format", "json"}))) == 16);
+}
+
+TEST_CASE("hullkit triangulate: .poly removes the exterior unless --convex", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    // An L-shaped outline: its convex hull has a notch outside the segments.
+    write_text(dir.file("l.poly"), "6 2 0 0\n0 0 0\n1 2 0\n2 2 1\n3 1 1\n4 1 2\n5 0 2\n6 0\n0 0 1\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 0\n0\n");
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("l.poly"), "--format", "json"}))) == 3);
+    mpq_class hull_area = checked_area(json_of(run_cli(dir, {"triangulate", dir.file("l.poly"), "--format", "json", "--convex"})));
+    CHECK(hull_area == mpq_class(7, 2));
+}
+
+TEST_CASE("hullkit triangulate: a bow-tie's crossing is added; every output format", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    write_text(dir.file("bowtie.txt"), "0 0\n2 2\n2 0\n0 2\n");
+    const RunResult stats = run_cli(dir, {"triangulate", dir.file("bowtie.txt"), "--format", "json", "--stats"});
+    const nlohmann::json j = json_of(stats);
+    CHECK(j["added"] == 1);
+    CHECK(j["points"][4] == nlohmann::json::array({1, 1}));
+    CHECK(checked_area(j) == 2);
+    const nlohmann::json line = nlohmann::json::parse(stats.err);
+    CHECK(line["crossings"] == 1);
+    CHECK(line["triangles"] == 2);
+
+    const RunResult off = run_cli(dir, {"triangulate", dir.file("bowtie.txt")});
+    REQUIRE(off.exit_code == 0);
+    CHECK(off.out.rfind("OFF\n5 2 0\n", 0) == 0);
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("bowtie.txt"), "-o", dir.file("b.obj")}).exit_code == 0);
+    const std::string obj = read_text(dir.file("b.obj"));
+    CHECK(obj.find("v 1 1 0\n") != std::string::npos);
+    CHECK(obj.find("f ") != std::string::npos);
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("bowtie.txt"), "-o", dir.file("b.svg")}).exit_code == 0);
+    const std::string svg = read_text(dir.file("b.svg"));
+    CHECK(svg.find("<svg") != std::string::npos);
+    CHECK(svg.find("id=\"segments\"") != std::string::npos);
+    CHECK(svg.find("</svg>") != std::string::npos);
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("bowtie.txt"), "-o", dir.file("b.ele")}).exit_code == 0);
+    std::istringstream node(read_text(dir.file("b.node"))), ele(read_text(dir.file("b.ele")));
+    std::size_t points = 0, triangles = 0, dim = 0, attributes = 0, markers = 0;
+    node >> points >> dim >> attributes >> markers;
+    ele >> triangles >> dim >> attributes;
+    CHECK(points == 5);
+    CHECK(triangles == 2);
+    // .ele triangles are counter-clockwise (Triangle's convention) with 1-based vertices.
+    std::vector<double> xy;
+    for (std::size_t i = 0; i < points; ++i) {
+        double index, x, y;
+        node >> index >> x >> y;
+        xy.push_back(x), xy.push_back(y);
+    }
+    for (std::size_t t = 0; t < triangles; ++t) {
+        std::size_t index, a, b, c;
+        ele >> index >> a >> b >> c;
+        const double* p[3] = {&xy[2 * (a - 1)], &xy[2 * (b - 1)], &xy[2 * (c - 1)]};
+        CHECK((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]) > 0);
+    }
+}
+
+TEST_CASE("hullkit triangulate: errors name the file, line and ring", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    auto error_of = [&](const std::string& name, const std::string& text, std::vector<std::string> extra = {}) {
+        write_text(dir.file(name), text);
+        std::vector<std::string> args = {"triangulate", dir.file(name)};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const RunResult run = run_cli(dir, args);
+        CHECK(run.exit_code == 2);
+        return run.err;
+    };
+    CHECK(error_of("bad.txt", "0 0\n1 x\n").find("bad.txt line 2: expected \"x y\"") != std::string::npos);
+    CHECK(error_of("nan.txt", "0 0\n1 0\n\n5 5\nnan 1\n").find("nan.txt line 5 (ring 1, vertex 1): point 3 has a non-finite x") != std::string::npos);
+    CHECK(error_of("bad.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 9\n").find("bad.poly line 6: segment vertex 9 is not one of the 3 vertices") !=
+          std::string::npos);
+    CHECK(error_of("line.geojson", R"({"type":"LineString","coordinates":[[0,0],[1,1]]})").find("LineString is not a Polygon") != std::string::npos);
+    CHECK(error_of("ok.txt", "0 0\n1 0\n0 1\n", {"--fill", "winding"}).find("unknown fill rule \"winding\"") != std::string::npos);
+    CHECK(error_of("ok2.txt", "0 0\n1 0\n0 1\n", {"--format", "node"}).find("give -o BASE.node") != std::string::npos);
+    CHECK(error_of("regions.poly", std::string(kSquareWithHolePoly) + "1\n1 0.5 0.5 1 0.1\n").find("not supported yet") != std::string::npos);
+}
