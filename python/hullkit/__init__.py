@@ -19,6 +19,7 @@ from . import _core
 __all__ = [
     "HullkitError", "Hull", "hull", "verify", "HullBuilder", "Delaunay", "delaunay", "verify_delaunay",
     "Delaunay3", "delaunay3", "verify_delaunay3", "check_route", "RouteChecker", "read_points", "read_mesh",
+    "triangulate", "triangulate_polygon",
 ]
 __version__ = "0.1.0"
 
@@ -559,3 +560,6 @@ def read_mesh(path):
         raise HullkitError(f"{path}: cannot open: {error.strerror}") from None
     with _translated():
         return _core.read_mesh(data, path)
+
+
+from .constrained import triangulate, triangulate_polygon  # noqa: E402  (needs the names above)

@@ -14,6 +14,7 @@ from ._core import _DelaunayReport, _Delaunay3Report, _HullDict, _HullReport
 __all__ = [
     "HullkitError", "Hull", "hull", "verify", "HullBuilder", "Delaunay", "delaunay", "verify_delaunay",
     "Delaunay3", "delaunay3", "verify_delaunay3", "check_route", "RouteChecker", "read_points", "read_mesh",
+    "triangulate", "triangulate_polygon",
 ]
 __version__: str
 
@@ -140,3 +141,5 @@ class RouteChecker:
 def check_route(scene: _Scene, clearance: bool = ..., samples: int = ..., threads: int = ...) -> dict[str, Any]: ...
 def read_points(path: _Path, threads: int = ...) -> NDArray[np.float64]: ...
 def read_mesh(path: _Path) -> tuple[NDArray[np.float64], NDArray[np.uint32]]: ...
+
+from .constrained import triangulate as triangulate, triangulate_polygon as triangulate_polygon

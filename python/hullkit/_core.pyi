@@ -65,6 +65,15 @@ def surface_extras(
 def nested_lists(
     flat: NDArray[np.int64], offsets: NDArray[np.int64], rows: NDArray[np.int64], leading_empty: bool, /
 ) -> list[list[int]]: ...
+def constrained(
+    points: NDArray[np.float64],
+    segments: NDArray[np.uint32],
+    ring_starts: object,
+    fill: str,
+    convex: bool,
+    holes: NDArray[np.float64],
+    /,
+) -> tuple[NDArray[np.float64], NDArray[np.uint32], NDArray[np.int32], NDArray[np.uint8], NDArray[np.uint32], int]: ...
 def furthest_delaunay(
     points: NDArray[np.float64], hull: NDArray[np.uint32], /
 ) -> tuple[NDArray[np.int32], NDArray[np.int32], NDArray[np.int32], NDArray[np.float64], NDArray[np.int32]]: ...

@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "hullkit/constrained.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/delaunay3.hpp"
 #include "hullkit/hull.hpp"
@@ -255,6 +256,35 @@ void circle_centre(const double* a, const double* b, const double* c, double* ou
 /// triangles whose circumcircles coincide exactly, joined across their edges, share a number
 /// (0, 1, ... by first triangle); centres (groups, 2): each group's circumcentre; corners (h,)
 /// int32: the corners counter-clockwise from the lowest index).
+/// Constrained Delaunay triangulation: with `ring_starts` given (a polygon's rings) the triangles
+/// inside by `fill`; else the graph of `segments`, then without `convex` its exterior removed and
+/// the regions around `holes` (Triangle's .poly meaning). Returns (coords (m, 2), triangles (t, 3)
+/// clockwise, halfedges, constrained, representative, crossing_count).
+py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
+                      py::object ring_starts, const std::string& fill, bool convex, const Points& holes) {
+    const std::size_t n = rows(points, 2, "points");
+    const hullkit::PointSpan2 span(points.data(), n);
+    hullkit::ConstrainedDelaunay d;
+    if (!ring_starts.is_none()) {
+        const auto starts = ring_starts.cast<py::array_t<std::uint32_t, py::array::c_style>>();
+        hullkit::PolygonOptions options;
+        if (!hullkit::parse_fill_rule(fill, &options.fill)) throw std::invalid_argument("fill must be 'evenodd' or 'nonzero', got '" + fill + "'");
+        py::gil_scoped_release release;
+        d = hullkit::triangulate_polygon(span, starts.data(), static_cast<std::size_t>(starts.size()), options);
+    } else {
+        const std::size_t h = rows(holes, 2, "holes");
+        py::gil_scoped_release release;
+        d = hullkit::constrained_delaunay(span, segments.data(), static_cast<std::size_t>(segments.size()) / 2);
+        if (d.ok()) hullkit::remove_regions(d, !convex, hullkit::PointSpan2(holes.data(), h));
+    }
+    if (!d.ok()) throw CoreError(d.error, d.error_point >= 0 ? d.error_point : -1);
+    const auto triangles = static_cast<py::ssize_t>(d.triangle_count());
+    const std::size_t crossings = d.crossing_count;
+    return py::make_tuple(owned_points(std::move(d.coords), 2), owned(std::move(d.triangles), {triangles, 3}),
+                          owned(std::move(d.halfedges)), owned(std::move(d.constrained)), owned(std::move(d.representative)),
+                          crossings);
+}
+
 py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& hull) {
     const std::size_t n = rows(points, 2, "points");
     const std::size_t count = static_cast<std::size_t>(hull.size());
@@ -1456,6 +1486,7 @@ PYBIND11_MODULE(_core, m) {
     m.def("facet_holding", &facet_holding);
     m.def("nested_lists", &nested_lists);
     m.def("furthest_delaunay", &furthest_delaunay);
+    m.def("constrained", &constrained);
     m.def("verify_hull", &verify_hull);
     m.def("verify_delaunay", &verify_delaunay);
     m.def("verify_delaunay3", &verify_delaunay3, py::arg("points"), py::arg("tetrahedra"), py::arg("perturbed") = true);

@@ -149,3 +149,12 @@ def main() -> None:
 if __name__ == "__main__":
     main()
     print("typed_consumer: ok")
+
+# constrained triangulation: earcut's arguments and Triangle's dictionary
+polygon = hullkit.triangulate_polygon([0.0, 0.0, 4.0, 0.0, 4.0, 4.0, 0.0, 4.0, 1.0, 1.0, 3.0, 1.0, 3.0, 3.0, 1.0, 3.0], [4])
+polygon_triangles: NDArray[np.uint32] = polygon["triangles"]
+crossings: int = polygon["crossing_count"]
+assert polygon_triangles.shape == (8, 3) and crossings == 0
+mesh = hullkit.triangulate({"vertices": [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], "segments": [[0, 1]]}, "pcn")
+neighbors: NDArray[np.int32] = mesh["neighbors"]
+assert mesh["triangles"].shape == (1, 3) and neighbors.shape == (1, 3)

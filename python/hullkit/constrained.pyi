@@ -1,0 +1,28 @@
+from typing import Any, Literal, TypedDict
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from typing_extensions import NotRequired
+
+__all__ = ["triangulate", "triangulate_polygon"]
+
+class _PolygonResult(TypedDict):
+    coords: NDArray[np.float64]
+    triangles: NDArray[np.uint32]
+    halfedges: NDArray[np.int32]
+    constrained: NDArray[np.uint8]
+    representative: NDArray[np.uint32]
+    crossing_count: int
+
+class _TriangleResult(TypedDict):
+    vertices: NDArray[np.float64]
+    triangles: NDArray[np.uint32]
+    segments: NDArray[np.int32]
+    edges: NotRequired[NDArray[np.int32]]
+    neighbors: NotRequired[NDArray[np.int32]]
+    holes: NotRequired[NDArray[np.float64]]
+
+def triangulate_polygon(
+    coords: ArrayLike, hole_indices: ArrayLike | None = None, fill: Literal["evenodd", "nonzero"] = "evenodd"
+) -> _PolygonResult: ...
+def triangulate(tri: dict[str, Any], opts: str = "", *, convex: bool = False) -> _TriangleResult: ...

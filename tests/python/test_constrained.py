@@ -1,0 +1,91 @@
+"""hullkit.triangulate_polygon and hullkit.triangulate (Triangle's dictionary and switches):
+checked exactly with fractions (orientation, area), against scipy's Delaunay (Qhull) where no
+segment constrains anything, and for their errors."""
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import scipy.spatial
+
+import hullkit
+
+SQUARE_WITH_HOLE = {
+    "vertices": [[0, 0], [4, 0], [4, 4], [0, 4], [1, 1], [3, 1], [3, 3], [1, 3]],
+    "segments": [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4]],
+    "holes": [[2, 2]],
+}
+
+
+def twice_areas(points, triangles):
+    """Exact twice-areas of the triangles (positive counter-clockwise)."""
+    out = []
+    for a, b, c in triangles:
+        (ax, ay), (bx, by), (cx, cy) = (map(Fraction, points[i]) for i in (a, b, c))
+        out.append((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+    return out
+
+
+def test_triangulate_polygon_square_with_hole_and_bowtie():
+    r = hullkit.triangulate_polygon([0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3], [4])
+    areas = twice_areas(r["coords"], r["triangles"])
+    assert all(a < 0 for a in areas)  # clockwise with y up, as hullkit.delaunay's
+    assert -sum(areas) == 24
+    assert r["triangles"].shape == (8, 3) and r["constrained"].shape == (24,)
+    filled = hullkit.triangulate_polygon(np.array([[0, 0], [4, 0], [4, 4], [0, 4], [1, 1], [3, 1], [3, 3], [1, 3]]), [4], fill="nonzero")
+    assert -sum(twice_areas(filled["coords"], filled["triangles"])) == 32
+    bowtie = hullkit.triangulate_polygon([[0, 0], [2, 2], [2, 0], [0, 2]])
+    assert bowtie["crossing_count"] == 1
+    assert bowtie["coords"][4].tolist() == [1.0, 1.0]
+    assert -sum(twice_areas(bowtie["coords"], bowtie["triangles"])) == 4
+
+
+def test_triangulate_as_triangle_takes_it():
+    t = hullkit.triangulate(SQUARE_WITH_HOLE, "pneQ")
+    areas = twice_areas(t["vertices"], t["triangles"])
+    assert all(a > 0 for a in areas)  # counter-clockwise, as Triangle's
+    assert sum(areas) == 24
+    assert {tuple(sorted(s)) for s in t["segments"].tolist()} == {tuple(sorted(s)) for s in SQUARE_WITH_HOLE["segments"]}
+    assert len(t["edges"]) == 16
+    # neighbors[t][k] is across from corner k: it shares the two other corners.
+    for i, row in enumerate(t["neighbors"]):
+        for k, n in enumerate(row):
+            if n >= 0:
+                shared = set(t["triangles"][i]) - {t["triangles"][i][k]}
+                assert shared <= set(t["triangles"][n])
+    # Without the hole point the hole is meshed; without p, segments are not used at all.
+    no_hole = {k: v for k, v in SQUARE_WITH_HOLE.items() if k != "holes"}
+    assert sum(twice_areas(*(lambda d: (d["vertices"], d["triangles"]))(hullkit.triangulate(no_hole, "p")))) == 32
+
+
+def test_triangulate_without_constraints_is_scipys_delaunay():
+    rng = np.random.default_rng(4)
+    points = rng.random((500, 2))
+    ours = hullkit.triangulate({"vertices": points})
+    theirs = scipy.spatial.Delaunay(points)
+    assert {tuple(sorted(t)) for t in ours["triangles"].tolist()} == {tuple(sorted(t)) for t in theirs.simplices.tolist()}
+
+
+def test_triangulate_pslg_exterior_and_convex():
+    l_shape = {"vertices": [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]], "segments": [[i, (i + 1) % 6] for i in range(6)]}
+    assert sum(twice_areas(*(lambda d: (d["vertices"], d["triangles"]))(hullkit.triangulate(l_shape, "p")))) == 6
+    assert sum(twice_areas(*(lambda d: (d["vertices"], d["triangles"]))(hullkit.triangulate(l_shape, "pc")))) == 7
+    assert sum(twice_areas(*(lambda d: (d["vertices"], d["triangles"]))(hullkit.triangulate(l_shape, "p", convex=True)))) == 7
+
+
+def test_clear_errors():
+    with pytest.raises(hullkit.HullkitError, match="switch 'q' \\(quality meshing"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pq30")
+    with pytest.raises(hullkit.HullkitError, match="'regions'"):
+        hullkit.triangulate({**SQUARE_WITH_HOLE, "regions": [[0.5, 0.5, 1, 0]]}, "p")
+    with pytest.raises(hullkit.HullkitError, match="unknown switch '!'"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "p!")
+    with pytest.raises(hullkit.HullkitError, match="must index the 8 vertices"):
+        hullkit.triangulate({**SQUARE_WITH_HOLE, "segments": [[0, 8]]}, "p")
+    with pytest.raises(hullkit.HullkitError, match="fill must be"):
+        hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1], fill="winding")
+    with pytest.raises(hullkit.HullkitError, match="hole_indices"):
+        hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1, 1, 1], [3, 1])
+    with pytest.raises(hullkit.HullkitError) as error:
+        hullkit.triangulate_polygon([0, 0, 1, 0, np.nan, 1])
+    assert error.value.point == 2
