@@ -70,8 +70,8 @@ export default async function createHullkit() {
  * has run a while, in the background, for its next call; a user's single big hull() or delaunay()
  * would otherwise run entirely in the baseline tier (about 1.5 to 2 times as slow). The inputs take
  * every hot path: 10,000 points in a cube (interior culling, repeats), 10,000 on a sphere (every
- * point a vertex; over 4,096 candidates take the Morton-order path as large inputs do) and 4,000
- * points in a square for Delaunay. About 100-200 ms of loading time; the results are discarded. The
+ * point a vertex; over 4,096 candidates take the Morton-order path as large inputs do), 4,000
+ * points in a square for Delaunay and a ring of 2,000 vertices with a hole for triangulatePolygon. About 100-200 ms of loading time; the results are discarded. The
  * points are deterministic (a fixed generator); only the number of rounds depends on timing.
  */
 async function warmUp(core) {
@@ -96,12 +96,22 @@ async function warmUp(core) {
   // tier against 1.4 s once the code is optimised. 4,000 points in a square are enough.
   const xy = new Float64Array(2 * 4000);
   for (let i = 0; i < xy.length; i++) xy[i] = next();
+  // triangulatePolygon's own code (segment insertion, the inside flood): a 2,000-vertex star-shaped
+  // ring with a hole, its vertices from the same generator.
+  const ring = [];
+  for (let k = 0; k < 2000; k++) {
+    const angle = (2 * Math.PI * k) / 2000;
+    const r = k < 1600 ? 2 + next() : 0.5 + 0.2 * next();
+    ring.push(r * Math.cos(k < 1600 ? (angle * 2000) / 1600 : -(angle * 2000) / 400), r * Math.sin(k < 1600 ? (angle * 2000) / 1600 : -(angle * 2000) / 400));
+  }
+  const polygon = Float64Array.from(ring);
   let previous = Infinity;
   for (let round = 0; round < 6; round++) {
     const start = performance.now();
     hull(core, xyz.subarray(0, 3 * cubeCount));
     hull(core, xyz.subarray(3 * cubeCount));
     delaunay(core, xy);
+    triangulatePolygon(core, polygon, [1600]);
     const seconds = performance.now() - start;
     await new Promise((resolve) => setTimeout(resolve, 0));
     if (round >= 2 && seconds > 0.85 * previous) break;

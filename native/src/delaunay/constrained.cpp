@@ -232,6 +232,8 @@ public:
 
 private:
 #ifdef HULLKIT_CDT_DEBUG
+    /// With -DHULLKIT_CDT_DEBUG: the whole mesh checked after every step (twins, flags, orientation,
+    /// local Delaunay away from segments, each vertex's half-edge); aborts on the first problem.
     void check(const std::string& where) const {
         for (std::uint32_t e = 0; e < vertex_.size(); ++e) {
             if (vertex_[e] == kDead) continue;
@@ -408,8 +410,7 @@ private:
         rounded_crossing(pt(s.a), pt(s.b), pt(x), pt(y), p);
         const std::uint32_t q = insert_point(p, e / 3);
 #ifdef HULLKIT_CDT_DEBUG
-        std::fprintf(stderr, "cross %u-%u with %u-%u at %u\n", s.a, s.b, x, y, q);
-        check("after crossing point");
+        check("after the crossing point");
 #endif
         if (internal_error_) {
             return fail(s, "internal error: the crossing of segment " + std::to_string(s.input) +

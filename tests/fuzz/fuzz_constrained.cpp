@@ -1,0 +1,110 @@
+// libFuzzer target: hullkit::constrained_delaunay and hullkit::triangulate_polygon on arbitrary
+// bytes. The first byte picks how points are read (as fuzz_delaunay: (0) doubles, NaN and extreme
+// magnitudes included; (1) int8 pairs: grids, collinear runs, repeats and crossings; (2) int8 pairs
+// scaled by 2^-30 far from the origin; (3) int16 pairs), whether they form rings (bit 2) and the
+// fill rule (bit 3); the second byte how rings split or which pairs are segments. Checked:
+//  - a returned triangulation passes the exact verify_constrained (valid, no overlap, unflagged
+//    edges locally Delaunay; polygons: every boundary edge on a ring; graphs: covers the hull);
+//  - graphs: the ends of every segment are joined by a chain of flagged edges (one component);
+//  - representatives are the lowest index with the same coordinates; triangles name only them or
+//    added points; an error is one line and leaves no triangles.
+// Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "hullkit/constrained.hpp"
+
+namespace {
+
+std::vector<double> read_points(const std::uint8_t* data, std::size_t size, int mode) {
+    std::vector<double> xy;
+    if (mode == 0) {
+        xy.resize(size / 16 * 2);
+        if (!xy.empty()) std::memcpy(xy.data(), data, 8 * xy.size());
+    } else if (mode == 1 || mode == 2) {
+        for (std::size_t i = 0; i + 1 < size; i += 2) {
+            const double x = static_cast<std::int8_t>(data[i]), y = static_cast<std::int8_t>(data[i + 1]);
+            if (mode == 1) xy.insert(xy.end(), {x, y});
+            else xy.insert(xy.end(), {1e6 + std::ldexp(x, -30), -1e6 + std::ldexp(y, -30)});
+        }
+    } else {
+        for (std::size_t i = 0; i + 3 < size; i += 4) {
+            xy.push_back(static_cast<std::int16_t>(data[i] | data[i + 1] << 8));
+            xy.push_back(static_cast<std::int16_t>(data[i + 2] | data[i + 3] << 8));
+        }
+    }
+    return xy;
+}
+
+void check(bool condition) {
+    if (!condition) std::abort();
+}
+
+/// Components of the graph of flagged edges (union-find): two points are joined by a chain of
+/// flagged edges exactly when they are in one component.
+struct Components {
+    std::vector<std::uint32_t> parent;
+    explicit Components(const hullkit::ConstrainedDelaunay& d) : parent(d.coords.size() / 2) {
+        for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);
+        for (std::size_t e = 0; e < d.triangles.size(); ++e)
+            if (d.constrained[e]) parent[find(d.triangles[e])] = find(d.triangles[e % 3 == 2 ? e - 2 : e + 1]);
+    }
+    std::uint32_t find(std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 2) return 0;
+    const int mode = data[0] & 3;
+    const bool polygon = data[0] & 4;
+    const hullkit::FillRule fill = data[0] & 8 ? hullkit::FillRule::NonZero : hullkit::FillRule::EvenOdd;
+    const unsigned pick = data[1];
+    const std::vector<double> xy = read_points(data + 2, size - 2, mode);
+    const hullkit::PointSpan2 points(xy);
+    const std::uint32_t n = static_cast<std::uint32_t>(points.count);
+    hullkit::ConstrainedDelaunay d;
+    std::vector<std::uint32_t> segments;
+    if (polygon) {
+        std::vector<std::uint32_t> starts;
+        const std::uint32_t ring = pick % 9 + 3;
+        for (std::uint32_t s = ring; s < n; s += ring) starts.push_back(s);
+        hullkit::PolygonOptions options;
+        options.fill = fill;
+        options.threads = 1;
+        d = hullkit::triangulate_polygon(points, starts.data(), starts.size(), options);
+    } else if (n > 0) {
+        const std::uint32_t step = pick % 7 + 1;
+        for (std::uint32_t i = 0; i < n; i += 2) segments.insert(segments.end(), {i, static_cast<std::uint32_t>((i * step + pick) % n)});
+        hullkit::ConstrainedOptions options;
+        options.threads = 1;
+        d = hullkit::constrained_delaunay(points, segments.data(), segments.size() / 2, options);
+    }
+    if (!d.ok()) {
+        check(d.error.find('\n') == std::string::npos);
+        check(d.triangles.empty());
+        return 0;
+    }
+    check(d.representative.size() == n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t r = d.representative[i];
+        check(r <= i && xy[2 * r] == xy[2 * i] && xy[2 * r + 1] == xy[2 * i + 1]);
+    }
+    for (std::uint32_t v : d.triangles) check(v >= n || d.representative[v] == v);
+    const hullkit::ConstrainedVerifyReport report = hullkit::verify_constrained(
+        hullkit::PointSpan2(d.coords), d.triangles.data(), d.triangle_count(), d.halfedges.data(), d.constrained.data(), polygon);
+    check(report.ok);
+    if (!polygon && d.dimension == 2) {
+        Components components(d);
+        for (std::size_t k = 0; k < segments.size(); k += 2)
+            check(components.find(d.representative[segments[k]]) == components.find(d.representative[segments[k + 1]]));
+    }
+    return 0;
+}
