@@ -3,8 +3,8 @@
 // The working mesh is the incremental algorithm's (incremental.cpp): counter-clockwise triangles
 // (3 vertices each, y up) with twin half-edges, closed by ghost triangles whose third corner is the
 // point at infinity (kGhost). Half-edge e = 3t + k goes from corner k to corner k + 1. Per half-edge
-// two numbers describe the segments along it: `count_` (how many input segments lie on it; the
-// same for both halves, > 0 means constrained) and `wind_` (those running the half-edge's way minus
+// two numbers describe the segments along it: count (how many input segments lie on it; the
+// same for both halves, > 0 means constrained) and wind (those running the half-edge's way minus
 // those running against it; opposite for the two halves) which decides a polygon's inside.
 #include "hullkit/constrained.hpp"
 
@@ -148,9 +148,8 @@ public:
             ghost_in.push_back(3 * g + 2);
         }
         for (std::uint32_t e : ghost_in) link(e, ghost_out[vertex_[next_edge(e)]]);
-        wind_.assign(vertex_.size(), 0);
-        count_.assign(vertex_.size(), 0);
-        origin_.assign(vertex_.size(), kGhost);
+        edge_.assign(vertex_.size(), 0);
+        records_.assign(1, Record{0, 0, kGhost, kGhost});
         for (std::uint32_t e = 0; e < vertex_.size(); ++e)
             if (vertex_[e] != kGhost) out_[vertex_[e]] = e;
     }
@@ -188,7 +187,7 @@ public:
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const std::uint32_t u = twin_[e] / 3;
                 if (winding[u] != std::numeric_limits<std::int64_t>::min()) continue;
-                winding[u] = fill == FillRule::EvenOdd ? (winding[t] ^ (count_[e] & 1)) : winding[t] - wind_[e];
+                winding[u] = fill == FillRule::EvenOdd ? (winding[t] ^ (count(e) & 1)) : winding[t] - wind(e);
                 stack.push_back(u);
             }
         }
@@ -222,7 +221,7 @@ public:
                 const std::uint32_t f = twin_[e];
                 const std::int32_t u = index[f / 3];
                 out.halfedges[base + j] = u < 0 ? -1 : 3 * u + 2 - static_cast<std::int32_t>(f % 3);
-                out.constrained[base + j] = count_[e] > 0;
+                out.constrained[base + j] = edge_[e] != 0;
             }
         }
         // Points added at crossings, back in the input's units (exact: a power of two).
@@ -243,7 +242,7 @@ private:
                 std::fprintf(stderr, "%s: bad twin at %u (%u->%u) twin %u\n", where.c_str(), e, vertex_[e], vertex_[next_edge(e)], f);
                 std::abort();
             }
-            if (wind_[e] != -wind_[f] || count_[e] != count_[f]) {
+            if (edge_[e] != edge_[f]) {
                 std::fprintf(stderr, "%s: flags differ at %u\n", where.c_str(), e);
                 std::abort();
             }
@@ -257,7 +256,7 @@ private:
             }
         }
         for (std::uint32_t e = 0; e < vertex_.size(); ++e) {
-            if (vertex_[e] == kDead || count_[e] > 0) continue;
+            if (vertex_[e] == kDead || edge_[e] != 0) continue;
             const std::uint32_t f = twin_[e];
             const std::uint32_t u = vertex_[e], v = vertex_[next_edge(e)], p = vertex_[prev_edge(e)], q = vertex_[prev_edge(f)];
             if (u == kGhost || v == kGhost || p == kGhost || q == kGhost) continue;
@@ -298,25 +297,40 @@ private:
             t = static_cast<std::uint32_t>(vertex_.size() / 3);
             vertex_.resize(vertex_.size() + 3);
             twin_.resize(twin_.size() + 3);
-            if (!wind_.empty()) wind_.resize(vertex_.size()), count_.resize(vertex_.size()), origin_.resize(vertex_.size());
+            if (!edge_.empty()) edge_.resize(vertex_.size());
         }
         vertex_[3 * t] = a, vertex_[3 * t + 1] = b, vertex_[3 * t + 2] = c;
-        if (!wind_.empty()) {
-            for (int k = 0; k < 3; ++k) wind_[3 * t + k] = 0, count_[3 * t + k] = 0, origin_[3 * t + k] = kGhost;
-        }
+        if (!edge_.empty()) edge_[3 * t] = edge_[3 * t + 1] = edge_[3 * t + 2] = 0;
         return t;
     }
     void remove_triangle(std::uint32_t t) {
         vertex_[3 * t] = vertex_[3 * t + 1] = vertex_[3 * t + 2] = kDead;
         free_.push_back(t);
     }
+    /// The segments along half-edge e: how many, their winding the way of e, one of them (kGhost: none).
+    std::uint32_t count(std::uint32_t e) const { return records_[edge_[e]].count; }
+    std::int32_t wind(std::uint32_t e) const {
+        const Record& r = records_[edge_[e]];
+        return vertex_[e] == r.from ? r.wind : -r.wind;
+    }
+    std::uint32_t origin(std::uint32_t e) const { return records_[edge_[e]].origin; }
+    /// Sets the segments along e (and its twin): `wind` the way of e; count 0 clears them.
     void set_flags(std::uint32_t e, std::int32_t wind, std::uint32_t count, std::uint32_t origin) {
-        wind_[e] = wind, count_[e] = count;
-        if (count == 0) origin = kGhost;
-        else if (origin_[e] != kGhost) origin = origin_[e];
-        origin_[e] = origin_[twin_[e]] = origin;
         const std::uint32_t f = twin_[e];
-        wind_[f] = -wind, count_[f] = count;
+        if (count == 0) {
+            edge_[e] = edge_[f] = 0;
+            return;
+        }
+        std::uint32_t r = edge_[e];
+        if (r == 0) {
+            r = static_cast<std::uint32_t>(records_.size());
+            records_.push_back(Record{0, 0, origin, vertex_[e]});
+            edge_[e] = edge_[f] = r;
+        }
+        Record& record = records_[r];
+        record.wind = vertex_[e] == record.from ? wind : -wind;
+        record.count = count;
+        if (record.origin == kGhost) record.origin = origin;
     }
 
     /// The half-edge a -> b, or kGhost when a and b are not joined.
@@ -340,7 +354,7 @@ private:
         const std::uint32_t a = s.a, b = s.b;
         const std::uint32_t existing = find_edge(a, b);
         if (existing != kGhost) {
-            set_flags(existing, wind_[existing] + s.wind, count_[existing] + s.count, s.input);
+            set_flags(existing, wind(existing) + s.wind, count(existing) + s.count, s.input);
             return true;
         }
         // The triangle at a whose wedge holds the direction to b, or a vertex on the way.
@@ -359,7 +373,7 @@ private:
         // Walk over the crossed edges: each goes from the right of a -> b to its left.
         crossed_.clear();
         for (;;) {
-            if (count_[crossed] > 0) return cross(s, crossed);
+            if (edge_[crossed] != 0) return cross(s, crossed);
             crossed_.push_back(crossed);
             const std::uint32_t f = twin_[crossed];  // y -> x in the next triangle (y, x, w)
             const std::uint32_t w = vertex_[prev_edge(f)];
@@ -377,7 +391,7 @@ private:
 
     /// The segment passes through vertex v (joined to a by half-edge e = a -> v): a-v is an edge.
     bool split_at(const Segment& s, std::uint32_t v, std::uint32_t e) {
-        set_flags(e, wind_[e] + s.wind, count_[e] + s.count, s.input);
+        set_flags(e, wind(e) + s.wind, count(e) + s.count, s.input);
         pending_.push_back({v, s.b, s.wind, s.count, s.input});
         return true;
     }
@@ -393,7 +407,7 @@ private:
     bool cross(const Segment& s, std::uint32_t e) {
         ++crossings;
         const std::uint32_t x = vertex_[e], y = vertex_[next_edge(e)];
-        const Segment other{x, y, wind_[e], count_[e], origin_[e]};
+        const Segment other{x, y, wind(e), count(e), origin(e)};
         // Iterated rounding settles after one or two points per crossing pair; a pair that keeps
         // crossing (or a total past the caller's cap) is an error rather than a long run.
         const auto pair = std::make_pair(std::min(s.input, other.input), std::max(s.input, other.input));
@@ -462,7 +476,7 @@ private:
             else fresh_.push_back({p, q});
         }
         const std::uint32_t ab = find_edge(a, b);
-        set_flags(ab, wind_[ab] + s.wind, count_[ab] + s.count, s.input);
+        set_flags(ab, wind(ab) + s.wind, count(ab) + s.count, s.input);
         // Restore the empty-circle property across the new edges (never across a segment).
         legalize();
         return true;
@@ -475,7 +489,7 @@ private:
             const Edge edge = fresh_.back();
             fresh_.pop_back();
             const std::uint32_t e = find_edge(edge.from, edge.to);
-            if (e == kGhost || count_[e] > 0) continue;
+            if (e == kGhost || edge_[e] != 0) continue;
             const std::uint32_t p = vertex_[prev_edge(e)], q = vertex_[prev_edge(twin_[e])];
             if (p == kGhost || q == kGhost) continue;
             const double *pu = pt(edge.from), *pv = pt(edge.to), *pp = pt(p), *pq = pt(q);
@@ -501,16 +515,14 @@ private:
         vertex_[3 * t2] = q, vertex_[3 * t2 + 1] = v, vertex_[3 * t2 + 2] = p;
         auto outer = [&](std::uint32_t h, std::uint32_t outside) {
             link(h, outside);
-            wind_[h] = -wind_[outside], count_[h] = count_[outside], origin_[h] = origin_[outside];
+            edge_[h] = edge_[outside];
         };
         outer(3 * t, pu);
         outer(3 * t + 1, uq);
         outer(3 * t2, qv);
         outer(3 * t2 + 1, vp);
         link(3 * t + 2, 3 * t2 + 2);
-        wind_[3 * t + 2] = wind_[3 * t2 + 2] = 0;
-        count_[3 * t + 2] = count_[3 * t2 + 2] = 0;
-        origin_[3 * t + 2] = origin_[3 * t2 + 2] = kGhost;
+        edge_[3 * t + 2] = edge_[3 * t2 + 2] = 0;
         out_[p] = 3 * t, out_[u] = 3 * t + 1, out_[q] = 3 * t2, out_[v] = 3 * t2 + 1;
     }
 
@@ -591,8 +603,8 @@ private:
         Segment split{kGhost, kGhost, 0, 0, 0};
         if (on_edge != kGhost) {
             cavity.push_back(twin_[on_edge] / 3);
-            if (count_[on_edge] > 0)
-                split = {vertex_[on_edge], vertex_[next_edge(on_edge)], wind_[on_edge], count_[on_edge], origin_[on_edge]};
+            if (edge_[on_edge] != 0)
+                split = {vertex_[on_edge], vertex_[next_edge(on_edge)], wind(on_edge), count(on_edge), origin(on_edge)};
         }
         boundary_.clear();
         // Outside the hull, the ghosts (and triangles) in conflict, as Bowyer-Watson finds them;
@@ -603,7 +615,7 @@ private:
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const std::uint32_t u = twin_[e] / 3;
                 if (in_cavity(u)) continue;
-                if (count_[e] == 0 && conflicts(u, p)) {
+                if (edge_[e] == 0 && conflicts(u, p)) {
                     cavity.push_back(u);
                     continue;
                 }
@@ -611,7 +623,7 @@ private:
         }
         for (std::uint32_t t : cavity) {
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-                if (!in_cavity(twin_[e] / 3)) boundary_.push_back({vertex_[e], vertex_[next_edge(e)], twin_[e], wind_[e], count_[e], origin_[e]});
+                if (!in_cavity(twin_[e] / 3)) boundary_.push_back({vertex_[e], vertex_[next_edge(e)], twin_[e], edge_[e]});
             }
         }
         // The cavity must be star-shaped from p and keep every segment but the one p splits; with
@@ -626,7 +638,7 @@ private:
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const bool split_edge = split.a != kGhost && ((vertex_[e] == split.a && vertex_[next_edge(e)] == split.b) ||
                                                               (vertex_[e] == split.b && vertex_[next_edge(e)] == split.a));
-                if (count_[e] > 0 && !split_edge && in_cavity(twin_[e] / 3)) {
+                if (edge_[e] != 0 && !split_edge && in_cavity(twin_[e] / 3)) {
                     internal_error_ = true;
                     return kGhost;
                 }
@@ -642,7 +654,7 @@ private:
             const std::uint32_t t = add_triangle(b.from, b.to, q);
             const std::uint32_t h = 3 * t;
             link(h, b.outside);
-            wind_[h] = b.wind, count_[h] = b.count, origin_[h] = b.origin;
+            edge_[h] = b.record;
             attach(h + 1);
             attach(h + 2);
             for (std::uint32_t k = 0; k < 3; ++k)
@@ -662,9 +674,15 @@ private:
 
     struct BoundaryEdge {
         std::uint32_t from, to, outside;
+        std::uint32_t record;  ///< its segments (edge_)
+    };
+    /// The segments along one edge: their number, their winding the way of the half-edge leaving
+    /// `from`, and one of them (for messages).
+    struct Record {
         std::int32_t wind;
         std::uint32_t count;
         std::uint32_t origin;
+        std::uint32_t from;
     };
     struct Edge {
         std::uint32_t from, to;
@@ -674,9 +692,10 @@ private:
     std::size_t input_count_;
     std::size_t max_added_;
     std::vector<std::uint32_t> vertex_, twin_;
-    std::vector<std::int32_t> wind_;
-    std::vector<std::uint32_t> count_;
-    std::vector<std::uint32_t> origin_;  ///< per half-edge: an input segment lying on it, kGhost if none
+    /// Per half-edge, its Record in records_ (the same for both halves), 0 when no segment lies on it:
+    /// one number per half-edge, the records only for the few edges on segments.
+    std::vector<std::uint32_t> edge_;
+    std::vector<Record> records_;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> pair_crossings_;
     static constexpr std::uint32_t kMaxPairCrossings = 16;
     std::vector<std::uint32_t> out_;  ///< per vertex: a half-edge leaving it

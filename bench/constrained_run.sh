@@ -1,0 +1,191 @@
+#!/usr/bin/env bash
+# The constrained Delaunay benchmark (issue 31), side by side in one go, and its report:
+#   1. builds, in build/bench, hullkit_constrained_cgal_bench (CGAL alone: must build) and
+#      hullkit_constrained_bench (CGAL + hullkit's core: when it does not build, e.g. while the core's
+#      constrained_delaunay is being written, hullkit's native rows say "not available" and the rest
+#      runs); rebuilds the wasm module when the core changed since (scripts/build.sh wasm; a failure
+#      leaves the module as it was);
+#   2. writes the inputs to bench/out/constrained/ (bench/constrained_inputs.mjs): polygons with holes
+#      (lakes, building footprints, repeated vertices, a spiky star, a grid of holes) and a planar
+#      straight-line graph (1e6 points, 1e5 segments);
+#   3. runs every implementation x input, one process each, one after the other (never two at once:
+#      the machine has 2 cores), collecting JSON lines in bench/out/constrained/results.jsonl:
+#        native  hullkit (triangulate_polygon / constrained_delaunay), cgal-cdt (CGAL's CDT + nesting
+#                levels), cgal-mesh (Delaunay_mesher_2, polygons: time and triangle count only);
+#                on the graph also hullkit with --threads 1 (kind native-1thread)
+#        js      hullkit (wasm triangulatePolygon / constrainedDelaunay), earcut, constrainautor
+#                (delaunator + @kninnug/constrainautor), cdt2d, poly2tri (bench/constrained_js_bench.mjs)
+#      Every triangulation is checked after its timed runs (bench/constrained_common.mjs: exactly the
+#      polygon covered once, or the graph's hull with every segment): the JS processes check their
+#      own first result; the native ones dump it (--dump) for bench/constrained_check.mjs. Each row
+#      gets a verdict: ok, wrong (with the reason), exception (a call threw / returned an error),
+#      timeout, crash, not available (hullkit's binding or core is not there yet);
+#   4. bench/constrained_report.mjs writes bench/results-constrained.md (quick mode:
+#      bench/out/constrained/results-constrained.md) and prints the targets summary.
+# Environment:
+#   HULLKIT_BENCH_QUICK=1     smoke test: no lake-1e5, graph of 1e4 points / 1e3 segments, 3 runs each,
+#                             20 s per process at most (about 2-3 minutes)
+#   HULLKIT_BENCH_NO_BUILD=1  use the built binaries and wasm module as they are
+#   HULLKIT_BENCH_NO_WASM_BUILD=1  build the native programs but use the wasm module as it is
+#   HULLKIT_BENCH_BUILD=DIR   the native build directory (default build/bench)
+#   HULLKIT_BENCH_TIMEOUT=S   stop a process after S seconds (default 600; quick 20); cgal-mesh gets
+#                             at most a fifth of it (its refinement can run away on tiny input angles)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=bench/out/constrained
+mkdir -p "$out"
+quick=${HULLKIT_BENCH_QUICK:-0}
+build=${HULLKIT_BENCH_BUILD:-build/bench}
+if [ "$quick" = 1 ]; then timeout_s=${HULLKIT_BENCH_TIMEOUT:-20}; else timeout_s=${HULLKIT_BENCH_TIMEOUT:-600}; fi
+mesh_timeout_s=$((timeout_s / 5 > 10 ? timeout_s / 5 : 10))
+started=$(date +%s)
+load=$(cut -d " " -f 1 /proc/loadavg 2>/dev/null || echo "")
+say() { printf '%s\n' "$*" >&2; }
+case $build in /*) ;; *) build=$PWD/$build ;; esac
+cgal_bench=$build/hullkit_constrained_cgal_bench
+hullkit_bench=$build/hullkit_constrained_bench
+hullkit_native_missing=""   # why hullkit's native rows are not available, when they are not
+
+# ---- 1. build
+if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ]; then
+  say "constrained bench: building $build"
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DHULLKIT_TESTS=OFF -DHULLKIT_BENCH=ON >"$out/build.log" 2>&1 ||
+    { tail -n 30 "$out/build.log" >&2; exit 1; }
+  cmake --build "$build" -j 2 --target hullkit_constrained_cgal_bench >>"$out/build.log" 2>&1 ||
+    { tail -n 30 "$out/build.log" >&2; say "constrained bench: hullkit_constrained_cgal_bench does not build"; exit 1; }
+  if [ ! -f native/include/hullkit/constrained.hpp ]; then
+    hullkit_native_missing="native/include/hullkit/constrained.hpp is not there yet"
+  elif ! cmake --build "$build" -j 2 --target hullkit_constrained_bench >"$out/build-hullkit.log" 2>&1; then
+    hullkit_native_missing="hullkit_constrained_bench does not build (hullkit's core): $(grep -m 1 -E 'error|undefined reference' "$out/build-hullkit.log" | cut -c1-200)"
+    say "constrained bench: $hullkit_native_missing (log: $out/build-hullkit.log)"
+  fi
+  wasm=build/wasm/hullkit_core.wasm
+  if [ "${HULLKIT_BENCH_NO_WASM_BUILD:-0}" = 1 ]; then
+    :
+  elif [ ! -f "$wasm" ] || [ -n "$(find native/src native/include wasm CMakeLists.txt -newer "$wasm" -type f 2>/dev/null | head -n 1)" ]; then
+    say "constrained bench: the core changed since the wasm build: bash scripts/build.sh wasm"
+    bash scripts/build.sh wasm >"$out/build-wasm.log" 2>&1 ||
+      say "constrained bench: the wasm build failed (log: $out/build-wasm.log); the wasm rows use the module as it was"
+  fi
+fi
+[ -x "$cgal_bench" ] || { say "constrained bench: $cgal_bench is missing (unset HULLKIT_BENCH_NO_BUILD)"; exit 1; }
+if [ -z "$hullkit_native_missing" ] && [ ! -x "$hullkit_bench" ]; then
+  hullkit_native_missing="$hullkit_bench is not built"
+fi
+
+# ---- 2. inputs
+if [ "$quick" = 1 ]; then
+  node bench/constrained_inputs.mjs --quick
+  list=$out/inputs-quick.json
+  results=$out/results-quick.jsonl
+else
+  node bench/constrained_inputs.mjs
+  list=$out/inputs.json
+  results=$out/results.jsonl
+fi
+mapfile -t polygons < <(node -e 'for (const i of JSON.parse(require("fs").readFileSync(process.argv[1]))) if (i.kind === "polygon") console.log(i.name)' "$list")
+mapfile -t graphs < <(node -e 'for (const i of JSON.parse(require("fs").readFileSync(process.argv[1]))) if (i.kind === "graph") console.log(i.name)' "$list")
+: >"$results"
+
+# runs_for INPUT [mesh|js]: 3 in quick mode; 5 at 1e5/1e6 (3 for the JS graph and meshes), 7 at 1e4, 21 at 1e3.
+runs_for() {
+  if [ "$quick" = 1 ]; then echo 3; return; fi
+  case $1 in
+    graph-*) [ "${2:-}" = js ] && echo 3 || echo 5 ;;
+    *-1e5) [ "${2:-}" = mesh ] && echo 3 || echo 5 ;;
+    *-1e4) [ "${2:-}" = mesh ] && echo 3 || echo 7 ;;
+    *) echo 21 ;;
+  esac
+}
+
+# record KIND LINE: tags a result line with its kind, appends it and prints a progress line.
+record() {
+  local line
+  line=$(node -e 'const r = JSON.parse(process.argv[1]); r.kind_of_run = process.argv[2]; console.log(JSON.stringify(r))' "$2" "$1")
+  printf '%s\n' "$line" >>"$results"
+  node -e '
+    const r = JSON.parse(process.argv[1]);
+    const f = (s) => (s == null ? "-" : s < 0.1 ? `${(s * 1000).toPrecision(3)} ms` : `${s.toPrecision(3)} s`);
+    const what = r.first == null ? "" : `first ${f(r.first)}, warm ${f(r.warm)}, ${r.triangles ?? "?"} triangles, `;
+    console.error(`constrained bench: ${r.kind_of_run} ${r.impl} ${r.input}: ${what}${r.verdict}` +
+      (r.t_junctions ? ` with ${r.t_junctions} T-junction line(s)` : "") +
+      (r.reason ? ` (${r.reason.slice(0, 120)})` : r.error ? ` (${r.error.slice(0, 120)})` : ""));
+  ' "$line"
+}
+
+# failure_line IMPL INPUT VERDICT ERROR: a result line for a run that printed none.
+failure_line() {
+  node -e 'const [impl, input, verdict, error] = process.argv.slice(1); console.log(JSON.stringify({ impl, input, verdict, error }))' "$@"
+}
+
+# run_line IMPL INPUT SECONDS CMD...: runs one process (stopped after SECONDS) and prints its JSON line,
+# or a failure line (timeout / crash) when it printed none.
+run_line() {
+  local impl=$1 input=$2 limit=$3 line status=0
+  shift 3
+  line=$(timeout "$limit" "$@" 2>"$out/last_stderr.log") || status=$?
+  line=$(printf '%s\n' "$line" | grep '^{' | tail -n 1 || true)
+  if [ -z "$line" ]; then
+    if [ "$status" = 124 ]; then
+      failure_line "$impl" "$input" timeout "stopped after $limit s"
+    else
+      failure_line "$impl" "$input" crash "exit status $status: $(tail -c 300 "$out/last_stderr.log" | tr '\n' ' ')"
+    fi
+    return
+  fi
+  printf '%s\n' "$line"
+}
+
+# native_line IMPL INPUT BINARY [ARGS...]: a native run with --dump, then the check of the dump merged in.
+native_line() {
+  local impl=$1 input=$2 binary=$3 line check
+  shift 3
+  local dump=$out/dump-$impl-$input
+  rm -f "$dump.tri" "$dump.xy"
+  line=$(run_line "$impl" "$input" "$timeout_s" "$binary" --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input")" --budget 60 --dump "$dump" "$@")
+  if [ -f "$dump.tri" ] && node -e 'process.exit(JSON.parse(process.argv[1]).error ? 1 : 0)' "$line"; then
+    check=$(node bench/constrained_check.mjs --input "$out/$input.json" --dump "$dump" 2>/dev/null || echo '{"verdict":"wrong","reason":"the check failed"}')
+  else
+    check='{}'
+  fi
+  rm -f "$dump.tri" "$dump.xy"
+  node -e '
+    const r = JSON.parse(process.argv[1]), c = JSON.parse(process.argv[2]);
+    if (r.error && !r.verdict) r.verdict = r.error.startsWith("not available") ? "not available" : "exception";
+    if (!r.error) Object.assign(r, { verdict: c.verdict, reason: c.reason, area_error: c.area_error, t_junctions: c.t_junctions });
+    console.log(JSON.stringify(r));
+  ' "$line" "$check"
+}
+
+say "constrained bench: native runs (one process each; at most $timeout_s s, cgal-mesh $mesh_timeout_s s)"
+for input in "${polygons[@]}" "${graphs[@]}"; do
+  record native "$(native_line cgal-cdt "$input" "$cgal_bench")"
+  if [ -n "$hullkit_native_missing" ]; then
+    record native "$(failure_line hullkit "$input" "not available" "$hullkit_native_missing")"
+    case $input in graph-*) record native-1thread "$(failure_line hullkit "$input" "not available" "$hullkit_native_missing")" ;; esac
+  else
+    record native "$(native_line hullkit "$input" "$hullkit_bench")"
+  fi
+  case $input in
+    graph-*)
+      if [ -z "$hullkit_native_missing" ]; then
+        record native-1thread "$(native_line hullkit "$input" "$hullkit_bench" --threads 1)"
+      fi ;;
+    *)
+      record native "$(run_line cgal-mesh "$input" "$mesh_timeout_s" "$cgal_bench" --impl cgal-mesh --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30 |
+        node -e 'let s = ""; process.stdin.on("data", (d) => (s += d)).on("end", () => { const r = JSON.parse(s); if (!r.verdict) r.verdict = r.error ? "exception" : "ok"; console.log(JSON.stringify(r)); })')" ;;
+  esac
+done
+
+say "constrained bench: JavaScript runs (Node $(node --version))"
+for input in "${polygons[@]}" "${graphs[@]}"; do
+  case $input in graph-*) impls=(hullkit constrainautor cdt2d) ;; *) impls=(hullkit earcut constrainautor cdt2d poly2tri) ;; esac
+  for impl in "${impls[@]}"; do
+    record js "$(run_line "$impl" "$input" "$timeout_s" node --expose-gc --max-old-space-size=8192 bench/constrained_js_bench.mjs --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" js)" --budget 60)"
+  done
+done
+rm -f "$out/last_stderr.log"
+
+elapsed=$(($(date +%s) - started))
+say "constrained bench: all runs done in ${elapsed} s"
+node bench/constrained_report.mjs --quick "$quick" --elapsed "$elapsed" --load "$load" --inputs "$list" "$results"
