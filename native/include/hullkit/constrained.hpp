@@ -6,7 +6,8 @@
 // triangle's inside (visibility is blocked by segments). Built here in three steps, every decision
 // an exact orient2d or incircle (predicates.hpp) on the coordinates scaled by one power of two as
 // delaunay() scales them:
-//  1. delaunay() triangulates the points (duplicates merged: the representative map).
+//  1. The points are triangulated as delaunay() does it (duplicates merged: the representative map;
+//     Bowyer-Watson insertion in Hilbert order), its working mesh taken over as it is.
 //  2. Each segment is inserted by walking from one end to the other over the triangles it crosses.
 //     A point lying exactly on the segment splits it there (the pieces are inserted in turn). When
 //     nothing blocks the way, the crossed triangles are removed and the two polygons either side are
@@ -29,7 +30,11 @@
 // Output in delaunator's form, like delaunay(): triangles clockwise with y up, `halfedges` with -1
 // where no returned triangle is across, and per half-edge a flag saying it lies on a segment.
 // The same input gives the same arrays every time, for any thread count (the steps are one fixed
-// sequence; only delaunay() may use a second thread, and it returns the same bits either way).
+// sequence on the calling thread).
+//
+// Memory: about 60 bytes per point (the working mesh: 2 triangles per point, a vertex, a twin and a
+// segment index per half-edge) plus the output arrays; 10^6 points and 10^5 segments peak near
+// 200 MB including the input.
 #pragma once
 
 #include <cstddef>
@@ -49,8 +54,8 @@ enum class FillRule {
 };
 
 struct ConstrainedOptions {
-    /// Threads for step 1 (delaunay()): 0 lets a second thread help with large inputs, 1 keeps
-    /// everything on the calling thread. The result is the same.
+    /// Accepted for symmetry with DelaunayOptions; every step runs on the calling thread (the
+    /// result would be the same for any count).
     unsigned threads = 0;
     /// Stop with an error once this many points have been added at crossings (0: no overall cap).
     /// Independently, two input segments whose pieces have crossed 16 times are an error naming

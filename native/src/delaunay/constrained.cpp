@@ -119,39 +119,20 @@ public:
     std::int64_t error_segment = -1;
     std::size_t crossings = 0;
 
-    /// Takes the Delaunay triangulation of the first `n` points (xy scaled) as the working mesh.
-    Cdt(std::vector<double> xy, const Delaunay& d, std::size_t max_added)
+    /// Takes the incremental algorithm's Delaunay mesh (ghosts included, local indices mapped back
+    /// to the input's by `original`) as the working mesh; `xy` the input points scaled.
+    Cdt(std::vector<double> xy, delaunay_detail::Mesh&& mesh, const std::vector<std::uint32_t>& original, std::size_t max_added)
         : xy_(std::move(xy)), input_count_(xy_.size() / 2), max_added_(max_added) {
-        const std::size_t n = xy_.size() / 2;
-        const std::size_t t_count = d.triangle_count();
-        vertex_.resize(3 * t_count);
-        twin_.resize(3 * t_count);
-        out_.assign(n, kGhost);
-        for (std::size_t t = 0; t < t_count; ++t) {
-            // delaunator's clockwise (a, b, c) becomes (a, c, b); new edge j is old edge 2 - j.
-            const std::uint32_t a = d.triangles[3 * t], b = d.triangles[3 * t + 1], c = d.triangles[3 * t + 2];
-            vertex_[3 * t] = a, vertex_[3 * t + 1] = c, vertex_[3 * t + 2] = b;
-            for (std::uint32_t j = 0; j < 3; ++j) {
-                const std::int32_t old = d.halfedges[3 * t + 2 - j];
-                twin_[3 * t + j] = old < 0 ? kGhost : 3 * (old / 3) + 2 - old % 3;
-            }
+        vertex_ = std::move(mesh.vertex);
+        twin_ = std::move(mesh.twin);
+        out_.assign(input_count_, kGhost);
+        for (std::uint32_t e = 0; e < vertex_.size(); ++e) {
+            const std::uint32_t v = vertex_[e];
+            vertex_[e] = v == mesh.ghost ? kGhost : original[v];
+            if (v != mesh.ghost) out_[vertex_[e]] = e;
         }
-        // A ghost (y, x, G) outside every hull edge x -> y.
-        std::vector<std::uint32_t> ghost_out(n, kGhost);  // per hull vertex x: its edge x -> G
-        std::vector<std::uint32_t> ghost_in;              // edges G -> y waiting for y -> G
-        for (std::uint32_t e = 0; e < 3 * t_count; ++e) {
-            if (twin_[e] != kGhost) continue;
-            const std::uint32_t x = vertex_[e], y = vertex_[next_edge(e)];
-            const std::uint32_t g = add_triangle(y, x, kGhost);
-            link(e, 3 * g);
-            ghost_out[x] = 3 * g + 1;
-            ghost_in.push_back(3 * g + 2);
-        }
-        for (std::uint32_t e : ghost_in) link(e, ghost_out[vertex_[next_edge(e)]]);
         edge_.assign(vertex_.size(), 0);
         records_.assign(1, Record{0, 0, kGhost, kGhost});
-        for (std::uint32_t e = 0; e < vertex_.size(); ++e)
-            if (vertex_[e] != kGhost) out_[vertex_[e]] = e;
     }
 
     /// Inserts a segment and everything it turns into; false on failure (error set).
@@ -719,9 +700,11 @@ ConstrainedDelaunay failure(std::string message, std::int64_t point = -1, std::i
 /// Shared by both entry points: `segments` are directed (a, b, wind) triples in input order.
 ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segments, bool polygon, FillRule fill,
                           unsigned threads, std::size_t max_added) {
-    DelaunayOptions options;
-    options.threads = threads;
-    Delaunay d = delaunay(points, options);
+    (void)threads;  // one sequence of steps on the calling thread: the same result for any count
+    Delaunay d;
+    std::vector<double> local_xy;
+    delaunay_detail::Input in;
+    const bool plane = delaunay_detail::prepare(points, d, local_xy, in);
     if (!d.ok()) return failure(d.error, d.error_point);
     ConstrainedDelaunay out;
     out.dimension = d.dimension;
@@ -729,13 +712,15 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     out.representative = std::move(d.representative);
     out.duplicate_count = d.duplicate_count;
     out.coords.assign(points.xy, points.xy + 2 * points.count);
-    if (d.dimension < 2) return out;  // no triangles; segments lie on the line
+    if (!plane) return out;  // no triangles; segments lie on the line
     const int exponent = delaunay_detail::incircle_exponent(points);
     std::vector<double> xy(out.coords);
     if (exponent != 0)
         for (double& v : xy) v = std::ldexp(v, exponent);
-    Cdt cdt(std::move(xy), d, max_added);
-    d = Delaunay();
+    delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
+    local_xy = std::vector<double>();
+    Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added);
+    in = delaunay_detail::Input();
     for (const Segment& s : segments) {
         const Segment piece{out.representative[s.a], out.representative[s.b], s.wind, s.count, s.input};
         if (!cdt.insert(piece)) return failure(cdt.error, -1, cdt.error_segment);

@@ -654,24 +654,24 @@ Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triang
 
 }  // namespace delaunay_detail
 
-Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
+namespace delaunay_detail {
+
+bool prepare(PointSpan2 input, Delaunay& out, std::vector<double>& local_xy, Input& in) {
     Extent extent;
-    Delaunay out = check_input(input, &extent);
-    if (!out.ok()) return out;
-    std::vector<double> local_xy;
-    delaunay_detail::Input in;
+    out = check_input(input, &extent);
+    if (!out.ok()) return false;
     gather_distinct(input, extent, out, local_xy, in.original);
     in.points = PointSpan2(local_xy.data(), in.original.size());
     const PointSpan2 p = in.points;
     const std::size_t m = p.count;
     if (m == 0) {
         out.dimension = -1;
-        return out;
+        return false;
     }
     if (m == 1) {
         out.dimension = 0;
         out.hull = in.original;
-        return out;
+        return false;
     }
     std::size_t k = 2;
     while (k < m && orient2d(p[0][0], p[0][1], p[1][0], p[1][1], p[k][0], p[k][1]) == 0) ++k;
@@ -683,9 +683,21 @@ Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
             return p[a][0] < p[b][0] || (p[a][0] == p[b][0] && p[a][1] < p[b][1]);
         });
         for (std::uint32_t i : along) out.hull.push_back(in.original[i]);
-        return out;
+        return false;
     }
     out.dimension = 2;
+    return true;
+}
+
+}  // namespace delaunay_detail
+
+Delaunay delaunay(PointSpan2 input, const DelaunayOptions& options) {
+    Delaunay out;
+    std::vector<double> local_xy;
+    delaunay_detail::Input in;
+    if (!delaunay_detail::prepare(input, out, local_xy, in)) return out;
+    const PointSpan2 p = in.points;
+    const std::size_t m = p.count;
     Faces faces;
     if (options.algorithm == DelaunayAlgorithm::Giftwrap) {
         faces = delaunay_detail::giftwrap_faces(in);

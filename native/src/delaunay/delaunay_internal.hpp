@@ -87,6 +87,14 @@ Faces mesh_faces(PointSpan2 points, Mesh mesh);
 /// equal keys.
 std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const double* lo, const double* hi);
 
+/// delaunay()'s first steps, shared with the constrained triangulation (constrained.cpp): checks the
+/// points (errors in out.error, out.error_point), merges duplicates (out.representative,
+/// out.duplicate_count) and gathers the distinct points, scaled into incircle's range, in Hilbert
+/// order into local_xy (`in` views them; in.original maps back). Returns true when they span the
+/// plane (out.dimension 2); otherwise fills out.dimension (and out.hull as delaunay() does) and
+/// returns false.
+bool prepare(PointSpan2 input, Delaunay& out, std::vector<double>& local_xy, Input& in);
+
 /// Both algorithms return the Delaunay faces: the lower faces of the lifted hull, each a maximal set
 /// of cocircular points whose circle is empty, as a counter-clockwise cycle.
 Faces incremental_faces(const Input& input);
