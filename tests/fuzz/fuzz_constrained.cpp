@@ -17,28 +17,9 @@
 #include <vector>
 
 #include "hullkit/constrained.hpp"
+#include "points2d_bytes.hpp"
 
 namespace {
-
-std::vector<double> read_points(const std::uint8_t* data, std::size_t size, int mode) {
-    std::vector<double> xy;
-    if (mode == 0) {
-        xy.resize(size / 16 * 2);
-        if (!xy.empty()) std::memcpy(xy.data(), data, 8 * xy.size());
-    } else if (mode == 1 || mode == 2) {
-        for (std::size_t i = 0; i + 1 < size; i += 2) {
-            const double x = static_cast<std::int8_t>(data[i]), y = static_cast<std::int8_t>(data[i + 1]);
-            if (mode == 1) xy.insert(xy.end(), {x, y});
-            else xy.insert(xy.end(), {1e6 + std::ldexp(x, -30), -1e6 + std::ldexp(y, -30)});
-        }
-    } else {
-        for (std::size_t i = 0; i + 3 < size; i += 4) {
-            xy.push_back(static_cast<std::int16_t>(data[i] | data[i + 1] << 8));
-            xy.push_back(static_cast<std::int16_t>(data[i + 2] | data[i + 3] << 8));
-        }
-    }
-    return xy;
-}
 
 void check(bool condition) {
     if (!condition) std::abort();
@@ -67,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool polygon = data[0] & 4;
     const hullkit::FillRule fill = data[0] & 8 ? hullkit::FillRule::NonZero : hullkit::FillRule::EvenOdd;
     const unsigned pick = data[1];
-    const std::vector<double> xy = read_points(data + 2, size - 2, mode);
+    const std::vector<double> xy = fuzz_input::points2d(data + 2, size - 2, mode);
     const hullkit::PointSpan2 points(xy);
     const std::uint32_t n = static_cast<std::uint32_t>(points.count);
     hullkit::ConstrainedDelaunay d;

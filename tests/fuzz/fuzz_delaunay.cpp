@@ -23,34 +23,13 @@
 
 #include "hullkit/delaunay.hpp"
 #include "hullkit/predicates.hpp"
+#include "points2d_bytes.hpp"
 
 namespace {
 
 std::vector<double> read_points(const std::uint8_t* data, std::size_t size) {
-    std::vector<double> xy;
-    if (size == 0) return xy;
-    const int mode = data[0] & 3;
-    ++data;
-    --size;
-    if (mode == 0) {
-        xy.resize(size / 16 * 2);
-        if (!xy.empty()) std::memcpy(xy.data(), data, 8 * xy.size());
-    } else if (mode == 1 || mode == 2) {
-        for (std::size_t i = 0; i + 1 < size; i += 2) {
-            const double x = static_cast<std::int8_t>(data[i]), y = static_cast<std::int8_t>(data[i + 1]);
-            if (mode == 1) {
-                xy.insert(xy.end(), {x, y});
-            } else {
-                xy.insert(xy.end(), {1e6 + std::ldexp(x, -30), -1e6 + std::ldexp(y, -30)});
-            }
-        }
-    } else {
-        for (std::size_t i = 0; i + 3 < size; i += 4) {
-            xy.push_back(static_cast<std::int16_t>(data[i] | data[i + 1] << 8));
-            xy.push_back(static_cast<std::int16_t>(data[i + 2] | data[i + 3] << 8));
-        }
-    }
-    return xy;
+    if (size == 0) return {};
+    return fuzz_input::points2d(data + 1, size - 1, data[0] & 3);
 }
 
 bool same(const hullkit::Delaunay& a, const hullkit::Delaunay& b) {

@@ -525,26 +525,8 @@ private:
     /// Locates p (scaled) by a visibility walk from triangle `start`: a finite triangle holding it
     /// (closed) or a ghost whose hull edge it is strictly outside of.
     std::uint32_t locate(const double* p, std::uint32_t start) {
-        std::uint32_t t = start;
-        if (is_ghost(t)) {
-            std::uint32_t e = 3 * t;
-            while (vertex_[e] == kGhost || vertex_[next_edge(e)] == kGhost) ++e;
-            t = twin_[e] / 3;
-        }
-        for (;;) {
-            seed_ = seed_ * 1103515245u + 12345u;
-            const std::uint32_t r = (seed_ >> 16) % 3;
-            bool moved = false;
-            for (std::uint32_t k = 0; k < 3; ++k) {
-                const std::uint32_t e = 3 * t + (r + k) % 3;
-                if (orient_at(vertex_[e], vertex_[next_edge(e)], p) < 0) {
-                    t = twin_[e] / 3;
-                    moved = true;
-                    break;
-                }
-            }
-            if (!moved || is_ghost(t)) return t;
-        }
+        return delaunay_detail::visibility_walk(vertex_, twin_, kGhost, start, seed_,
+                                                [&](std::uint32_t a, std::uint32_t b) { return orient_at(a, b, p) < 0; });
     }
 
     bool conflicts(std::uint32_t t, const double* p) const {
@@ -553,13 +535,9 @@ private:
             const double *pa = pt(a), *pb = pt(b), *pc = pt(c);
             return incircle(pa[0], pa[1], pb[0], pb[1], pc[0], pc[1], p[0], p[1]) > 0;
         }
-        const std::uint32_t x = a == kGhost ? b : (b == kGhost ? c : a);
-        const std::uint32_t y = a == kGhost ? c : (b == kGhost ? a : b);
-        const double *u = pt(x), *v = pt(y);
-        const int o = orient2d(u[0], u[1], v[0], v[1], p[0], p[1]);
-        if (o != 0) return o > 0;
-        if (u[0] != v[0]) return (u[0] < p[0] && p[0] < v[0]) || (v[0] < p[0] && p[0] < u[0]);
-        return (u[1] < p[1] && p[1] < v[1]) || (v[1] < p[1] && p[1] < u[1]);
+        std::uint32_t x, y;
+        delaunay_detail::ghost_edge(&vertex_[3 * t], kGhost, &x, &y);
+        return delaunay_detail::beyond_hull_edge(pt(x), pt(y), p);
     }
 
     /// Inserts point p (scaled) by Bowyer-Watson without crossing a constrained edge, except the one

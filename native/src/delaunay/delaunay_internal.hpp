@@ -74,6 +74,59 @@ struct Mesh {
     std::uint32_t ghost = 0;
     double span = 0;  ///< coordinate_span of the points
 };
+/// The ghost triangle (x, y, G) of hull edge x -> y (the outside on its left) is in conflict with
+/// point p when p is strictly outside that edge, or exactly on its line strictly between x and y
+/// (the limit of a circle through x, y and a point far away). Exact.
+inline bool beyond_hull_edge(const double* x, const double* y, const double* p) {
+    const int o = orient2d(x[0], x[1], y[0], y[1], p[0], p[1]);
+    if (o != 0) return o > 0;
+    // On the line: compare along an axis on which x and y differ (exact, the three are collinear).
+    if (x[0] != y[0]) return (x[0] < p[0] && p[0] < y[0]) || (y[0] < p[0] && p[0] < x[0]);
+    return (x[1] < p[1] && p[1] < y[1]) || (y[1] < p[1] && p[1] < x[1]);
+}
+
+/// The corners of the ghost triangle t (one corner is `ghost`) as its hull edge x -> y.
+inline void ghost_edge(const std::uint32_t* corners, std::uint32_t ghost, std::uint32_t* x, std::uint32_t* y) {
+    const std::uint32_t a = corners[0], b = corners[1], c = corners[2];
+    *x = a == ghost ? b : (b == ghost ? c : a);
+    *y = a == ghost ? c : (b == ghost ? a : b);
+}
+
+/// The visibility walk over a ghosted mesh (counter-clockwise triangles `vertex`, `twin`, corner
+/// `ghost` for the point at infinity) from triangle `start` towards a point: at each triangle the
+/// edges are tried from a pseudo-random first one (`seed`, a linear congruential state, which makes
+/// the walk terminate in any triangulation) and the walk crosses the first edge a -> b with
+/// `right_of(a, b)` (the point strictly on its right). Returns the finite triangle that holds the
+/// point (closed), or the first ghost reached (the point is outside that hull edge).
+template <class RightOf>
+std::uint32_t visibility_walk(const std::vector<std::uint32_t>& vertex, const std::vector<std::uint32_t>& twin,
+                              std::uint32_t ghost, std::uint32_t start, std::uint32_t& seed, RightOf right_of) {
+    const auto next = [](std::uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; };
+    const auto is_ghost = [&](std::uint32_t t) {
+        return vertex[3 * t] == ghost || vertex[3 * t + 1] == ghost || vertex[3 * t + 2] == ghost;
+    };
+    std::uint32_t t = start;
+    if (is_ghost(t)) {
+        std::uint32_t e = 3 * t;
+        while (vertex[e] == ghost || vertex[next(e)] == ghost) ++e;
+        t = twin[e] / 3;  // the finite triangle across the ghost's hull edge
+    }
+    for (;;) {
+        seed = seed * 1103515245u + 12345u;
+        const std::uint32_t r = (seed >> 16) % 3;
+        bool moved = false;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::uint32_t e = 3 * t + (r + k) % 3;
+            if (right_of(vertex[e], vertex[next(e)])) {
+                t = twin[e] / 3;
+                moved = true;
+                break;
+            }
+        }
+        if (!moved || is_ghost(t)) return t;
+    }
+}
+
 /// `progress` (may be empty): see DelaunayOptions::progress.
 Mesh incremental_mesh(const Input& input,
                       const std::function<void(std::size_t, std::size_t)>& progress = nullptr);

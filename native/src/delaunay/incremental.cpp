@@ -136,45 +136,20 @@ private:
             return detail::incircle_semi_static(incircle_bound_, p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0],
                                                 p_[c][1], px, py) > 0;
         }
-        // Ghost (x, y, G) in cyclic order: the outside of hull edge x->y is on its left.
-        const std::uint32_t x = a == ghost_ ? b : (b == ghost_ ? c : a);
-        const std::uint32_t y = a == ghost_ ? c : (b == ghost_ ? a : b);
-        const double* u = p_[x];
-        const double* v = p_[y];
-        const int o = orient2d(u[0], u[1], v[0], v[1], px, py);
-        if (o != 0) return o > 0;
-        // On the line: strictly between x and y (compare along the dominant axis of x->y... any
-        // nonconstant axis works exactly since the three points are collinear and distinct).
-        if (u[0] != v[0]) return (u[0] < px && px < v[0]) || (v[0] < px && px < u[0]);
-        return (u[1] < py && py < v[1]) || (v[1] < py && py < u[1]);
+        std::uint32_t x, y;
+        ghost_edge(&vertex_[3 * t], ghost_, &x, &y);
+        const double p[2] = {px, py};
+        return beyond_hull_edge(p_[x], p_[y], p);
     }
 
     /// A triangle in conflict with p: the finite triangle containing it (closed), or the ghost of a
     /// hull edge that p is strictly outside of. Visibility walk with a varying first edge.
     std::uint32_t locate(double px, double py) {
-        std::uint32_t t = last_;
-        if (is_ghost(t)) {
-            std::uint32_t e = 3 * t;
-            while (vertex_[e] == ghost_ || vertex_[next_edge(e)] == ghost_) ++e;
-            t = twin_[e] / 3;  // the finite triangle across the ghost's hull edge
-        }
-        for (;;) {
-            seed_ = seed_ * 1103515245u + 12345u;
-            const std::uint32_t r = (seed_ >> 16) % 3;
-            bool moved = false;
-            for (std::uint32_t k = 0; k < 3; ++k) {
-                const std::uint32_t e = 3 * t + (r + k) % 3;
-                const double* a = p_[vertex_[e]];
-                const double* b = p_[vertex_[next_edge(e)]];
-                if (detail::orient2d_semi_static(orient_bound_, a[0], a[1], b[0], b[1], px, py) < 0) {
-                    t = twin_[e] / 3;
-                    moved = true;
-                    break;
-                }
-            }
-            if (!moved) return t;
-            if (is_ghost(t)) return t;
-        }
+        return visibility_walk(vertex_, twin_, ghost_, last_, seed_, [&](std::uint32_t a, std::uint32_t b) {
+            const double* u = p_[a];
+            const double* v = p_[b];
+            return detail::orient2d_semi_static(orient_bound_, u[0], u[1], v[0], v[1], px, py) < 0;
+        });
     }
 
     PointSpan2 p_;
