@@ -34,8 +34,7 @@ Commands:
   verify           check exactly that a mesh file is the convex hull of a point set
   delaunay         Delaunay triangulation of 2D points (by lifting to a paraboloid)
   verify-delaunay  check exactly that a mesh file is a Delaunay triangulation
-  triangulate      constrained Delaunay triangulation of polygons with holes
-                   and planar graphs (rings, GeoJSON, Triangle's .poly)
+  triangulate      constrained Delaunay triangulation of polygons with holes and planar graphs
   delaunay3        Delaunay tetrahedralization of 3D points (by lifting to 4D)
   verify-delaunay3 check exactly that tetrahedra are a Delaunay tetrahedralization
   route            check a traverse's route (straight or turning legs) against obstacles
