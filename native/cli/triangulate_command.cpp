@@ -175,12 +175,13 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
     const std::uint64_t count = whole(v[0], line, "the vertex count");
     if (count == 0) throw UsageError(source + " line " + std::to_string(line) + ": vertices in a separate .node file are not supported; list them in the .poly file");
     if (v.size() > 1 && v[1] != 2) throw UsageError(source + " line " + std::to_string(line) + ": the dimension must be 2");
-    const std::uint64_t attributes = v.size() > 2 ? whole(v[2], line, "the attribute count") : 0;
-    const std::uint64_t markers = v.size() > 3 ? whole(v[3], line, "the marker count") : 0;
+    // Attribute and marker counts: checked to be whole numbers; the values after x y are not used.
+    if (v.size() > 2) whole(v[2], line, "the attribute count");
+    if (v.size() > 3) whole(v[3], line, "the marker count");
     std::int64_t first_index = -1;
     for (std::uint64_t k = 0; k < count; ++k) {
         line = next("vertices");
-        if (v.size() < 3 + attributes + markers && v.size() < 3)
+        if (v.size() < 3)
             throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
         const std::uint64_t index = whole(v[0], line, "a vertex index");
         if (first_index < 0) first_index = static_cast<std::int64_t>(index);

@@ -33,7 +33,7 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd"):
     'evenodd' (default) or 'nonzero'. A dict: ``coords`` (the input vertices then the crossing points
     added, (m, 2)), ``triangles`` ((t, 3), clockwise with y up as hullkit.delaunay's), ``halfedges``,
     ``constrained`` (per half-edge, 1 on a ring edge), ``representative``, ``crossing_count``."""
-    array = _np.asarray(coords, dtype=_np.float64) if not isinstance(coords, _np.ndarray) else coords
+    array = _np.asarray(coords, dtype=_np.float64)
     if array.ndim == 1:
         if array.size % 2:
             raise HullkitError(f"flat coords must hold x y pairs, got {array.size} numbers")

@@ -179,7 +179,8 @@ public:
         return in;
     }
 
-    /// Writes the triangles whose `keep` flag is set (all finite ones when keep is empty).
+    /// Writes the triangles whose `keep` flag is set (all finite ones when keep is empty), and
+    /// appends the added points to out.coords (which holds the input points).
     void write(const std::vector<std::uint8_t>& keep, int exponent, ConstrainedDelaunay& out) const {
         const std::size_t t_count = vertex_.size() / 3;
         std::vector<std::int32_t> index(t_count, -1);
@@ -278,10 +279,10 @@ private:
             t = static_cast<std::uint32_t>(vertex_.size() / 3);
             vertex_.resize(vertex_.size() + 3);
             twin_.resize(twin_.size() + 3);
-            if (!edge_.empty()) edge_.resize(vertex_.size());
+            edge_.resize(vertex_.size());
         }
         vertex_[3 * t] = a, vertex_[3 * t + 1] = b, vertex_[3 * t + 2] = c;
-        if (!edge_.empty()) edge_[3 * t] = edge_[3 * t + 1] = edge_[3 * t + 2] = 0;
+        edge_[3 * t] = edge_[3 * t + 1] = edge_[3 * t + 2] = 0;
         return t;
     }
     void remove_triangle(std::uint32_t t) {
@@ -676,9 +677,9 @@ ConstrainedDelaunay failure(std::string message, std::int64_t point = -1, std::i
 }
 
 /// Shared by both entry points: `segments` are directed (a, b, wind) triples in input order.
+/// One sequence of steps on the calling thread (the options' threads do not enter).
 ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segments, bool polygon, FillRule fill,
-                          unsigned threads, std::size_t max_added) {
-    (void)threads;  // one sequence of steps on the calling thread: the same result for any count
+                          std::size_t max_added) {
     Delaunay d;
     std::vector<double> local_xy;
     delaunay_detail::Input in;
@@ -691,7 +692,7 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     out.duplicate_count = d.duplicate_count;
     out.coords.assign(points.xy, points.xy + 2 * points.count);
     if (!plane) return out;  // no triangles; segments lie on the line
-    const int exponent = delaunay_detail::incircle_exponent(points);
+    const int exponent = in.exponent;  // delaunay()'s scale, found while checking the points
     std::vector<double> xy(out.coords);
     if (exponent != 0)
         for (double& v : xy) v = std::ldexp(v, exponent);
@@ -705,7 +706,6 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     }
     out.crossing_count = cdt.crossings;
     cdt.write(polygon ? cdt.inside(fill) : std::vector<std::uint8_t>(), exponent, out);
-    std::copy(points.xy, points.xy + 2 * points.count, out.coords.begin());
     return out;
 }
 
@@ -726,7 +726,7 @@ ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t*
         }
         list.push_back({a, b, 1, 1, static_cast<std::uint32_t>(k)});
     }
-    return build(points, list, false, FillRule::EvenOdd, options.threads, options.max_added_points);
+    return build(points, list, false, FillRule::EvenOdd, options.max_added_points);
 }
 
 ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
@@ -750,7 +750,7 @@ ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* 
         }
         begin = end;
     }
-    return build(points, list, true, options.fill, options.threads, options.max_added_points);
+    return build(points, list, true, options.fill, options.max_added_points);
 }
 
 std::size_t remove_regions(ConstrainedDelaunay& d, bool exterior, PointSpan2 holes) {

@@ -661,6 +661,7 @@ bool prepare(PointSpan2 input, Delaunay& out, std::vector<double>& local_xy, Inp
     out = check_input(input, &extent);
     if (!out.ok()) return false;
     gather_distinct(input, extent, out, local_xy, in.original);
+    in.exponent = extent.exponent;
     in.points = PointSpan2(local_xy.data(), in.original.size());
     const PointSpan2 p = in.points;
     const std::size_t m = p.count;

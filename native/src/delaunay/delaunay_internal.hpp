@@ -34,6 +34,7 @@ struct Faces {
 struct Input {
     PointSpan2 points;
     std::vector<std::uint32_t> original;
+    int exponent = 0;  ///< the power of two the points were scaled by (prepare(): incircle's range)
 };
 
 /// The larger of the points' computed width and height: no coordinate difference of two of them,
