@@ -297,6 +297,25 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 /// The smallest angle (degrees) of the in-domain faces of a mesh.
+/// The smallest angle at corner a of triangle a b c, in degrees.
+double corner_angle(double ax, double ay, double bx, double by, double cx, double cy) {
+    const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+    return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI;
+}
+
+[[maybe_unused]] double smallest_angle(const std::vector<std::uint32_t>& triangles, const std::vector<double>& xy) {
+    double smallest = 180;
+    for (std::size_t t = 0; t < triangles.size(); t += 3) {
+        for (int i = 0; i < 3; ++i) {
+            const double* a = &xy[2 * triangles[t + i]];
+            const double* b = &xy[2 * triangles[t + (i + 1) % 3]];
+            const double* c = &xy[2 * triangles[t + (i + 2) % 3]];
+            smallest = std::min(smallest, corner_angle(a[0], a[1], b[0], b[1], c[0], c[1]));
+        }
+    }
+    return smallest;
+}
+
 double smallest_angle(const MeshCdt& cdt) {
     double smallest = 180;
     for (auto f : cdt.finite_face_handles()) {
@@ -305,9 +324,7 @@ double smallest_angle(const MeshCdt& cdt) {
             const Point& a = f->vertex(i)->point();
             const Point& b = f->vertex((i + 1) % 3)->point();
             const Point& c = f->vertex((i + 2) % 3)->point();
-            const double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = c.x() - a.x(), vy = c.y() - a.y();
-            const double angle = std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI;
-            smallest = std::min(smallest, angle);
+            smallest = std::min(smallest, corner_angle(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()));
         }
     }
     return smallest;
@@ -420,8 +437,31 @@ int main(int argc, char** argv) {
 #else
         return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");
 #endif
+    } else if (args.impl == "hullkit-mesh") {
+#if HULLKIT_CONSTRAINED_BENCH_HULLKIT
+        if (!input.polygon()) return fail("hullkit-mesh meshes polygons only (as cgal-mesh)");
+        hullkit::PolygonOptions options;
+        options.threads = args.threads;
+        // CGAL's shape bound B = 0.125 is sin^2 of the smallest angle: asin(sqrt(0.125)) degrees.
+        options.quality.min_angle = std::asin(std::sqrt(0.125)) * 180 / M_PI;
+        detail = "hullkit::triangulate_polygon(..., PolygonOptions{evenodd, quality.min_angle " +
+                 std::to_string(options.quality.min_angle) + " (CGAL's B = 0.125)})";
+        run = [&input, options](Dump* dump) {
+            const auto start = std::chrono::steady_clock::now();
+            hullkit::ConstrainedDelaunay result = hullkit::triangulate_polygon(
+                hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), options);
+            const double seconds = seconds_since(start);
+            if (!result.ok()) throw std::runtime_error(result.error);
+            if (dump) *dump = Dump{result.triangles, result.coords};
+            Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
+            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
+            return out;
+        };
+#else
+        return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");
+#endif
     } else {
-        return fail("unknown implementation (known: hullkit, cgal-cdt, cgal-mesh)");
+        return fail("unknown implementation (known: hullkit, hullkit-mesh, cgal-cdt, cgal-mesh)");
     }
 
     const double input_rss = peak_rss_mb();

@@ -7,7 +7,25 @@ import { HullkitError, checkOptions, copyIn, flatCoordinates, toUint32 } from '.
 
 /** The fill rules triangulatePolygon accepts, the default first. */
 export const FILL_RULES = ['evenodd', 'nonzero'];
-const POLYGON_OPTIONS = ['dim', 'fill'];
+const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints'];
+const POLYGON_OPTIONS = ['dim', 'fill', ...QUALITY_OPTIONS];
+const GRAPH_OPTIONS = ['holes', 'removeExterior', ...QUALITY_OPTIONS];
+
+/** The refinement options checked (the core checks the ranges again and names them). */
+function qualityOf(options, where) {
+  const { minAngle = 0, maxArea = 0, conforming = false, maxSteinerPoints = 0 } = options;
+  if (typeof minAngle !== 'number' || !(minAngle >= 0 && minAngle <= 34)) {
+    throw new HullkitError(`${where}: minAngle must be a number of degrees from 0 to 34, got ${String(minAngle)}`);
+  }
+  if (typeof maxArea !== 'number' || !(maxArea >= 0 && Number.isFinite(maxArea))) {
+    throw new HullkitError(`${where}: maxArea must be a positive number (0 or absent: none), got ${String(maxArea)}`);
+  }
+  if (typeof conforming !== 'boolean') throw new HullkitError(`${where}: conforming must be true or false, got ${String(conforming)}`);
+  if (!Number.isSafeInteger(maxSteinerPoints) || maxSteinerPoints < 0) {
+    throw new HullkitError(`${where}: maxSteinerPoints must be a whole number (0: no cap), got ${String(maxSteinerPoints)}`);
+  }
+  return [minAngle, maxArea, conforming, maxSteinerPoints];
+}
 
 /** Copies the core's result out (or throws its error naming the point or segment) and frees it. */
 function takeResult(result, where) {
@@ -31,6 +49,8 @@ function takeResult(result, where) {
       representative,
       duplicateCount: result.duplicateCount(),
       crossingCount: result.crossingCount(),
+      steinerCount: result.steinerCount(),
+      unrefinedCount: result.unrefinedCount(),
     };
   } finally {
     result.delete();
@@ -81,7 +101,9 @@ function fromGeoJSON(value, where) {
  */
 export function triangulatePolygon(core, coords, holeIndices, options = {}) {
   const where = 'triangulatePolygon';
-  const { dim = 2, fill = FILL_RULES[0] } = checkOptions(options, POLYGON_OPTIONS, where);
+  const checked = checkOptions(options, POLYGON_OPTIONS, where);
+  const { dim = 2, fill = FILL_RULES[0] } = checked;
+  const quality = qualityOf(checked, where);
   if (!FILL_RULES.includes(fill)) throw new HullkitError(`${where}: unknown fill "${fill}" (known: ${FILL_RULES.join(', ')})`);
   if (!Number.isInteger(dim) || dim < 2) throw new HullkitError(`${where}: dim must be an integer of at least 2, got ${String(dim)}`);
   let xy;
@@ -109,7 +131,7 @@ export function triangulatePolygon(core, coords, holeIndices, options = {}) {
       throw new HullkitError(`${where}: holeIndices[${k}] = ${starts[k]} is ${starts[k] > count ? `past the ${count} vertices` : 'before the hole before it'}`);
     }
   }
-  return takeResult(withHeap(core, [xy, starts], where, (p, s) => core.triangulatePolygonFromHeap(p, count, s, starts.length, fill)), where);
+  return takeResult(withHeap(core, [xy, starts], where, (p, s) => core.triangulatePolygonFromHeap(p, count, s, starts.length, fill, ...quality)), where);
 }
 
 /**
@@ -118,10 +140,19 @@ export function triangulatePolygon(core, coords, holeIndices, options = {}) {
  */
 export function constrainedDelaunay(core, coords, edges, options = {}) {
   const where = 'constrainedDelaunay';
-  checkOptions(options, [], where);
+  const checked = checkOptions(options, GRAPH_OPTIONS, where);
+  const quality = qualityOf(checked, where);
+  const { removeExterior = false } = checked;
+  if (typeof removeExterior !== 'boolean') throw new HullkitError(`${where}: removeExterior must be true or false, got ${String(removeExterior)}`);
+  const holes = checked.holes === undefined ? new Float64Array(0) : flatCoordinates(checked.holes, `${where}: holes`, 2);
   const xy = flatCoordinates(coords, where, 2);
   const segments = toUint32(edges ?? [], `${where}: edges`);
   if (segments.length % 2 !== 0) throw new HullkitError(`${where}: ${segments.length} edge indices is not a whole number of pairs`);
   const count = xy.length / 2;
-  return takeResult(withHeap(core, [xy, segments], where, (p, s) => core.constrainedDelaunayFromHeap(p, count, s, segments.length / 2)), where);
+  return takeResult(
+    withHeap(core, [xy, segments, holes], where, (p, s, h) =>
+      core.constrainedDelaunayFromHeap(p, count, s, segments.length / 2, h, holes.length / 2, removeExterior, ...quality),
+    ),
+    where,
+  );
 }

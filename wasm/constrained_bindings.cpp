@@ -15,20 +15,36 @@ using emscripten::val;
 using hullkit_wasm::heap_at;
 using hullkit_wasm::view_of;
 
-// The JS layer copied the points (2 * count doubles) and the segments or ring starts (uint32) into
-// malloc'ed blocks and checked the options.
+hullkit::QualityOptions quality_of(double min_angle, double max_area, bool conforming, double max_steiner_points) {
+    hullkit::QualityOptions quality;
+    quality.min_angle = min_angle;
+    quality.max_area = max_area;
+    quality.conforming = conforming;
+    quality.max_steiner_points = static_cast<std::size_t>(max_steiner_points);
+    return quality;
+}
+
+// The JS layer copied the points (2 * count doubles), the segments or ring starts (uint32) and the
+// hole points (2 * hole_count doubles) into malloc'ed blocks and checked the options.
 hullkit::ConstrainedDelaunay graph_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t segments,
-                                             std::uint32_t segment_count) {
+                                             std::uint32_t segment_count, std::uintptr_t holes, std::uint32_t hole_count,
+                                             bool remove_exterior, double min_angle, double max_area, bool conforming,
+                                             double max_steiner_points) {
     hullkit::ConstrainedOptions options;
     options.threads = 1;  // no threads in the wasm build; the answer is the same
+    options.remove_exterior = remove_exterior;
+    options.holes.assign(heap_at<double>(holes), heap_at<double>(holes) + 2 * static_cast<std::size_t>(hole_count));
+    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points);
     return hullkit::constrained_delaunay(hullkit::PointSpan2(heap_at<double>(xy), count), heap_at<std::uint32_t>(segments),
                                          segment_count, options);
 }
 
 hullkit::ConstrainedDelaunay polygon_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t starts,
-                                               std::uint32_t ring_count, const std::string& fill) {
+                                               std::uint32_t ring_count, const std::string& fill, double min_angle,
+                                               double max_area, bool conforming, double max_steiner_points) {
     hullkit::PolygonOptions options;
     options.threads = 1;
+    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points);
     if (!hullkit::parse_fill_rule(fill, &options.fill)) {
         hullkit::ConstrainedDelaunay unknown;
         unknown.error = "unknown fill rule \"" + fill + "\"";
@@ -48,6 +64,8 @@ double error_point(const hullkit::ConstrainedDelaunay& d) { return static_cast<d
 double error_segment(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.error_segment); }
 double duplicate_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.duplicate_count); }
 double crossing_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.crossing_count); }
+double steiner_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.steiner_count); }
+double unrefined_count(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.unrefined_count); }
 
 }  // namespace
 
@@ -60,6 +78,8 @@ EMSCRIPTEN_BINDINGS(hullkit_constrained) {
         .function("errorSegment", &error_segment)
         .function("duplicateCount", &duplicate_count)
         .function("crossingCount", &crossing_count)
+        .function("steinerCount", &steiner_count)
+        .function("unrefinedCount", &unrefined_count)
         .function("trianglesView", &triangles_view)
         .function("halfedgesView", &halfedges_view)
         .function("constrainedView", &constrained_view)

@@ -227,9 +227,16 @@ export interface Hullkit {
    * every other edge is as Delaunay as the rings allow. Every decision is an exact orient2d or
    * incircle: no overlapping or zero-area triangle, nothing dropped, for any input.
    *
+   * With `minAngle` / `maxArea` the inside becomes a quality mesh (Delaunay refinement, Triangle's
+   * -q and -a): points are added (`steinerCount`, after the crossings in `coords`) until every
+   * angle is at least `minAngle` degrees and no triangle is larger than `maxArea`; `conforming`
+   * makes every triangle Delaunay (Triangle's -D).
+   *
    * @example
    * // earcut(coords, holeIndices) becomes:
    * const { triangles } = hullkit.triangulatePolygon(coords, holeIndices);
+   * // a quality mesh of the same polygon:
+   * const mesh = hullkit.triangulatePolygon(coords, holeIndices, { minAngle: 25, maxArea: 10 });
    *
    * @throws {HullkitError} for a non-finite coordinate (`pointIndex`), holeIndices that decrease or
    *   pass the vertex count, a GeoJSON value that is not a (Multi)Polygon, or an unknown option.
@@ -248,10 +255,14 @@ export interface Hullkit {
    * point" errors. Repeated points are merged (`representative`), zero-length and repeated
    * segments are harmless.
    *
+   * Triangle's .poly domain and quality options: `removeExterior` drops what lies outside the
+   * segments, `holes` (x y per hole point) the regions around the hole points; `minAngle`,
+   * `maxArea`, `conforming` refine what is left (see triangulatePolygon).
+   *
    * @throws {HullkitError} for a non-finite coordinate (`pointIndex`), an edge index past the points
-   *   (`segmentIndex`), an odd number of edge indices.
+   *   (`segmentIndex`), an odd number of edge indices, a bad option.
    */
-  constrainedDelaunay(coords: Float64Array | ArrayLike<number>, edges: Uint32Array | ArrayLike<number>, options?: Record<string, never>): ConstrainedResult;
+  constrainedDelaunay(coords: Float64Array | ArrayLike<number>, edges: Uint32Array | ArrayLike<number>, options?: GraphOptions): ConstrainedResult;
   /**
    * The index of the input point nearest to (x, y) (exact ties: the lowest index; a duplicate is
    * never returned, its representative is), found by walking `triangulation` from point `start`
@@ -596,11 +607,33 @@ export type GeoJSONPolygonLike =
   | { type: 'MultiPolygon'; coordinates: number[][][][] }
   | { type: 'Feature'; geometry: { type: 'Polygon'; coordinates: number[][][] } | { type: 'MultiPolygon'; coordinates: number[][][][] } };
 
-export interface PolygonOptions {
+/** Delaunay refinement (Triangle's -q, -a, -D); without any of them nothing is refined. */
+export interface QualityOptions {
+  /**
+   * Smallest angle in degrees, 0 to 34 (default 0: none). Up to 28.6 refinement always finishes;
+   * triangles at input angles smaller than this are left as they are (`unrefinedCount`).
+   */
+  minAngle?: number;
+  /** Largest triangle area, in the coordinates' units squared (default 0: none). */
+  maxArea?: number;
+  /** Every triangle Delaunay (segments split until no point is in a circle on one as diameter). */
+  conforming?: boolean;
+  /** Reject (throw) once refinement has added this many points (default 0: no cap). */
+  maxSteinerPoints?: number;
+}
+
+export interface PolygonOptions extends QualityOptions {
   /** Numbers per vertex in flat `coords` (default 2; earcut's `dim`): the first two are x and y. */
   dim?: number;
   /** Which points the rings enclose: 'evenodd' (default; holes whatever their orientation) or 'nonzero'. */
   fill?: 'evenodd' | 'nonzero';
+}
+
+export interface GraphOptions extends QualityOptions {
+  /** Drop the triangles outside the segments (reachable from the hull without crossing one). */
+  removeExterior?: boolean;
+  /** Hole points, x y each: the region around each (bounded by segments) is dropped. */
+  holes?: Float64Array | ArrayLike<number>;
 }
 
 /** What triangulatePolygon and constrainedDelaunay return. */
@@ -617,7 +650,7 @@ export interface ConstrainedResult {
   halfedges: Int32Array;
   /** Per half-edge, 1 when it lies on a segment or ring edge (or a piece of one), else 0. */
   constrained: Uint8Array;
-  /** The input vertices (x y) followed by the points added at crossings. */
+  /** The input vertices (x y) followed by the points added at crossings and by refinement. */
   coords: Float64Array;
   /** The number of input vertices; `coords.length / 2 - inputCount` were added (`addedCount`). */
   inputCount: number;
@@ -627,6 +660,10 @@ export interface ConstrainedResult {
   duplicateCount: number;
   /** Crossings of two segments resolved by adding (or reusing) a point. */
   crossingCount: number;
+  /** Points added by refinement (minAngle, maxArea, conforming); they follow the crossings in `coords`. */
+  steinerCount: number;
+  /** Triangles left below minAngle (at small input angles) or above maxArea (at the limit of doubles). */
+  unrefinedCount: number;
 }
 
 export interface LocateOptions {

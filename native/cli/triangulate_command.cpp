@@ -1,12 +1,13 @@
 // `hullkit triangulate`: reading polygons and planar graphs (x y rings, Triangle's .poly, GeoJSON),
 // argument parsing (CLI11) and writing around hullkit::triangulate_polygon,
-// hullkit::constrained_delaunay and hullkit::remove_regions. No geometry here.
+// hullkit::constrained_delaunay (its domain and quality options). No geometry here.
 #include "triangulate_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -24,6 +25,8 @@ namespace {
 const char* const kUsage =
     R"(Usage: hullkit triangulate [INPUT|-] [-o FILE] [--format FORMAT]
                            [--fill evenodd|nonzero] [--convex] [--stats]
+                           [--min-angle DEG] [--max-area A] [--conforming]
+                           [--max-steiner N]
 
 Triangulates polygons with holes, or a planar straight-line graph, exactly: a
 constrained Delaunay triangulation in which every ring edge or segment is an
@@ -42,7 +45,8 @@ Input (the format from the file name, else the content):
   Triangle .poly  vertices, segments and hole points, as Triangle reads them:
                   the exterior (reached from the hull without crossing a
                   segment) and the region around each hole point are removed;
-                  with --convex the exterior is kept (Triangle's -c)
+                  with --convex the exterior is kept (Triangle's -c); its
+                  regions' area bounds apply (attributes are not used)
 Rings are filled by --fill: evenodd (default; holes whatever their orientation)
 or nonzero (GeoJSON's and SVG's nonzero rule: holes wound the other way).
 
@@ -62,8 +66,17 @@ Options:
   --fill RULE         evenodd (default) or nonzero, for rings and GeoJSON
   --convex            .poly input: keep the triangles outside the segments too
                       (the whole convex hull, hole regions still removed)
+  --min-angle DEG     a quality mesh (Triangle's -q): add points until every
+                      angle is at least DEG degrees (0 to 34; up to 28.6
+                      refinement always finishes); angles between segments
+                      smaller than DEG stay (counted as unrefined in --stats)
+  --max-area A        no triangle larger than A (Triangle's -a)
+  --conforming        every triangle Delaunay: segments split as needed
+                      (Triangle's -D)
+  --max-steiner N     fail once refinement has added N points (Triangle's -S)
   --stats             print one JSON line to standard error: points, added,
-                      segments, crossings, triangles, seconds
+                      segments, crossings, steiner (points added by
+                      refinement), unrefined, triangles, seconds
   -h, --help          show this help
 
 Exit status: 0 on success, 2 on a usage or input problem (one line on standard
@@ -101,6 +114,7 @@ struct Input {
     std::vector<std::uint32_t> segments;
     std::vector<std::size_t> segment_line;
     std::vector<double> holes;
+    std::vector<hullkit::RegionSeed> regions;  ///< a .poly's regional area bounds
 };
 
 /// The numbers on a line, before any '#'; commas count as spaces. False if a word is not a number.
@@ -216,9 +230,22 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
         if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
         in->holes.push_back(v[1]), in->holes.push_back(v[2]);
     }
+    more = false;
+    for (std::size_t j = i; j < lines.size() && !more; ++j) more = numbers_of(lines[j], &v) && !v.empty();
+    if (!more) return;
+    // Regions: "index x y attribute max_area" (the attribute is read and not used; a max_area <= 0
+    // is no bound, as Triangle reads it).
+    line = next("region header");
+    const std::uint64_t regions = whole(v[0], line, "the region count");
+    for (std::uint64_t k = 0; k < regions; ++k) {
+        line = next("regions");
+        if (v.size() < 4) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y attribute [max_area]\"");
+        const double area = v.size() >= 5 && v[4] > 0 ? v[4] : 0.0;
+        in->regions.push_back({v[1], v[2], area});
+    }
     for (std::size_t j = i; j < lines.size(); ++j) {
         if (numbers_of(lines[j], &v) && !v.empty())
-            throw UsageError(source + " line " + std::to_string(j + 1) + ": regional attributes and area constraints are not supported yet");
+            throw UsageError(source + " line " + std::to_string(j + 1) + ": unexpected numbers after the regions");
     }
 }
 
@@ -284,6 +311,7 @@ struct Args {
     Format format = Format::Off;
     hullkit::FillRule fill = hullkit::FillRule::EvenOdd;
     bool convex = false, stats = false;
+    hullkit::QualityOptions quality;
 };
 
 bool parse_args(const std::vector<std::string>& argv, Args* args) {
@@ -299,6 +327,10 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     app.add_option("--fill", fill_name)->multi_option_policy(last);
     app.add_flag("--convex", args->convex);
     app.add_flag("--stats", args->stats);
+    app.add_option("--min-angle", args->quality.min_angle)->multi_option_policy(last);
+    app.add_option("--max-area", args->quality.max_area)->multi_option_policy(last);
+    app.add_flag("--conforming", args->quality.conforming);
+    app.add_option("--max-steiner", args->quality.max_steiner_points)->multi_option_policy(last);
     parse_or_throw(app, argv, "triangulate");
     if (help) {
         std::fputs(kUsage, stdout);
@@ -315,6 +347,10 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     if (args->format == Format::Node && (args->output.empty() || args->output == "-"))
         throw UsageError("--format node writes two files (BASE.node and BASE.ele): give -o BASE.node");
     if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    if (!(args->quality.min_angle >= 0 && args->quality.min_angle <= 34))
+        throw UsageError("--min-angle must be from 0 to 34 degrees, got " + hullkit::format_double(args->quality.min_angle));
+    if (!(args->quality.max_area >= 0 && std::isfinite(args->quality.max_area)))
+        throw UsageError("--max-area must be a positive number, got " + hullkit::format_double(args->quality.max_area));
     return true;
 }
 
@@ -454,11 +490,16 @@ int run_triangulate(const std::vector<std::string>& argv) {
     const hullkit::PointSpan2 points(in.xy);
     hullkit::ConstrainedDelaunay d;
     if (in.poly) {
-        d = hullkit::constrained_delaunay(points, in.segments.data(), in.segments.size() / 2);
-        if (d.ok()) hullkit::remove_regions(d, !args.convex, hullkit::PointSpan2(in.holes));
+        hullkit::ConstrainedOptions options;
+        options.remove_exterior = !args.convex;
+        options.holes = in.holes;
+        options.regions = in.regions;
+        options.quality = args.quality;
+        d = hullkit::constrained_delaunay(points, in.segments.data(), in.segments.size() / 2, options);
     } else {
         hullkit::PolygonOptions options;
         options.fill = args.fill;
+        options.quality = args.quality;
         d = hullkit::triangulate_polygon(points, in.ring_starts.data(), in.ring_starts.size(), options);
     }
     if (!d.ok()) throw UsageError(located(source, in, d));
@@ -472,8 +513,11 @@ int run_triangulate(const std::vector<std::string>& argv) {
     }
     if (args.stats) {
         const std::size_t segments = in.poly ? in.segments.size() / 2 : in.xy.size() / 2;
-        std::fprintf(stderr, "{\"points\":%zu,\"added\":%zu,\"segments\":%zu,\"crossings\":%zu,\"triangles\":%zu,\"seconds\":%.6f}\n",
-                     in.xy.size() / 2, d.added_count(), segments, d.crossing_count, d.triangle_count(), seconds);
+        std::fprintf(stderr,
+                     "{\"points\":%zu,\"added\":%zu,\"segments\":%zu,\"crossings\":%zu,\"steiner\":%zu,\"unrefined\":%zu,"
+                     "\"triangles\":%zu,\"seconds\":%.6f}\n",
+                     in.xy.size() / 2, d.added_count(), segments, d.crossing_count, d.steiner_count, d.unrefined_count,
+                     d.triangle_count(), seconds);
     }
     return kExitOk;
 }

@@ -72,8 +72,15 @@ def constrained(
     fill: str,
     convex: bool,
     holes: NDArray[np.float64],
+    regions: NDArray[np.float64],
+    min_angle: float,
+    max_area: float,
+    conforming: bool,
+    max_steiner_points: int,
     /,
-) -> tuple[NDArray[np.float64], NDArray[np.uint32], NDArray[np.int32], NDArray[np.uint8], NDArray[np.uint32], int]: ...
+) -> tuple[
+    NDArray[np.float64], NDArray[np.uint32], NDArray[np.int32], NDArray[np.uint8], NDArray[np.uint32], int, int, int
+]: ...
 def furthest_delaunay(
     points: NDArray[np.float64], hull: NDArray[np.uint32], /
 ) -> tuple[NDArray[np.int32], NDArray[np.int32], NDArray[np.int32], NDArray[np.float64], NDArray[np.int32]]: ...

@@ -10,29 +10,54 @@ from . import HullkitError, _translated, as_points
 __all__ = ["triangulate", "triangulate_polygon"]
 
 # Triangle's switches hullkit honours, and those it does not have yet (with what they are).
-_SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose"}
+_SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose",
+             "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit"}
+_NUMBERED = ("q", "a", "S")  # switches that may carry a number
 _NOT_YET = {
-    "q": "quality meshing (minimum angle)", "a": "maximum triangle area", "u": "user refinement test", "r": "refining a mesh",
-    "D": "conforming Delaunay", "Y": "no Steiner points on the boundary", "S": "a Steiner point limit", "A": "regional attributes",
+    "u": "user refinement test", "r": "refining a mesh", "Y": "no Steiner points on the boundary", "A": "regional attributes",
     "o": "second-order triangles", "i": "incremental insertion", "F": "Fortune's sweep", "l": "vertical cuts only", "s": "segment splitting",
     "C": "consistency checks", "j": "jettisoning vertices", "B": "no boundary markers", "P": "no .poly output", "N": "no .node output",
     "E": "no .ele output", "I": "no iteration numbers", "O": "ignoring holes", "X": "no exact arithmetic",
 }
-_KEYS = ("vertices", "segments", "holes")
+_KEYS = ("vertices", "segments", "holes", "regions")
+_NO_POINTS = _np.zeros((0, 2))
 
 
-def _run(points, segments, starts, fill, convex, holes):
+def _quality(min_angle, max_area, conforming, max_steiner_points):
+    """The refinement keywords checked (the core checks the ranges again)."""
+    try:
+        min_angle, max_area = float(min_angle), float(max_area)
+    except (TypeError, ValueError):
+        raise HullkitError(f"min_angle and max_area must be numbers, got {min_angle!r} and {max_area!r}") from None
+    if not 0 <= min_angle <= 34:
+        raise HullkitError(f"min_angle must be from 0 to 34 degrees, got {min_angle}")
+    if not (0 <= max_area < _np.inf):
+        raise HullkitError(f"max_area must be a positive number (0: none), got {max_area}")
+    if isinstance(max_steiner_points, bool) or not isinstance(max_steiner_points, (int, _np.integer)) or max_steiner_points < 0:
+        raise HullkitError(f"max_steiner_points must be a whole number (0: no cap), got {max_steiner_points!r}")
+    return min_angle, max_area, bool(conforming), int(max_steiner_points)
+
+
+def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0)):
     with _translated():
-        return _core.constrained(points, segments, starts, fill, convex, holes)
+        return _core.constrained(points, segments, starts, fill, convex, holes,
+                                 _np.zeros((0, 3)) if regions is None else regions, *quality)
 
 
-def triangulate_polygon(coords, hole_indices=None, fill="evenodd"):
+def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=0, max_area=0, conforming=False,
+                        max_steiner_points=0):
     """The triangles inside polygons with holes, earcut's way: ``coords`` the vertices (shape (n, 2),
     or flat x y x y ...), ``hole_indices`` the vertex index at which each hole (each ring after the
     first) starts. Rings open or closed, any orientation, nesting, touching or crossing; ``fill``
     'evenodd' (default) or 'nonzero'. A dict: ``coords`` (the input vertices then the crossing points
     added, (m, 2)), ``triangles`` ((t, 3), clockwise with y up as hullkit.delaunay's), ``halfedges``,
-    ``constrained`` (per half-edge, 1 on a ring edge), ``representative``, ``crossing_count``."""
+    ``constrained`` (per half-edge, 1 on a ring edge), ``representative``, ``crossing_count``.
+
+    A quality mesh of the inside (Delaunay refinement, as Triangle's -q, -a and -D): ``min_angle``
+    degrees (0 to 34; up to 28.6 refinement always finishes), ``max_area`` (largest triangle),
+    ``conforming`` (every triangle Delaunay), ``max_steiner_points`` (an error past this many added
+    points; 0 no cap). The points added follow the crossings in ``coords`` (``steiner_count``);
+    ``unrefined_count`` triangles were left below the bound at input angles smaller than it."""
     array = _np.asarray(coords, dtype=_np.float64)
     if array.ndim == 1:
         if array.size % 2:
@@ -44,38 +69,61 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd"):
         raise HullkitError(f"hole_indices must be increasing vertex indices from 0 to {len(points)}, got {starts.tolist()}")
     if fill not in ("evenodd", "nonzero"):
         raise HullkitError(f"fill must be 'evenodd' or 'nonzero', got {fill!r}")
-    coords_out, triangles, halfedges, constrained, representative, crossings = _run(
-        points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _np.zeros((0, 2)))
+    quality = _quality(min_angle, max_area, conforming, max_steiner_points)
+    coords_out, triangles, halfedges, constrained, representative, crossings, steiner, unrefined = _run(
+        points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _NO_POINTS, None, quality)
     return {"coords": coords_out, "triangles": triangles, "halfedges": halfedges, "constrained": constrained,
-            "representative": representative, "crossing_count": crossings}
+            "representative": representative, "crossing_count": crossings, "steiner_count": steiner,
+            "unrefined_count": unrefined}
 
 
 def _switches(opts):
+    """Triangle's switches as {switch: number or None}; q, a and S may carry a number ("pq30a0.5");
+    'a' may appear twice, bare (regional areas) and with a number (global): kept as 'a' and 'a#'."""
     if not isinstance(opts, str):
         raise HullkitError(f"opts must be a string of Triangle's switches, got {opts!r}")
-    found = set()
-    for i, c in enumerate(opts):
+    found = {}
+    i = 0
+    while i < len(opts):
+        c = opts[i]
+        j = i + 1
+        while j < len(opts) and (opts[j].isdigit() or opts[j] == "."):
+            j += 1
+        number = opts[i + 1:j]
         if c in _SWITCHES:
-            found.add(c)
+            if number and c not in _NUMBERED:
+                raise HullkitError(f"switch '{c}' takes no number, got '{c}{number}' in opts {opts!r}")
+            value = None
+            if number:
+                try:
+                    value = float(number)
+                except ValueError:
+                    raise HullkitError(f"'{number}' after switch '{c}' in opts {opts!r} is not a number") from None
+            found["a#" if c == "a" and value is not None else c] = value
         elif c in _NOT_YET:
             raise HullkitError(f"Triangle's switch '{c}' ({_NOT_YET[c]}) is not supported by hullkit yet")
-        elif not (c.isdigit() or c == "."):
-            raise HullkitError(f"unknown switch '{c}' at position {i} of opts {opts!r}")
+        elif c.isdigit() or c == ".":
+            raise HullkitError(f"the number at position {i} of opts {opts!r} follows no switch that takes one (q, a, S)")
         else:
-            raise HullkitError(f"a number in opts {opts!r} belongs to a switch hullkit does not support yet")
+            raise HullkitError(f"unknown switch '{c}' at position {i} of opts {opts!r}")
+        i = j
     return found
 
 
-def triangulate(tri, opts="", **options):
+def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the other
     """Triangle's ``triangulate(tri, opts)`` (the ``triangle`` package), exact. ``tri`` a dict with
     ``vertices`` (n, 2), optionally ``segments`` (m, 2) and ``holes`` (h, 2) (points inside holes).
     Switches: ``p`` triangulate the planar straight-line graph (segments kept as edges, split where
     a vertex lies on them or another segment crosses; the exterior and the hole regions removed),
     ``c`` keep the whole convex hull, ``n`` also ``neighbors``, ``e`` also ``edges``; ``z``, ``Q``,
     ``V`` are accepted (indices are always zero-based). Without ``p`` the vertices' Delaunay
-    triangulation. The keyword ``convex=True`` is ``c``. Returns a dict: ``vertices`` (input
-    vertices then the crossing points added), ``triangles`` (t, 3) counter-clockwise as Triangle's,
-    ``segments`` (the edges on segments, each once), and ``neighbors``/``edges`` when asked."""
+    triangulation. Quality meshes: ``q`` (a minimum angle, default 20 degrees: ``q30``), ``a0.5``
+    (a maximum area), bare ``a`` (each region's area from ``tri['regions']``, rows x y attribute
+    max_area), ``D`` (conforming Delaunay), ``S100`` (at most 100 added points, else an error). The
+    keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``, ``max_steiner_points`` do the
+    same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
+    ``triangles`` (t, 3) counter-clockwise as Triangle's, ``segments`` (the edges on segments, each
+    once), and ``neighbors``/``edges`` when asked."""
     if not isinstance(tri, dict):
         raise HullkitError(f"tri must be a dict with 'vertices' (and 'segments', 'holes'), got {type(tri).__name__}")
     unknown = sorted(set(tri) - set(_KEYS))
@@ -83,11 +131,22 @@ def triangulate(tri, opts="", **options):
         raise HullkitError(f"tri key(s) {unknown} are not supported by hullkit yet (it takes {list(_KEYS)})")
     if "vertices" not in tri:
         raise HullkitError("tri needs 'vertices', shape (n, 2)")
-    extra = set(options) - {"convex"}
+    known = {"convex", "min_angle", "max_area", "conforming", "max_steiner_points"}
+    extra = set(options) - known
     if extra:
-        raise HullkitError(f"unknown keyword(s) {sorted(extra)} (known: convex)")
+        raise HullkitError(f"unknown keyword(s) {sorted(extra)} (known: {', '.join(sorted(known))})")
     switches = _switches(opts)
     convex = bool(options.get("convex", False)) or "c" in switches
+    min_angle = options.get("min_angle")
+    if min_angle is None:
+        min_angle = (20.0 if switches["q"] is None else switches["q"]) if "q" in switches else 0.0
+    max_area = options.get("max_area")
+    if max_area is None:
+        max_area = switches.get("a#") or 0.0
+    steiner = options.get("max_steiner_points", 0)
+    if "S" in switches:
+        steiner = int(switches["S"] or 0)
+    quality = _quality(min_angle, max_area, bool(options.get("conforming", False)) or "D" in switches, steiner)
     points = as_points(tri["vertices"], 2, "tri['vertices']")
     segments = _np.zeros((0, 2), _np.int64)
     holes = _np.zeros((0, 2))
@@ -100,8 +159,15 @@ def triangulate(tri, opts="", **options):
             holes = as_points(tri["holes"], 2, "tri['holes']")
     else:
         convex = True  # Triangle without p: the Delaunay triangulation of the vertices
-    vertices, triangles, halfedges, constrained, _, _ = _run(
-        points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes)
+    regions = None
+    if "regions" in tri and "p" in switches:
+        rows = _np.ascontiguousarray(tri["regions"], dtype=_np.float64)
+        if rows.ndim != 2 or rows.shape[1] != 4:
+            raise HullkitError(f"tri['regions'] must have shape (k, 4): x, y, attribute, max_area; got {rows.shape}")
+        # Without a bare 'a' the regions' areas are not bounds (as Triangle reads them).
+        regions = _np.ascontiguousarray(rows[:, [0, 1, 3]] if "a" in switches else _np.c_[rows[:, :2], _np.zeros(len(rows))])
+    vertices, triangles, halfedges, constrained, _, _, _, _ = _run(
+        points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality)
     out = {"vertices": vertices, "triangles": _np.ascontiguousarray(triangles[:, [0, 2, 1]])}
     flat = triangles.ravel()
     following = _np.arange(len(flat)).reshape(-1, 3)[:, [1, 2, 0]].ravel()
@@ -115,4 +181,6 @@ def triangulate(tri, opts="", **options):
         out["neighbors"] = _np.ascontiguousarray(across[:, [1, 0, 2]]).astype(_np.int32)
     if "p" in switches and "holes" in tri:
         out["holes"] = holes
+    if "p" in switches and "regions" in tri:
+        out["regions"] = _np.asarray(tri["regions"], dtype=_np.float64)
     return out

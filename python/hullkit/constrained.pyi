@@ -13,6 +13,8 @@ class _PolygonResult(TypedDict):
     constrained: NDArray[np.uint8]
     representative: NDArray[np.uint32]
     crossing_count: int
+    steiner_count: int
+    unrefined_count: int
 
 class _TriangleResult(TypedDict):
     vertices: NDArray[np.float64]
@@ -21,8 +23,25 @@ class _TriangleResult(TypedDict):
     edges: NotRequired[NDArray[np.int32]]
     neighbors: NotRequired[NDArray[np.int32]]
     holes: NotRequired[NDArray[np.float64]]
+    regions: NotRequired[NDArray[np.float64]]
 
 def triangulate_polygon(
-    coords: ArrayLike, hole_indices: ArrayLike | None = None, fill: Literal["evenodd", "nonzero"] = "evenodd"
+    coords: ArrayLike,
+    hole_indices: ArrayLike | None = None,
+    fill: Literal["evenodd", "nonzero"] = "evenodd",
+    *,
+    min_angle: float = 0,
+    max_area: float = 0,
+    conforming: bool = False,
+    max_steiner_points: int = 0,
 ) -> _PolygonResult: ...
-def triangulate(tri: dict[str, Any], opts: str = "", *, convex: bool = False) -> _TriangleResult: ...
+def triangulate(
+    tri: dict[str, Any],
+    opts: str = "",
+    *,
+    convex: bool = False,
+    min_angle: float | None = None,
+    max_area: float | None = None,
+    conforming: bool = False,
+    max_steiner_points: int = 0,
+) -> _TriangleResult: ...

@@ -258,31 +258,47 @@ void circle_centre(const double* a, const double* b, const double* c, double* ou
 /// int32: the corners counter-clockwise from the lowest index).
 /// Constrained Delaunay triangulation: with `ring_starts` given (a polygon's rings) the triangles
 /// inside by `fill`; else the graph of `segments`, then without `convex` its exterior removed and
-/// the regions around `holes` (Triangle's .poly meaning). Returns (coords (m, 2), triangles (t, 3)
-/// clockwise, halfedges, constrained, representative, crossing_count).
+/// the regions around `holes` (Triangle's .poly meaning), `regions` (k, 3: x, y, max_area) giving
+/// regional area bounds. `quality` is (min_angle, max_area, conforming, max_steiner_points): Delaunay
+/// refinement. Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
+/// representative, crossing_count, steiner_count, unrefined_count).
 py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
-                      py::object ring_starts, const std::string& fill, bool convex, const Points& holes) {
+                      py::object ring_starts, const std::string& fill, bool convex, const Points& holes,
+                      const Points& regions, double min_angle, double max_area, bool conforming,
+                      std::size_t max_steiner_points) {
     const std::size_t n = rows(points, 2, "points");
     const hullkit::PointSpan2 span(points.data(), n);
+    hullkit::QualityOptions quality;
+    quality.min_angle = min_angle;
+    quality.max_area = max_area;
+    quality.conforming = conforming;
+    quality.max_steiner_points = max_steiner_points;
     hullkit::ConstrainedDelaunay d;
     if (!ring_starts.is_none()) {
         const auto starts = ring_starts.cast<py::array_t<std::uint32_t, py::array::c_style>>();
         hullkit::PolygonOptions options;
+        options.quality = quality;
         if (!hullkit::parse_fill_rule(fill, &options.fill)) throw std::invalid_argument("fill must be 'evenodd' or 'nonzero', got '" + fill + "'");
         py::gil_scoped_release release;
         d = hullkit::triangulate_polygon(span, starts.data(), static_cast<std::size_t>(starts.size()), options);
     } else {
+        hullkit::ConstrainedOptions options;
+        options.quality = quality;
+        options.remove_exterior = !convex;
         const std::size_t h = rows(holes, 2, "holes");
+        options.holes.assign(holes.data(), holes.data() + 2 * h);
+        const std::size_t r = rows(regions, 3, "regions");
+        for (std::size_t k = 0; k < r; ++k)
+            options.regions.push_back({regions.data()[3 * k], regions.data()[3 * k + 1], regions.data()[3 * k + 2]});
         py::gil_scoped_release release;
-        d = hullkit::constrained_delaunay(span, segments.data(), static_cast<std::size_t>(segments.size()) / 2);
-        if (d.ok()) hullkit::remove_regions(d, !convex, hullkit::PointSpan2(holes.data(), h));
+        d = hullkit::constrained_delaunay(span, segments.data(), static_cast<std::size_t>(segments.size()) / 2, options);
     }
     if (!d.ok()) throw CoreError(d.error, d.error_point >= 0 ? d.error_point : -1);
     const auto triangles = static_cast<py::ssize_t>(d.triangle_count());
-    const std::size_t crossings = d.crossing_count;
+    const std::size_t crossings = d.crossing_count, steiner = d.steiner_count, unrefined = d.unrefined_count;
     return py::make_tuple(owned_points(std::move(d.coords), 2), owned(std::move(d.triangles), {triangles, 3}),
                           owned(std::move(d.halfedges)), owned(std::move(d.constrained)), owned(std::move(d.representative)),
-                          crossings);
+                          crossings, steiner, unrefined);
 }
 
 py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& hull) {

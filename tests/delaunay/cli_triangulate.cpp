@@ -5,6 +5,8 @@
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -147,5 +149,48 @@ TEST_CASE("hullkit triangulate: errors name the file, line and ring", "[cli][con
     CHECK(error_of("line.geojson", R"({"type":"LineString","coordinates":[[0,0],[1,1]]})").find("LineString is not a Polygon") != std::string::npos);
     CHECK(error_of("ok.txt", "0 0\n1 0\n0 1\n", {"--fill", "winding"}).find("unknown fill rule \"winding\"") != std::string::npos);
     CHECK(error_of("ok2.txt", "0 0\n1 0\n0 1\n", {"--format", "node"}).find("give -o BASE.node") != std::string::npos);
-    CHECK(error_of("regions.poly", std::string(kSquareWithHolePoly) + "1\n1 0.5 0.5 1 0.1\n").find("not supported yet") != std::string::npos);
+    CHECK(error_of("regions.poly", std::string(kSquareWithHolePoly) + "1\n1 0.5 0.5\n").find("regions.poly line 22: expected \"index x y attribute") !=
+          std::string::npos);
+    CHECK(error_of("ok3.txt", "0 0\n1 0\n0 1\n", {"--min-angle", "35"}).find("--min-angle must be from 0 to 34") != std::string::npos);
+    CHECK(error_of("ok4.txt", "0 0\n1 0\n0 1\n", {"--max-area", "-1"}).find("--max-area must be a positive number") != std::string::npos);
+    CHECK(error_of("ok5.txt", "0 0\n1 0\n0 1\n", {"--max-area", "0.0001", "--max-steiner", "20"}).find("max_steiner_points") !=
+          std::string::npos);
+}
+
+TEST_CASE("hullkit triangulate: quality meshes (--min-angle, --max-area, --conforming, .poly regions)", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    write_text(dir.file("rings.txt"), kSquareWithHole);
+    // The smallest angle and the largest area, measured on the JSON output.
+    auto measure = [](const nlohmann::json& j, double* smallest, double* largest) {
+        *smallest = 180, *largest = 0;
+        for (const auto& t : j["triangles"]) {
+            double p[3][2];
+            for (int k = 0; k < 3; ++k) p[k][0] = j["points"][t[k].get<std::size_t>()][0], p[k][1] = j["points"][t[k].get<std::size_t>()][1];
+            for (int k = 0; k < 3; ++k) {
+                const double ux = p[(k + 1) % 3][0] - p[k][0], uy = p[(k + 1) % 3][1] - p[k][1];
+                const double vx = p[(k + 2) % 3][0] - p[k][0], vy = p[(k + 2) % 3][1] - p[k][1];
+                *smallest = std::min(*smallest, std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI);
+                *largest = std::max(*largest, std::fabs(ux * vy - uy * vx) / 2);
+            }
+        }
+    };
+    double smallest, largest;
+    const RunResult run = run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json", "--min-angle", "30", "--max-area", "0.5", "--stats"});
+    const nlohmann::json mesh = json_of(run);
+    CHECK(checked_area(mesh) == 12);  // exact: the added points on these rings are exact
+    measure(mesh, &smallest, &largest);
+    CHECK(smallest >= 30);
+    CHECK(largest <= 0.5);
+    const nlohmann::json stats = nlohmann::json::parse(run.err);
+    CHECK(stats["steiner"].get<std::size_t>() == mesh["points"].size() - 8);
+    CHECK(stats["unrefined"] == 0);
+    // A .poly's regions: the area bound of the region around (0.5, 0.5) is the ring around the hole.
+    write_text(dir.file("regions.poly"), std::string(kSquareWithHolePoly) + "1\n1 0.5 0.5 7 0.05\n");
+    const nlohmann::json regional = json_of(run_cli(dir, {"triangulate", dir.file("regions.poly"), "--format", "json"}));
+    CHECK(checked_area(regional) == 12);
+    measure(regional, &smallest, &largest);
+    CHECK(largest <= 0.05);
+    // Conforming: more points than the constrained mesh, the same area.
+    const nlohmann::json conforming = json_of(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json", "--conforming", "--min-angle", "20"}));
+    CHECK(checked_area(conforming) == 12);
 }

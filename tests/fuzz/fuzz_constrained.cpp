@@ -1,10 +1,13 @@
 // libFuzzer target: hullkit::constrained_delaunay and hullkit::triangulate_polygon on arbitrary
 // bytes. The first byte picks how points are read (as fuzz_delaunay: (0) doubles, NaN and extreme
 // magnitudes included; (1) int8 pairs: grids, collinear runs, repeats and crossings; (2) int8 pairs
-// scaled by 2^-30 far from the origin; (3) int16 pairs), whether they form rings (bit 2) and the
-// fill rule (bit 3); the second byte how rings split or which pairs are segments. Checked:
+// scaled by 2^-30 far from the origin; (3) int16 pairs), whether they form rings (bit 2), the
+// fill rule (bit 3), Delaunay refinement (bit 4: a minimum angle of 0 to 30 degrees from the
+// second byte, at most 3000 added points; bit 5 conforming); the second byte also how rings split
+// or which pairs are segments. Checked:
 //  - a returned triangulation passes the exact verify_constrained (valid, no overlap, unflagged
-//    edges locally Delaunay; polygons: every boundary edge on a ring; graphs: covers the hull);
+//    edges locally Delaunay; polygons and refined meshes: every boundary edge flagged; graphs:
+//    covers the hull);
 //  - graphs: the ends of every segment are joined by a chain of flagged edges (one component);
 //  - representatives are the lowest index with the same coordinates; triangles name only them or
 //    added points; an error is one line and leaves no triangles.
@@ -48,6 +51,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool polygon = data[0] & 4;
     const hullkit::FillRule fill = data[0] & 8 ? hullkit::FillRule::NonZero : hullkit::FillRule::EvenOdd;
     const unsigned pick = data[1];
+    hullkit::QualityOptions quality;
+    if (data[0] & 16) {
+        quality.min_angle = 2.0 * (pick >> 4);
+        quality.conforming = (data[0] & 32) != 0;
+        quality.max_steiner_points = 3000;
+    }
     const std::vector<double> xy = fuzz_input::points2d(data + 2, size - 2, mode);
     const hullkit::PointSpan2 points(xy);
     const std::uint32_t n = static_cast<std::uint32_t>(points.count);
@@ -60,12 +69,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         hullkit::PolygonOptions options;
         options.fill = fill;
         options.threads = 1;
+        options.quality = quality;
         d = hullkit::triangulate_polygon(points, starts.data(), starts.size(), options);
     } else if (n > 0) {
         const std::uint32_t step = pick % 7 + 1;
         for (std::uint32_t i = 0; i < n; i += 2) segments.insert(segments.end(), {i, static_cast<std::uint32_t>((i * step + pick) % n)});
         hullkit::ConstrainedOptions options;
         options.threads = 1;
+        options.quality = quality;
         d = hullkit::constrained_delaunay(points, segments.data(), segments.size() / 2, options);
     }
     if (!d.ok()) {
@@ -80,7 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     for (std::uint32_t v : d.triangles) check(v >= n || d.representative[v] == v);
     const hullkit::ConstrainedVerifyReport report = hullkit::verify_constrained(
-        hullkit::PointSpan2(d.coords), d.triangles.data(), d.triangle_count(), d.halfedges.data(), d.constrained.data(), polygon);
+        hullkit::PointSpan2(d.coords), d.triangles.data(), d.triangle_count(), d.halfedges.data(), d.constrained.data(), polygon || quality.active());
     check(report.ok);
     if (!polygon && d.dimension == 2) {
         Components components(d);

@@ -165,3 +165,65 @@ test('triangulatePolygon and constrainedDelaunay: clear errors', () => {
   assert.equal(hullkit.triangulatePolygon([0, 0, 1, 1, 2, 2]).triangles.length, 0);
   assert.equal(hullkit.triangulatePolygon([]).dimension, -1);
 });
+
+/** The smallest angle of a triangulation, in degrees (measured on the output). */
+function smallestAngle(coords, triangles) {
+  let best = 180;
+  for (let t = 0; t < triangles.length; t += 3) {
+    for (let k = 0; k < 3; k++) {
+      const [w, u, x] = [0, 1, 2].map((j) => triangles[t + (k + j) % 3]);
+      const ux = coords[2 * u] - coords[2 * w], uy = coords[2 * u + 1] - coords[2 * w + 1];
+      const xx = coords[2 * x] - coords[2 * w], xy = coords[2 * x + 1] - coords[2 * w + 1];
+      best = Math.min(best, Math.atan2(Math.abs(ux * xy - uy * xx), ux * xx + uy * xy) * 180 / Math.PI);
+    }
+  }
+  return best;
+}
+
+test('triangulatePolygon: quality meshes (minAngle, maxArea, conforming) keep the area and the rings', () => {
+  const coords = [0, 0, 10, 0, 10, 10, 0, 10, 3, 3, 7, 3, 7, 6, 3, 6];
+  const plain = hullkit.triangulatePolygon(coords, [4]);
+  assert.equal(plain.steinerCount, 0);
+  for (const options of [{ minAngle: 20 }, { minAngle: 33 }, { maxArea: 0.5 }, { minAngle: 25, maxArea: 2, conforming: true }]) {
+    const mesh = hullkit.triangulatePolygon(coords, [4], options);
+    checkValid(mesh, { boundaryConstrained: true });
+    assert.ok(mesh.steinerCount > 0, JSON.stringify(options));
+    assert.equal(mesh.addedCount, mesh.steinerCount);
+    assert.equal(mesh.unrefinedCount, 0);
+    // Points on these axis-parallel rings are exact: the same area exactly.
+    // (the input vertices come first in mesh.coords, so the plain triangles index it too)
+    assert.equal(twiceArea(mesh.coords, mesh.triangles), twiceArea(mesh.coords, plain.triangles));
+    if (options.minAngle) assert.ok(smallestAngle(mesh.coords, mesh.triangles) >= options.minAngle, JSON.stringify(options));
+    if (options.maxArea) {
+      for (let t = 0; t < mesh.triangles.length; t += 3) {
+        const [a, b, c] = [0, 1, 2].map((k) => mesh.triangles[t + k]);
+        const area = Math.abs((mesh.coords[2 * b] - mesh.coords[2 * a]) * (mesh.coords[2 * c + 1] - mesh.coords[2 * a + 1]) -
+          (mesh.coords[2 * b + 1] - mesh.coords[2 * a + 1]) * (mesh.coords[2 * c] - mesh.coords[2 * a])) / 2;
+        assert.ok(area <= options.maxArea);
+      }
+    }
+  }
+  // The same mesh every time.
+  const again = hullkit.triangulatePolygon(coords, [4], { minAngle: 33 });
+  assert.deepEqual(again.coords, hullkit.triangulatePolygon(coords, [4], { minAngle: 33 }).coords);
+});
+
+test('constrainedDelaunay: Triangle .poly domains (removeExterior, holes) and their quality meshes', () => {
+  // An L-shaped outline with a square hole; the hull's notch is exterior.
+  const coords = [0, 0, 6, 0, 6, 3, 3, 3, 3, 6, 0, 6, 1, 1, 2, 1, 2, 2, 1, 2];
+  const edges = [0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 6, 7, 7, 8, 8, 9, 9, 6];
+  const whole = hullkit.constrainedDelaunay(coords, edges);
+  const domain = hullkit.constrainedDelaunay(coords, edges, { removeExterior: true, holes: [1.5, 1.5] });
+  assert.equal(twiceAreaOfIntegers(coords, whole.triangles), 2 * (36 - 4.5));
+  assert.equal(twiceAreaOfIntegers(coords, domain.triangles), 2 * (27 - 1));
+  const mesh = hullkit.constrainedDelaunay(coords, edges, { removeExterior: true, holes: [1.5, 1.5], minAngle: 30, maxArea: 0.25 });
+  checkValid(mesh, { boundaryConstrained: true });
+  assert.equal(twiceArea(mesh.coords, mesh.triangles), twiceArea(mesh.coords, domain.triangles));
+  assert.ok(smallestAngle(mesh.coords, mesh.triangles) >= 30);
+  assert.throws(() => hullkit.triangulatePolygon(coords, [], { minAngle: 40 }), /minAngle must be a number of degrees from 0 to 34/);
+  assert.throws(() => hullkit.triangulatePolygon(coords, [], { maxArea: -1 }), /maxArea must be a positive number/);
+  assert.throws(() => hullkit.triangulatePolygon(coords, [], { conforming: 1 }), /conforming must be true or false/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 1, 1, 0, 1], [], { maxArea: 1e-4, maxSteinerPoints: 50 }),
+    (error) => error instanceof HullkitError && /max_steiner_points/.test(error.message));
+  assert.throws(() => hullkit.constrainedDelaunay(coords, edges, { holes: [1] }), /holes/);
+});

@@ -74,10 +74,18 @@ def test_triangulate_pslg_exterior_and_convex():
 
 
 def test_clear_errors():
-    with pytest.raises(hullkit.HullkitError, match="switch 'q' \\(quality meshing"):
-        hullkit.triangulate(SQUARE_WITH_HOLE, "pq30")
-    with pytest.raises(hullkit.HullkitError, match="'regions'"):
-        hullkit.triangulate({**SQUARE_WITH_HOLE, "regions": [[0.5, 0.5, 1, 0]]}, "p")
+    with pytest.raises(hullkit.HullkitError, match="switch 'A' \\(regional attributes"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pA")
+    with pytest.raises(hullkit.HullkitError, match=r"tri\['regions'\] must have shape"):
+        hullkit.triangulate({**SQUARE_WITH_HOLE, "regions": [[0.5, 0.5, 1]]}, "pa")
+    with pytest.raises(hullkit.HullkitError, match="min_angle must be from 0 to 34"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pq40")
+    with pytest.raises(hullkit.HullkitError, match="switch 'p' takes no number"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "p2")
+    with pytest.raises(hullkit.HullkitError, match="max_steiner_points"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pa0.0001S50")
+    with pytest.raises(hullkit.HullkitError, match="max_area must be"):
+        hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1], max_area=-2)
     with pytest.raises(hullkit.HullkitError, match="unknown switch '!'"):
         hullkit.triangulate(SQUARE_WITH_HOLE, "p!")
     with pytest.raises(hullkit.HullkitError, match="must index the 8 vertices"):
@@ -89,3 +97,51 @@ def test_clear_errors():
     with pytest.raises(hullkit.HullkitError) as error:
         hullkit.triangulate_polygon([0, 0, 1, 0, np.nan, 1])
     assert error.value.point == 2
+
+
+def smallest_angle(points, triangles):
+    p = np.asarray(points)[np.asarray(triangles)]
+    best = 180.0
+    for k in range(3):
+        u = p[:, (k + 1) % 3] - p[:, k]
+        v = p[:, (k + 2) % 3] - p[:, k]
+        angle = np.degrees(np.arctan2(np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]), (u * v).sum(axis=1)))
+        best = min(best, float(angle.min()))
+    return best
+
+
+def test_quality_meshes_as_triangle_makes_them():
+    plain = hullkit.triangulate(SQUARE_WITH_HOLE, "p")
+    for opts, angle, area in (("pq", 20, None), ("pq30", 30, None), ("pa0.1", None, 0.1), ("pq25a0.2D", 25, 0.2)):
+        mesh = hullkit.triangulate(SQUARE_WITH_HOLE, opts)
+        areas = twice_areas(mesh["vertices"], mesh["triangles"])
+        assert all(a > 0 for a in areas)  # counter-clockwise, as Triangle's
+        assert sum(areas) == sum(twice_areas(plain["vertices"], plain["triangles"])) == 24  # exact: points on the rings
+        assert len(mesh["vertices"]) > 8, opts
+        if angle:
+            assert smallest_angle(mesh["vertices"], mesh["triangles"]) >= angle, opts
+        if area:
+            assert max(areas) <= 2 * area, opts
+    # Keywords do what switches do, and give the same mesh.
+    by_keyword = hullkit.triangulate(SQUARE_WITH_HOLE, "p", min_angle=30)
+    assert np.array_equal(by_keyword["triangles"], hullkit.triangulate(SQUARE_WITH_HOLE, "pq30")["triangles"])
+    # Regional areas with a bare 'a': the left region gets finer triangles than the global bound.
+    split = {
+        "vertices": [[0, 0], [2, 0], [4, 0], [4, 2], [2, 2], [0, 2]],
+        "segments": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+        "regions": [[1, 1, 0, 0.05], [3, 1, 0, 0]],
+    }
+    mesh = hullkit.triangulate(split, "pa0.5a")
+    pts, tris = mesh["vertices"], mesh["triangles"]
+    areas = np.array(twice_areas(pts, tris), dtype=float) / 2
+    left = pts[tris].mean(axis=1)[:, 0] < 2
+    assert areas[left].max() <= 0.05 and areas[~left].max() <= 0.5 and areas[~left].max() > 0.05
+    assert "regions" in mesh
+
+
+def test_triangulate_polygon_quality_keywords():
+    r = hullkit.triangulate_polygon([0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3], [4], min_angle=28, max_area=0.3)
+    assert r["steiner_count"] == len(r["coords"]) - 8 > 0
+    assert r["unrefined_count"] == 0
+    assert smallest_angle(r["coords"], r["triangles"]) >= 28
+    assert -sum(twice_areas(r["coords"], r["triangles"])) == 24

@@ -53,6 +53,44 @@ enum class FillRule {
     NonZero,  ///< inside where w is not 0: the rings' orientation matters (holes wound the other way)
 };
 
+/// Delaunay refinement of the triangulation's inside (the polygon's inside; for a graph, the convex
+/// hull less the removed regions), as Triangle's -q, -a and -D switches ask for it (Ruppert;
+/// Shewchuk, "Delaunay refinement algorithms for triangular mesh generation", 2002). Segments
+/// encroached by a point (inside the circle with the segment as diameter) are split, at the middle
+/// or, next to a segment's end, at a power-of-two distance from it (concentric shells, so that small
+/// input angles do not cascade); a triangle with too small an angle or too large an area gets its
+/// circumcentre, unless that would encroach a segment (then the segment is split instead). Every
+/// edge of the region's boundary is kept as a segment. Points are computed in floating point and
+/// every decision about the mesh is exact: the result is an exact constrained Delaunay triangulation
+/// of its points (conforming: every triangle Delaunay). A point added on a segment is the nearest
+/// double to the chosen point of the segment and may lie off its line by that rounding; the segment
+/// is then the chain through it (the region's area changes by at most that rounding).
+/// Triangles whose smallest angle is between two segments meeting at less than the bound, or lies
+/// between two points on segments at the same distance from their common end (Shewchuk's rule for
+/// small input angles), are left as they are and counted (unrefined_count).
+struct QualityOptions {
+    /// Degrees, 0 to 34: refine until every angle is at least this (0: no angle bound). Up to 28.6
+    /// termination is guaranteed (with exact arithmetic); above it refinement usually finishes, and
+    /// unless max_steiner_points is set a cap of 16 points per input point plus 10^6 applies.
+    double min_angle = 0;
+    /// No triangle larger than this (in the input's units squared); 0: no area bound.
+    double max_area = 0;
+    /// Every triangle Delaunay, not only constrained Delaunay: segments are split until no point
+    /// lies in the circle on any segment as diameter (Triangle's -D).
+    bool conforming = false;
+    /// Stop with an error once refinement has added this many points (0: no cap, see min_angle).
+    std::size_t max_steiner_points = 0;
+    bool active() const { return min_angle > 0 || max_area > 0 || conforming; }
+};
+
+/// A region of a planar straight-line graph (Triangle's .poly regions): the triangles reachable from
+/// (x, y) without crossing a segment get the area bound max_area (0: only the global one); where a
+/// global bound applies too, the smaller holds. A later seed in the same region wins.
+struct RegionSeed {
+    double x = 0, y = 0;
+    double max_area = 0;
+};
+
 struct ConstrainedOptions {
     /// Accepted for symmetry with DelaunayOptions; every step runs on the calling thread (the
     /// result would be the same for any count).
@@ -62,12 +100,20 @@ struct ConstrainedOptions {
     /// them: iterated rounding settles after one or two points per crossing pair on every input
     /// hullkit has met, and the guard turns a pathological one into an error instead of a long run.
     std::size_t max_added_points = 0;
+    /// Triangle's .poly domain (see remove_regions): drop the exterior (the triangles reachable from
+    /// the convex hull's edges that are not on a segment) and the regions around the hole points
+    /// (x y pairs) before refining and returning.
+    bool remove_exterior = false;
+    std::vector<double> holes;
+    std::vector<RegionSeed> regions;
+    QualityOptions quality;
 };
 
 struct PolygonOptions {
     FillRule fill = FillRule::EvenOdd;
     unsigned threads = 0;
     std::size_t max_added_points = 0;  ///< as ConstrainedOptions::max_added_points
+    QualityOptions quality;  ///< refinement of the inside
 };
 
 /// A constrained Delaunay triangulation. On failure `error` says what is wrong, naming the point
@@ -88,6 +134,9 @@ struct ConstrainedDelaunay {
     std::vector<std::uint32_t> representative;
     std::size_t duplicate_count = 0;
     std::size_t crossing_count = 0;  ///< crossings of two segments resolved by adding or reusing a point
+    std::size_t steiner_count = 0;   ///< points added by refinement (QualityOptions), after the crossings'
+    /// Returned triangles that still miss the quality bounds (small input angles, see QualityOptions).
+    std::size_t unrefined_count = 0;
 
     std::string error;
     std::int64_t error_point = -1;

@@ -1,0 +1,469 @@
+// Delaunay refinement of a constrained triangulation (hullkit/constrained.hpp, QualityOptions):
+// the domain to mesh is marked per triangle (region ids), then encroached segments are split and
+// bad triangles get their circumcentres until nothing is left to do. Every decision that changes
+// the mesh is an exact orient2d, incircle or sign of a dot product; the points themselves are
+// computed in floating point (plain +, -, *, /, sqrt and a fixed cosine series: the same bits on
+// every platform).
+#include "refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "../exact/expansion.hpp"
+
+namespace hullkit {
+namespace constrained_detail {
+namespace {
+
+/// cos(x) for |x| <= 1 by its Taylor series (16 terms: exact to the last bit or so), with the
+/// same operations everywhere (libm's cos may differ between platforms by an ulp).
+double cosine(double x) {
+    double term = 1.0, sum = 1.0;
+    const double x2 = x * x;
+    for (int k = 1; k <= 16; ++k) {
+        term = -term * x2 / ((2.0 * k - 1.0) * (2.0 * k));
+        sum += term;
+    }
+    return sum;
+}
+
+/// The exact sign of (a - w) . (b - w): negative when w is strictly inside the circle with a-b as
+/// diameter (the angle a w b is obtuse).
+int dot_sign(const double* a, const double* b, const double* w) {
+    using namespace exact_detail;
+    double ax[2], ay[2], bx[2], by[2], h[16];
+    const int axl = exact_diff(a[0], w[0], ax), ayl = exact_diff(a[1], w[1], ay);
+    const int bxl = exact_diff(b[0], w[0], bx), byl = exact_diff(b[1], w[1], by);
+    for (int i = 0; i < ayl; ++i) ay[i] = -ay[i];
+    // ax * bx - (-ay) * by
+    return expansion_sign(exact_minor(axl, ax, bxl, bx, ayl, ay, byl, by, h), h);
+}
+
+double squared_distance(const double* a, const double* b) {
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    return dx * dx + dy * dy;
+}
+
+}  // namespace
+
+void Refiner::flood(std::vector<std::uint32_t>& stack, std::uint32_t region) {
+    while (!stack.empty()) {
+        const std::uint32_t t = stack.back();
+        stack.pop_back();
+        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+            if (m_.edge_[e] != 0) continue;
+            const std::uint32_t u = m_.twin_[e] / 3;
+            if (m_.is_ghost(u) || m_.region_[u] == region || m_.region_[u] == 0) continue;
+            m_.region_[u] = region;
+            stack.push_back(u);
+        }
+    }
+}
+
+void Refiner::seed_at(const double* p, std::vector<std::uint32_t>& seeds) {
+    const std::uint32_t start = m_.out_.empty() ? 0 : alive_triangle();
+    const std::uint32_t t0 = m_.locate(p, start);
+    if (m_.is_ghost(t0)) return;  // outside the hull: nothing
+    for (std::uint32_t e = 3 * t0; e < 3 * t0 + 3; ++e) {
+        const double* v = m_.pt(m_.vertex_[e]);
+        if (v[0] == p[0] && v[1] == p[1]) {
+            // On a corner: every triangle around it.
+            const std::uint32_t first = e;
+            std::uint32_t h = first;
+            do {
+                if (!m_.is_ghost(h / 3)) seeds.push_back(h / 3);
+                h = m_.twin_[prev_edge(h)];
+            } while (h != first);
+            return;
+        }
+    }
+    seeds.push_back(t0);
+    for (std::uint32_t e = 3 * t0; e < 3 * t0 + 3; ++e) {
+        if (m_.orient_at(m_.vertex_[e], m_.vertex_[next_edge(e)], p) == 0 && !m_.is_ghost(m_.twin_[e] / 3))
+            seeds.push_back(m_.twin_[e] / 3);
+    }
+}
+
+std::uint32_t Refiner::alive_triangle() const {
+    for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t)
+        if (m_.vertex_[3 * t] != kDead) return t;
+    return 0;
+}
+
+void Refiner::mark_polygon(FillRule fill) {
+    const std::vector<std::uint8_t> in = m_.inside(fill);
+    for (std::size_t t = 0; t < in.size(); ++t) m_.region_[t] = in[t] ? kDomain : 0;
+}
+
+void Refiner::mark_graph(bool exterior, const std::vector<double>& holes, const std::vector<double>& regions) {
+    const std::uint32_t t_count = static_cast<std::uint32_t>(m_.vertex_.size() / 3);
+    for (std::uint32_t t = 0; t < t_count; ++t)
+        m_.region_[t] = m_.vertex_[3 * t] != kDead && !m_.is_ghost(t) ? kDomain : 0;
+    std::vector<std::uint32_t> seeds, stack;
+    auto remove = [&](std::uint32_t t) {
+        if (m_.region_[t] != 0) m_.region_[t] = 0, stack.push_back(t);
+    };
+    if (exterior) {
+        for (std::uint32_t e = 0; e < m_.vertex_.size(); ++e) {
+            const std::uint32_t t = e / 3;
+            if (m_.region_[t] != 0 && m_.edge_[e] == 0 && m_.is_ghost(m_.twin_[e] / 3)) remove(t);
+        }
+    }
+    // Removal floods into triangles not yet removed (region 0 stops the generic flood, so a
+    // dedicated one): reach everything connected without crossing a segment.
+    auto flood_remove = [&]() {
+        while (!stack.empty()) {
+            const std::uint32_t t = stack.back();
+            stack.pop_back();
+            for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+                const std::uint32_t u = m_.twin_[e] / 3;
+                if (m_.edge_[e] == 0 && !m_.is_ghost(u)) remove(u);
+            }
+        }
+    };
+    flood_remove();
+    for (std::size_t h = 0; h + 1 < holes.size(); h += 2) {
+        seeds.clear();
+        seed_at(&holes[h], seeds);
+        for (std::uint32_t t : seeds) remove(t);
+        flood_remove();
+    }
+    for (std::size_t r = 0; 2 * r + 1 < regions.size(); ++r) {
+        seeds.clear();
+        seed_at(&regions[2 * r], seeds);
+        const std::uint32_t id = kDomain + 1 + static_cast<std::uint32_t>(r);
+        for (std::uint32_t t : seeds) {
+            if (m_.region_[t] != 0 && m_.region_[t] != id) m_.region_[t] = id, stack.push_back(t);
+        }
+        flood(stack, id);
+    }
+}
+
+std::vector<std::uint8_t> Refiner::keep() const {
+    std::vector<std::uint8_t> in(m_.region_.size(), 0);
+    for (std::size_t t = 0; t < in.size(); ++t) in[t] = m_.region_[t] != 0;
+    return in;
+}
+
+bool Refiner::bad(std::uint32_t t) const {
+    const std::uint32_t* v = &m_.vertex_[3 * t];
+    const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
+    const double limit = area2_[m_.region_[t]];
+    if (limit > 0) {
+        const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if (area2 > limit) return true;
+    }
+    if (cos2_ >= 1.0) return false;
+    // The smallest angle is opposite the shortest edge (edge k runs from corner k to k + 1).
+    const double* p[3] = {a, b, c};
+    double len[3];
+    for (int k = 0; k < 3; ++k) len[k] = squared_distance(p[k], p[(k + 1) % 3]);
+    int s = 0;
+    if (len[1] < len[s]) s = 1;
+    if (len[2] < len[s]) s = 2;
+    const double *u = p[s], *w = p[(s + 2) % 3], *x = p[(s + 1) % 3];
+    const double dot = (u[0] - w[0]) * (x[0] - w[0]) + (u[1] - w[1]) * (x[1] - w[1]);
+    const double l1 = len[(s + 2) % 3], l2 = len[(s + 1) % 3];  // w-u and x-w
+    if (!(dot > 0 && dot * dot > cos2_ * l1 * l2)) return false;
+    // The angle at w is small. Leave it when it is an input angle (both its edges on segments) or
+    // the triangle sits between two points on segments at the same distance from their common
+    // end (splitting it would start a cascade down the small angle: Shewchuk's rule).
+    const std::uint32_t e_in = 3 * t + (s + 1) % 3, e_out = 3 * t + (s + 2) % 3;  // x -> w, w -> u
+    if (m_.edge_[e_in] != 0 && m_.edge_[e_out] != 0) return false;
+    const std::uint32_t vu = v[s], vx = v[(s + 1) % 3];
+    if (vu < on_segment_.size() && vx < on_segment_.size()) {
+        const std::uint32_t s1 = on_segment_[vu], s2 = on_segment_[vx];
+        if (s1 != kGhost && s2 != kGhost && s1 != s2) {
+            const Parent &p1 = parents_[s1], &p2 = parents_[s2];
+            std::uint32_t join = kGhost;
+            if (p1.a == p2.a || p1.a == p2.b) join = p1.a;
+            else if (p1.b == p2.a || p1.b == p2.b) join = p1.b;
+            if (join != kGhost) {
+                const double d1 = squared_distance(m_.pt(join), u), d2 = squared_distance(m_.pt(join), x);
+                if (d1 < 1.001 * d2 && d2 < 1.001 * d1) return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool Refiner::encroached(std::uint32_t e) const {
+    const double *a = m_.pt(m_.vertex_[e]), *b = m_.pt(m_.vertex_[next_edge(e)]);
+    for (std::uint32_t h : {e, m_.twin_[e]}) {
+        const std::uint32_t t = h / 3;
+        if (m_.is_ghost(t) || (!conforming_ && m_.region_[t] == 0)) continue;
+        if (dot_sign(a, b, m_.pt(m_.vertex_[prev_edge(h)])) < 0) return true;
+    }
+    return false;
+}
+
+void Refiner::retest() {
+    for (std::uint32_t t : m_.touched_) {
+        if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t)) continue;
+        if (m_.region_[t] != 0 && bad(t)) bad_.push_back({t, m_.vertex_[3 * t], m_.vertex_[3 * t + 1], m_.vertex_[3 * t + 2]});
+        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+            if (m_.edge_[e] != 0 && encroached(e)) split_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)], false});
+    }
+    m_.touched_.clear();
+}
+
+bool Refiner::count_point() {
+    ++steiner_count;
+    if (cap_ != 0 && steiner_count > cap_) {
+        error = "quality refinement added " + std::to_string(cap_) +
+                " points without meeting the bounds (max_steiner_points; a smaller min_angle or a larger max_area "
+                "needs fewer)";
+        return false;
+    }
+    return true;
+}
+
+bool Refiner::split_segment(std::uint32_t e) {
+    const std::uint32_t a = m_.vertex_[e], b = m_.vertex_[next_edge(e)];
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    if (m_.edge_[e] == 0 || unsplittable_.count(key)) return false;
+    const Cdt::Record record = m_.records_[m_.edge_[e]];
+    const Parent& parent = parents_[record.parent];
+    const double *pa = m_.pt(a), *pb = m_.pt(b);
+    // Where to split: the middle, or (one end being an end of the whole segment, the other a point
+    // added on it) at the power of two nearest half the length from that end: points near a
+    // segment's end then sit on circles shared by every segment there (concentric shells).
+    const bool a_end = a == parent.a || a == parent.b, b_end = b == parent.a || b == parent.b;
+    double m[2];
+    if (a_end != b_end) {
+        const double* from = a_end ? pa : pb;
+        const double* to = a_end ? pb : pa;
+        const double length = std::sqrt(squared_distance(from, to));
+        int exponent = 0;
+        std::frexp(length / 2, &exponent);  // length / 2 in [2^(exponent-1), 2^exponent)
+        double shell = std::ldexp(1.0, exponent - 1);
+        if (length / 2 >= 1.5 * shell) shell *= 2;
+        const double f = shell / length;  // in [1/3, 2/3]
+        m[0] = from[0] + f * (to[0] - from[0]);
+        m[1] = from[1] + f * (to[1] - from[1]);
+    } else {
+        m[0] = pa[0] + 0.5 * (pb[0] - pa[0]);
+        m[1] = pa[1] + 0.5 * (pb[1] - pa[1]);
+    }
+    // Both new triangles on each side must turn the right way (a point within rounding of the
+    // segment always does unless a third point is as close to it); if not, or the segment is too
+    // short to hold a point between its ends, it stays whole.
+    const std::uint32_t f = m_.twin_[e];
+    const std::uint32_t c = m_.vertex_[prev_edge(e)], d = m_.vertex_[prev_edge(f)];
+    const bool fits = !(m[0] == pa[0] && m[1] == pa[1]) && !(m[0] == pb[0] && m[1] == pb[1]) &&
+                      (c == kGhost || (m_.orient_at(a, c, m) < 0 && m_.orient_at(b, c, m) > 0)) &&
+                      (d == kGhost || (m_.orient_at(b, d, m) < 0 && m_.orient_at(a, d, m) > 0)) &&
+                      std::isfinite(m[0]) && std::isfinite(m[1]);
+    if (!fits) {
+        unsplittable_.insert(key);
+        return false;
+    }
+    if (!count_point()) return false;
+    const std::int32_t wind = m_.wind(e);
+    const std::uint32_t t1 = e / 3, t2 = f / 3;
+    const std::uint32_t o_bc = m_.twin_[next_edge(e)], o_ca = m_.twin_[prev_edge(e)];
+    const std::uint32_t o_ad = m_.twin_[next_edge(f)], o_db = m_.twin_[prev_edge(f)];
+    const std::uint32_t r_bc = m_.edge_[next_edge(e)], r_ca = m_.edge_[prev_edge(e)];
+    const std::uint32_t r_ad = m_.edge_[next_edge(f)], r_db = m_.edge_[prev_edge(f)];
+    const std::uint32_t q = static_cast<std::uint32_t>(m_.xy_.size() / 2);
+    m_.xy_.push_back(m[0]), m_.xy_.push_back(m[1]);
+    m_.out_.push_back(kGhost);
+    on_segment_.resize(q + 1, kGhost);
+    on_segment_[q] = record.parent;
+    // (a, b, c) becomes (a, q, c) and (q, b, c); (b, a, d) becomes (b, q, d) and (q, a, d).
+    const std::uint32_t t3 = m_.add_triangle(q, b, c), t4 = m_.add_triangle(q, a, d);
+    m_.region_[t3] = m_.region_[t1], m_.region_[t4] = m_.region_[t2];
+    auto set = [&](std::uint32_t t, std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+        m_.vertex_[3 * t] = x, m_.vertex_[3 * t + 1] = y, m_.vertex_[3 * t + 2] = z;
+        m_.edge_[3 * t] = m_.edge_[3 * t + 1] = m_.edge_[3 * t + 2] = 0;
+    };
+    set(t1, a, q, c);
+    set(t2, b, q, d);
+    auto outer = [&](std::uint32_t h, std::uint32_t outside, std::uint32_t r) {
+        m_.link(h, outside);
+        m_.edge_[h] = r;
+    };
+    outer(3 * t1 + 2, o_ca, r_ca);
+    outer(3 * t3 + 1, o_bc, r_bc);
+    outer(3 * t2 + 2, o_db, r_db);
+    outer(3 * t4 + 1, o_ad, r_ad);
+    m_.link(3 * t1, 3 * t4);          // a -> q, q -> a
+    m_.link(3 * t3, 3 * t2);          // q -> b, b -> q
+    m_.link(3 * t1 + 1, 3 * t3 + 2);  // q -> c, c -> q
+    m_.link(3 * t2 + 1, 3 * t4 + 2);  // q -> d, d -> q
+    m_.out_[a] = 3 * t1, m_.out_[q] = 3 * t1 + 1, m_.out_[b] = 3 * t2;
+    if (c != kGhost) m_.out_[c] = 3 * t1 + 2;
+    if (d != kGhost) m_.out_[d] = 3 * t2 + 2;
+    m_.touched_.push_back(t1), m_.touched_.push_back(t2);
+    // The two halves keep the segment's records (a new one each) and its parent.
+    m_.set_flags(3 * t1, wind, record.count, record.origin);
+    m_.set_flags(3 * t3, wind, record.count, record.origin);
+    m_.records_[m_.edge_[3 * t1]].parent = record.parent;
+    m_.records_[m_.edge_[3 * t3]].parent = record.parent;
+    for (const Cdt::Edge edge : {Cdt::Edge{c, a}, Cdt::Edge{b, c}, Cdt::Edge{d, b}, Cdt::Edge{a, d}})
+        if (edge.from != kGhost && edge.to != kGhost) m_.fresh_.push_back(edge);
+    m_.legalize();
+    return true;
+}
+
+std::uint32_t Refiner::walk(const double* p, std::uint32_t t, std::uint32_t* wall) {
+    // A visibility walk that never crosses a segment: blocked when p is beyond segments only.
+    const std::size_t limit = 4 * m_.vertex_.size() + 64;
+    for (std::size_t step = 0; step < limit; ++step) {
+        m_.seed_ = m_.seed_ * 1103515245u + 12345u;
+        const std::uint32_t r = (m_.seed_ >> 16) % 3;
+        std::uint32_t cross = kGhost, blocked = kGhost;
+        for (std::uint32_t k = 0; k < 3 && cross == kGhost; ++k) {
+            const std::uint32_t e = 3 * t + (r + k) % 3;
+            if (m_.orient_at(m_.vertex_[e], m_.vertex_[next_edge(e)], p) >= 0) continue;
+            if (m_.edge_[e] == 0 && !m_.is_ghost(m_.twin_[e] / 3)) cross = e;
+            else if (blocked == kGhost) blocked = e;
+        }
+        if (cross == kGhost) {
+            *wall = blocked;
+            return blocked == kGhost ? t : kGhost;
+        }
+        t = m_.twin_[cross] / 3;
+    }
+    *wall = kGhost;
+    return kGhost;
+}
+
+bool Refiner::split_triangle(const BadTriangle& item) {
+    const std::uint32_t t = item.t;
+    const std::uint32_t* v = &m_.vertex_[3 * t];
+    const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
+    // The circumcentre, from a: (|ab|^2 (ac)perp - |ac|^2 (ab)perp) / (2 ab x ac).
+    const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    const double lb = bx * bx + by * by, lc = cx * cx + cy * cy;
+    const double den = 2 * (bx * cy - by * cx);
+    const double centre[2] = {a[0] + (cy * lb - by * lc) / den, a[1] + (bx * lc - cx * lb) / den};
+    if (!std::isfinite(centre[0]) || !std::isfinite(centre[1])) return true;
+    std::uint32_t wall = kGhost;
+    const std::uint32_t at = walk(centre, t, &wall);
+    if (at == kGhost) {
+        // The centre is beyond a segment: that segment is split instead (Ruppert).
+        if (wall != kGhost && split_segment(wall)) bad_.push_back(item);
+        return error.empty();
+    }
+    for (std::uint32_t e = 3 * at; e < 3 * at + 3; ++e) {
+        const double* p = m_.pt(m_.vertex_[e]);
+        if (p[0] == centre[0] && p[1] == centre[1]) return true;  // no room: left as it is
+    }
+    // The segments the new point would encroach: those on the boundary of its cavity (the
+    // triangles whose circumcircle holds it, reached without crossing a segment).
+    cavity_.clear();
+    cavity_.push_back(at);
+    walls_.clear();
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+        for (std::uint32_t e = 3 * cavity_[k]; e < 3 * cavity_[k] + 3; ++e) {
+            if (m_.edge_[e] != 0) {
+                walls_.push_back(e);
+                continue;
+            }
+            const std::uint32_t u = m_.twin_[e] / 3;
+            if (std::find(cavity_.begin(), cavity_.end(), u) == cavity_.end() && m_.conflicts(u, centre)) cavity_.push_back(u);
+        }
+    }
+    // The encroached ones, by their ends (splitting one changes the mesh's half-edges).
+    encroached_.clear();
+    bool deferred = false, on_wall = false;
+    for (std::uint32_t e : walls_) {
+        const std::uint32_t u = m_.vertex_[e], v = m_.vertex_[next_edge(e)];
+        if (dot_sign(m_.pt(u), m_.pt(v), centre) >= 0) continue;
+        if (m_.orient_at(u, v, centre) == 0) on_wall = true;
+        encroached_.push_back({u, v});
+    }
+    for (const Cdt::Edge& wall : encroached_) {
+        const std::uint32_t e = m_.find_edge(wall.from, wall.to);
+        if (e == kGhost || m_.edge_[e] == 0) continue;
+        if (split_segment(e)) deferred = true;
+        else if (!error.empty()) return false;
+    }
+    if (deferred) {
+        bad_.push_back(item);
+        return true;
+    }
+    if (on_wall) return true;  // on a segment that cannot be split: left as it is
+    if (!count_point()) return false;
+    m_.insert_at(centre, at);
+    if (m_.internal_error_) {
+        error = "internal error: a refinement point could not be inserted (please report this input)";
+        return false;
+    }
+    on_segment_.resize(m_.xy_.size() / 2, kGhost);
+    return true;
+}
+
+bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
+    area2_ = std::move(area2);
+    conforming_ = options.conforming;
+    const double pi = 3.14159265358979323846;
+    const double cosine_bound = options.min_angle > 0 ? cosine(options.min_angle * (pi / 180)) : 1.0;
+    cos2_ = cosine_bound * cosine_bound;
+    cap_ = options.max_steiner_points;
+    if (cap_ == 0 && options.min_angle > 28.6) cap_ = 16 * m_.input_count_ + 1000000;
+    // Every edge between the domain and the rest is kept as a segment; every segment is its own
+    // parent (the whole segment, whose ends decide where its pieces are split).
+    for (std::uint32_t e = 0; e < m_.vertex_.size(); ++e) {
+        const std::uint32_t t = e / 3;
+        if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t) || m_.region_[t] == 0 || m_.edge_[e] != 0) continue;
+        const std::uint32_t u = m_.twin_[e] / 3;
+        if (m_.is_ghost(u) || m_.region_[u] == 0) m_.set_flags(e, 0, 1, kGhost);
+    }
+    for (std::uint32_t e = 0; e < m_.vertex_.size(); ++e) {
+        if (m_.vertex_[e] == kDead || m_.edge_[e] == 0) continue;
+        Cdt::Record& record = m_.records_[m_.edge_[e]];
+        if (record.parent != kGhost) continue;
+        record.parent = static_cast<std::uint32_t>(parents_.size());
+        parents_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)]});
+    }
+    on_segment_.assign(m_.xy_.size() / 2, kGhost);
+    m_.track_ = true;
+    m_.touched_.clear();
+    for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) m_.touched_.push_back(t);
+    retest();
+    std::size_t split_head = 0, bad_head = 0;
+    while (error.empty()) {
+        if (split_head < split_.size()) {
+            const SplitItem item = split_[split_head++];
+            const std::uint32_t e = m_.find_edge(item.a, item.b);
+            if (e != kGhost && m_.edge_[e] != 0 && (item.forced || encroached(e))) split_segment(e);
+        } else if (bad_head < bad_.size()) {
+            const BadTriangle item = bad_[bad_head++];
+            const std::uint32_t* v = &m_.vertex_[3 * item.t];
+            if (v[0] != item.a || v[1] != item.b || v[2] != item.c || m_.region_[item.t] == 0 || !bad(item.t)) continue;
+            if (!split_triangle(item)) break;
+        } else {
+            break;
+        }
+        retest();
+        if (split_head == split_.size()) split_.clear(), split_head = 0;
+        if (bad_head > 4096 && bad_head * 2 > bad_.size()) bad_.erase(bad_.begin(), bad_.begin() + bad_head), bad_head = 0;
+    }
+    m_.track_ = false;
+    if (!error.empty()) return false;
+    for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) {
+        if (m_.vertex_[3 * t] != kDead && !m_.is_ghost(t) && m_.region_[t] != 0 && still_bad(t)) ++unrefined_count;
+    }
+    return true;
+}
+
+bool Refiner::still_bad(std::uint32_t t) const {
+    const std::uint32_t* v = &m_.vertex_[3 * t];
+    const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
+    const double limit = area2_[m_.region_[t]];
+    if (limit > 0 && (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > limit) return true;
+    if (cos2_ >= 1.0) return false;
+    const double* p[3] = {a, b, c};
+    for (int k = 0; k < 3; ++k) {
+        const double *w = p[k], *u = p[(k + 1) % 3], *x = p[(k + 2) % 3];
+        const double dot = (u[0] - w[0]) * (x[0] - w[0]) + (u[1] - w[1]) * (x[1] - w[1]);
+        if (dot > 0 && dot * dot > cos2_ * squared_distance(w, u) * squared_distance(w, x)) return true;
+    }
+    return false;
+}
+
+}  // namespace constrained_detail
+}  // namespace hullkit

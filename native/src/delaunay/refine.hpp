@@ -1,0 +1,80 @@
+// Private to native/src/delaunay: marking the domain of a constrained triangulation (a polygon's
+// inside, a graph's regions) and refining it (refine.cpp; QualityOptions in hullkit/constrained.hpp).
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "constrained_mesh.hpp"
+
+namespace hullkit {
+namespace constrained_detail {
+
+class Refiner {
+public:
+    /// Region ids per triangle: 0 outside the domain, kDomain inside, kDomain + 1 + r in the region
+    /// of RegionSeed r.
+    static constexpr std::uint32_t kDomain = 1;
+
+    explicit Refiner(Cdt& mesh) : m_(mesh) {}
+
+    /// The domain is the inside by the fill rule.
+    void mark_polygon(FillRule fill);
+    /// The domain is the hull, less the exterior (when asked) and the regions around the hole
+    /// points; the regions around `regions` points get their own ids (x y pairs, scaled).
+    void mark_graph(bool exterior, const std::vector<double>& holes, const std::vector<double>& regions);
+    /// Per triangle of the mesh: 1 when in the domain.
+    std::vector<std::uint8_t> keep() const;
+
+    /// Refines the domain. `area2` per region id: twice the largest area allowed (scaled units), 0
+    /// for none. False with `error` set on failure (the cap, or an internal error).
+    bool refine(const QualityOptions& options, std::vector<double> area2);
+
+    std::string error;
+    std::size_t steiner_count = 0;
+    std::size_t unrefined_count = 0;
+
+private:
+    struct BadTriangle {
+        std::uint32_t t, a, b, c;  ///< the triangle and its corners (stale once they change)
+    };
+    struct SplitItem {
+        std::uint32_t a, b;
+        bool forced;  ///< split even if no corner of its triangles encroaches it now
+    };
+    /// A whole segment, as it was when refinement began.
+    struct Parent {
+        std::uint32_t a, b;
+    };
+
+    void flood(std::vector<std::uint32_t>& stack, std::uint32_t region);
+    void seed_at(const double* p, std::vector<std::uint32_t>& seeds);
+    std::uint32_t alive_triangle() const;
+    bool bad(std::uint32_t t) const;
+    bool still_bad(std::uint32_t t) const;
+    bool encroached(std::uint32_t e) const;
+    void retest();
+    bool count_point();
+    bool split_segment(std::uint32_t e);
+    bool split_triangle(const BadTriangle& item);
+    std::uint32_t walk(const double* p, std::uint32_t t, std::uint32_t* wall);
+
+    Cdt& m_;
+    std::vector<double> area2_;
+    double cos2_ = 1.0;
+    bool conforming_ = false;
+    std::size_t cap_ = 0;
+    std::vector<Parent> parents_;
+    std::vector<std::uint32_t> on_segment_;  ///< per vertex: the parent segment it was added on, or kGhost
+    std::set<std::pair<std::uint32_t, std::uint32_t>> unsplittable_;
+    std::vector<BadTriangle> bad_;
+    std::vector<SplitItem> split_;
+    std::vector<std::uint32_t> cavity_, walls_;
+    std::vector<Cdt::Edge> encroached_;
+};
+
+}  // namespace constrained_detail
+}  // namespace hullkit
