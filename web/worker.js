@@ -16,9 +16,26 @@
 // main -> worker  {type: 'delaunay', id, xy, algorithm?, voronoi?: [xmin, ymin, xmax, ymax]}
 // worker -> main  {type: 'result', id, dimension, triangles, halfedges, hull, representative,
 //                  duplicateCount, cells?: {cellOffsets, cellXY}, ms, voronoiMs}
-// main -> worker  {type: 'read', id, bytes (ArrayBuffer), name, as: 'points' | 'points2d' | 'mesh'}
+// main -> worker  {type: 'constrained', id, coords, rings, segments?, holes?, regions?, options?}
+//                 (coords: Float64Array x y; rings: closed rings as arrays of point indices;
+//                 segments: Uint32Array index pairs; holes: Float64Array x y; options: minAngle,
+//                 maxArea, conforming, maxSteinerPoints). Rings alone: hullkit.triangulatePolygon
+//                 (even-odd). With segments or `regions`: hullkit.constrainedDelaunay of the
+//                 points, rings and segments, with `regions` as Triangle's -p (removeExterior and
+//                 the hole points), or of the whole hull when that leaves nothing (`wholeHull`).
+// worker -> main  {type: 'result', id, graph, triangles, halfedges, constrained, coords, inputCount,
+//                  addedCount, crossingCount, duplicateCount, steinerCount, unrefinedCount,
+//                  polygonEdges, notDelaunay, wholeHull, ms, delaunayMs}
+//                 (coords: hullkit's, its first inputCount the vertices it was given; notDelaunay:
+//                 how many of the polygonEdges the unconstrained hullkit.delaunay of the same
+//                 points lacks)
+//                 {type: 'error', id, kind, message, pointIndex?, segmentIndex?} (pointIndex into
+//                 the request's coords)
+// main -> worker  {type: 'read', id, bytes (ArrayBuffer), name, as: 'points' | 'points2d' | 'mesh' | 'polygon'}
 // worker -> main  {type: 'result', id, xyz | xy | {vertices, triangles}, ms}: the file read by the
-//                 C++ readers the CLI uses (hullkit.readPoints / readPoints2d / readMesh)
+//                 C++ readers the CLI uses (hullkit.readPoints / readPoints2d / readMesh);
+//                 'polygon': {type: 'result', id, polygon, warnings, ms}, GeoJSON or Triangle's
+//                 .poly read by polygons.js (readPolygonFile)
 // main -> worker  {type: 'trace', id, xyz, scan?} / {type: 'trace', id, xy, lifted: true}
 // worker -> main  {type: 'result', id, kinds, args, kindNames, triangles, dimension, ms}: the
 //                 events of the real gift wrapping (hullkit.giftwrapTrace / delaunayGiftwrapTrace)
@@ -58,6 +75,7 @@ import { generatePoints, parsePoints } from './distributions.js';
 import { partVertices } from './route-scenes.js';
 import { legMotion, poseAt, subintervalCount, placeVertices } from './route-poses.js';
 import { tetrahedraDrawing } from './positions.js';
+import { readPolygonFile, edgesMissingFrom } from './polygons.js';
 
 const HULLKIT_URL = new URL('../wasm/hullkit.js', import.meta.url).href;
 
@@ -102,7 +120,7 @@ function isInputError(err) {
 self.onmessage = (event) => {
   const msg = event.data;
   const run = msg && {
-    compute, delaunay: delaunayJob, route: routeJob, read: readJob, trace: traceJob,
+    compute, delaunay: delaunayJob, constrained: constrainedJob, route: routeJob, read: readJob, trace: traceJob,
     delaunay3: delaunay3Job, 'delaunay3-voronoi': voronoi3Job, 'delaunay3-cell': cell3Job,
   }[msg.type];
   if (run) {
@@ -401,11 +419,83 @@ function delaunayJob({ id, xy, algorithm, voronoi }) {
   });
 }
 
+// ---------------------------------------------------------------- Delaunay view, constrained modes
+
+/**
+ * A polygon with holes or a planar graph, triangulated with constraints (see the message list at
+ * the top), next to the unconstrained Delaunay triangulation of the same points: how many of the
+ * polygon's edges it lacks.
+ */
+function constrainedJob({ id, coords, rings = [], segments = new Uint32Array(0), holes = new Float64Array(0), regions = false, options = {} }) {
+  return withHullkit(id, (hullkit) => {
+    const graph = regions || segments.length > 0;
+    // The polygon's edges as index pairs into coords, and what hullkit is given.
+    const pairs = Array.from(segments);
+    for (const ring of rings) ring.forEach((v, i) => pairs.push(v, ring[(i + 1) % ring.length]));
+    let inputPoint; // input vertex of the hullkit call -> index into coords
+    let call;
+    let wholeHull = false;
+    if (graph) {
+      inputPoint = Uint32Array.from({ length: coords.length / 2 }, (_, i) => i);
+      const edges = Uint32Array.from(pairs);
+      call = () => {
+        if (!regions) return hullkit.constrainedDelaunay(coords, edges, options);
+        const domain = hullkit.constrainedDelaunay(coords, edges, { holes, removeExterior: true, ...options });
+        if (domain.triangles.length > 0) return domain;
+        wholeHull = true; // the segments enclose nothing: the convex hull, as triangle -pc
+        return hullkit.constrainedDelaunay(coords, edges, options);
+      };
+    } else {
+      inputPoint = Uint32Array.from(rings.flat());
+      const flat = new Float64Array(2 * inputPoint.length);
+      inputPoint.forEach((v, k) => flat.set([coords[2 * v], coords[2 * v + 1]], 2 * k));
+      const holeIndices = [];
+      let start = 0;
+      rings.forEach((ring, r) => {
+        if (r > 0) holeIndices.push(start);
+        start += ring.length;
+      });
+      call = () => hullkit.triangulatePolygon(flat, Uint32Array.from(holeIndices), { fill: 'evenodd', ...options });
+    }
+    let result;
+    const t0 = performance.now();
+    try {
+      result = call();
+    } catch (err) {
+      if (!isInputError(err)) throw err;
+      const error = { type: 'error', id, kind: 'input', message: describe(err) };
+      if (Number.isInteger(err.pointIndex) && err.pointIndex >= 0 && err.pointIndex < inputPoint.length) error.pointIndex = inputPoint[err.pointIndex];
+      if (Number.isInteger(err.segmentIndex) && err.segmentIndex >= 0) error.segmentIndex = err.segmentIndex;
+      self.postMessage(error);
+      return;
+    }
+    const { triangles, halfedges, constrained } = result;
+    const ms = performance.now() - t0;
+    const d0 = performance.now();
+    const unconstrained = hullkit.delaunay(coords);
+    const { edges: polygonEdges, missing: notDelaunay } = edgesMissingFrom(unconstrained.triangles, unconstrained.representative, pairs);
+    const delaunayMs = performance.now() - d0;
+    const out = {
+      type: 'result', id, graph,
+      triangles: ownedCopy(triangles, Uint32Array, 'triangles'),
+      halfedges: ownedCopy(halfedges, Int32Array, 'halfedges'),
+      constrained: ownedCopy(constrained, Uint8Array, 'constrained'),
+      coords: ownedCopy(result.coords, Float64Array, 'coords'),
+      inputCount: result.inputCount, addedCount: result.addedCount,
+      crossingCount: result.crossingCount ?? 0, duplicateCount: result.duplicateCount ?? 0,
+      steinerCount: result.steinerCount ?? null, unrefinedCount: result.unrefinedCount ?? null,
+      polygonEdges, notDelaunay, wholeHull, ms, delaunayMs,
+    };
+    self.postMessage(out, [out.triangles.buffer, out.halfedges.buffer, out.constrained.buffer, out.coords.buffer]);
+  });
+}
+
 // ---------------------------------------------------------------- files and traces
 
 const READERS = { points: 'readPoints', points2d: 'readPoints2d', mesh: 'readMesh' };
 
 function readJob({ id, bytes, name, as }) {
+  if (as === 'polygon') return readPolygonJob({ id, bytes, name });
   return withHullkit(id, (hullkit) => {
     const reader = READERS[as];
     if (!reader || typeof hullkit[reader] !== 'function') throw new Error(`this hullkit build cannot read ${as} files`);
@@ -423,6 +513,21 @@ function readJob({ id, bytes, name, as }) {
       self.postMessage({ type: 'result', id, [as === 'points' ? 'xyz' : 'xy']: coords, warnings, ms }, [coords.buffer]);
     }
   });
+}
+
+/** A GeoJSON or .poly file, read in JavaScript (polygons.js); its errors are the input's. */
+async function readPolygonJob({ id, bytes, name }) {
+  const t0 = performance.now();
+  let polygon;
+  try {
+    polygon = readPolygonFile(new TextDecoder().decode(bytes), String(name ?? ''));
+  } catch (err) {
+    self.postMessage({ type: 'error', id, kind: 'input', message: describe(err) });
+    return;
+  }
+  const { warnings, ...rest } = polygon;
+  const transfer = Object.values(rest).filter(ArrayBuffer.isView).map((a) => a.buffer);
+  self.postMessage({ type: 'result', id, polygon: rest, warnings, ms: performance.now() - t0 }, transfer);
 }
 
 function traceJob({ id, xyz, xy, lifted = false, scan }) {

@@ -71,6 +71,14 @@ export const EXPLANATIONS = {
           'For up to 300 points, <em>Step through</em> replays the seed\'s gift wrap on the lifted points, recorded by the C++ core, on the paraboloid and in the plane at once: a point replaces the candidate when it lies strictly inside the candidate\'s circle, which is to say its lift lies below the candidate\'s plane.',
         ],
       },
+      {
+        heading: 'Constraints: polygons with holes, quality meshes',
+        paragraphs: [
+          '<em>Triangulation</em> switches to a <strong>constrained Delaunay triangulation</strong> of a polygon with holes, starting with a sample. Click in the plane to add vertices, click the first vertex again (or press Enter) to close a ring; the rings drawn next are holes (even-odd rule). Drag a vertex to move it: the triangulation follows. A GeoJSON polygon or a Triangle <code>.poly</code> file opens too.',
+          'Every polygon edge is an edge of the result (orange, thick), the other edges are as Delaunay as the polygon allows, and only the inside is kept; where edges cross, the crossing is added as a point (violet). The note counts the polygon edges that the plain Delaunay triangulation of the same vertices lacks: it would cut across them. On the paraboloid, the lifted constrained triangles fold above the lower hull where a constraint forced an edge in.',
+          '<em>Quality mesh</em> adds Steiner points (violet) until no angle is below the <em>minimum angle</em> (up to 34°) and no triangle is larger than the <em>maximum area</em>, except next to input angles too small to allow it; <em>conforming</em> makes every triangle Delaunay. The note gives the smallest angle measured. A <code>.poly</code> file is read as Triangle reads it: its segments are constraints, and the triangles outside them and around its hole points are removed.',
+        ],
+      },
     ],
   },
   delaunay3: {

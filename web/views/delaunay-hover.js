@@ -1,6 +1,7 @@
 // The Delaunay view under the pointer: hovering a triangle shows its empty circumcircle in the
 // plane and its lift on the paraboloid (it lies in the plane of the lifted face); a click in the
-// plane adds a point there.
+// plane adds a point there. In the constrained modes the rings' editor (constrained/rings.js)
+// takes the pointer instead.
 //
 // Test hook: window.hullkitDelaunayHover = {triangle, corners, x, y, r} for the triangle
 // highlighted (null when none).
@@ -119,17 +120,18 @@ export function createDelaunayHover({ state, scene, compute }) {
     return hit ? [hit.x, hit.y] : null;
   }
 
+  const pointsMode = () => state.mode === undefined || state.mode === 'unconstrained';
   for (const pane of [pane2d, pane3d]) {
     let down = null;
-    pane.addEventListener('pointerdown', (event) => { down = { x: event.clientX, y: event.clientY, t: performance.now() }; });
+    pane.addEventListener('pointerdown', (event) => { down = pointsMode() ? { x: event.clientX, y: event.clientY, t: performance.now() } : null; });
     pane.addEventListener('pointermove', (event) => {
-      if (event.buttons) return;
+      if (event.buttons || !pointsMode()) return;
       const p = planePoint(event, pane);
       showHover(p ? locate(p[0], p[1]) : -1);
     });
-    pane.addEventListener('pointerleave', () => showHover(-1));
+    pane.addEventListener('pointerleave', () => { if (pointsMode()) showHover(-1); });
     pane.addEventListener('pointerup', (event) => {
-      if (!down || Math.hypot(event.clientX - down.x, event.clientY - down.y) > 5 || performance.now() - down.t > 600) return;
+      if (!down || !pointsMode() || Math.hypot(event.clientX - down.x, event.clientY - down.y) > 5 || performance.now() - down.t > 600) return;
       const p = planePoint(event, pane);
       if (!p || Math.abs(p[0] - state.extent.cx) > 4 * state.extent.r || Math.abs(p[1] - state.extent.cy) > 4 * state.extent.r) return;
       state.added.push([Number(p[0].toFixed(4)), Number(p[1].toFixed(4))]);

@@ -35,9 +35,10 @@ function decodeAdded(text) {
 /**
  * The panel over the elements `ui`: it reads and writes `state.added` (and reads
  * `state.fileInput`, `state.active`), lays out and frames `scene`, redraws with `drawing` and
- * asks `compute` for a new triangulation.
+ * asks `compute` for a new triangulation. `viewUrlParams()`, when given, is what the view puts in
+ * the URL (its constrained modes have their own parameters).
  */
-export function createDelaunayPanel({ ui, state, scene, drawing, compute }) {
+export function createDelaunayPanel({ ui, state, scene, drawing, compute, viewUrlParams = null }) {
   const { layoutPanes, frame3d, requestRender } = scene;
   const { drawVoronoi, applyVisibility } = drawing;
 
@@ -135,7 +136,7 @@ export function createDelaunayPanel({ ui, state, scene, drawing, compute }) {
       layoutPanes();
       frame3d();
       applyVisibility();
-      writeUrl('delaunay', urlParams(), { push: true });
+      writeUrl('delaunay', (viewUrlParams ?? urlParams)(), { push: true });
       requestRender();
     });
     for (const box of [ui.showLifted, ui.showDrops]) box.addEventListener('change', () => { applyVisibility(); requestRender(); });

@@ -77,8 +77,13 @@ export function createDelaunayScene({ stage, ui, state, viewport }) {
   const hover2d = new THREE.Group();
   const hoverPlane3d = new THREE.Group();
   hoverPlane3d.position.z = PLANE_Z;
-  scene3d.add(lifted, planeIn3d, hover3d, hoverPlane3d, paraboloidGuide());
-  scene2d.add(plane, hover2d);
+  // The rings being edited in the constrained modes (constrained/draw.js), kept apart from the
+  // triangulation's groups, which are redrawn with each result.
+  const edit2d = new THREE.Group();
+  const edit3d = new THREE.Group();
+  edit3d.position.z = PLANE_Z;
+  scene3d.add(lifted, planeIn3d, hover3d, hoverPlane3d, edit3d, paraboloidGuide());
+  scene2d.add(plane, hover2d, edit2d);
 
   /** Faint rings and meridians of the paraboloid, so that the lift reads as a surface. */
   function paraboloidGuide() {
@@ -128,8 +133,15 @@ export function createDelaunayScene({ stage, ui, state, viewport }) {
     }
     place(pane3d, panes.a);
     place(pane2d, panes.b);
-    label3d.textContent = panes.b ? 'lifted: z = x² + y², lower hull shaded' : 'lifted paraboloid over the plane: click the plane to add points';
-    planeIn3d.visible = hoverPlane3d.visible = !panes.b;
+    const constrained = state.mode !== undefined && state.mode !== 'unconstrained';
+    if (constrained) {
+      label3d.textContent = panes.b ? 'lifted: the constrained triangles on z = x² + y²' : 'lifted over the plane: click the plane to draw rings';
+      label2d.textContent = state.mode === 'quality' ? 'projected: quality mesh' : 'projected: constrained Delaunay triangulation';
+    } else {
+      label3d.textContent = panes.b ? 'lifted: z = x² + y², lower hull shaded' : 'lifted paraboloid over the plane: click the plane to add points';
+      label2d.textContent = 'projected: Delaunay triangulation';
+    }
+    planeIn3d.visible = hoverPlane3d.visible = edit3d.visible = !panes.b;
     camera3d.aspect = panes.a.w / panes.a.h;
     camera3d.updateProjectionMatrix();
     if (panes.b) fit2d();
@@ -193,7 +205,7 @@ export function createDelaunayScene({ stage, ui, state, viewport }) {
 
   return {
     pane3d, pane2d, materials, scene3d, camera3d, controls, scene2d, camera2d,
-    lifted, planeIn3d, plane, hover3d, hover2d, hoverPlane3d,
+    lifted, planeIn3d, plane, hover3d, hover2d, hoverPlane3d, edit2d, edit3d,
     panes, requestRender, layoutPanes, frame3d, render, resize,
   };
 }

@@ -10,8 +10,13 @@
 // files in and out (delaunay-files.js) and the lifted gift wrap step by step
 // (giftwrap-stepper.js).
 //
+// The Triangulation select switches to the constrained modes (views/constrained/): a polygon
+// with holes drawn by clicks or opened from a file, triangulated with its edges as constraints,
+// or as a quality mesh; they draw through the same scenes and drawing.
+//
 // Test hook: window.hullkitDelaunay = {n, distinct, duplicates, triangles, hull, dimension,
-// ms, set, seed, added, run} after each triangulation drawn.
+// ms, set, seed, added, run} after each triangulation drawn (the constrained modes' is
+// window.hullkitConstrained).
 import { fmtInt, fmtMs } from '../app/format.js';
 import { writeUrl } from '../app/url-state.js';
 import { showError } from '../app/panel.js';
@@ -22,6 +27,7 @@ import { createDelaunayDrawing, liftedAndPlanePositions } from './delaunay-draw.
 import { createDelaunayHover } from './delaunay-hover.js';
 import { delaunayUi, createDelaunayPanel } from './delaunay-panel.js';
 import { createDelaunayFiles } from './delaunay-files.js';
+import { createConstrainedMode } from './constrained/constrained.js';
 
 const GIFTWRAP_MAX = 5000;
 
@@ -41,6 +47,7 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   // What the view's parts share.
   const state = {
     active: false,
+    mode: 'unconstrained', // or 'constrained', 'quality' (views/constrained/)
     fileInput: null, // {name, xy}: the points of the last file opened
     added: [], // clicked points [[x, y], ...]
     xy: new Float64Array(0), // base + added
@@ -62,15 +69,26 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   const { controls, requestRender, layoutPanes, frame3d, render, resize } = scene;
   const drawing = createDelaunayDrawing({ ui, state, scene });
   const { showHover } = createDelaunayHover({ state, scene, compute });
-  const panel = createDelaunayPanel({ ui, state, scene, drawing, compute });
+  const panel = createDelaunayPanel({ ui, state, scene, drawing, compute, viewUrlParams: () => viewUrlParams() });
   const { readParams, updateHint, encodeAdded, urlParams, applyUrl, setAlgorithms } = panel;
 
   // ------------------------------------------------------------ compute
 
   const keyOf = (p) => `${p.set}|${p.n}|${p.seed}|${p.algorithm}|${p.voronoi}|${encodeAdded()}|${p.set === 'file' ? state.fileInput.name : ''}`;
 
-  /** Generates the points, asks the worker for the triangulation (and cells) and draws it. */
+  /**
+   * Generates the points, asks the worker for the triangulation (and cells) and draws it; in a
+   * constrained mode, triangulates its polygon instead.
+   */
   function compute({ push = false, force = false } = {}) {
+    if (polygon.polygonMode()) {
+      // What the points mode had drawn or asked for is no longer shown.
+      requestSeq++;
+      pendingKey = null;
+      drawnKey = null;
+      polygon.compute({ push, force });
+      return;
+    }
     if (!worker.ready) {
       setState('loading');
       ui.status.textContent = worker.loadError ? '' : 'Loading the WebAssembly module…';
@@ -216,9 +234,32 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
 
   // ------------------------------------------------------------ files in and out
 
-  const files = createDelaunayFiles({ ui, state, worker, setState, updateHint, compute });
+  const files = createDelaunayFiles({
+    ui, state, worker, setState, updateHint, compute,
+    onPolygon: (name, shape) => polygon.openPolygon(name, shape),
+    beforePoints: () => { if (polygon.polygonMode()) polygon.setMode('unconstrained'); },
+  });
+
+  // ------------------------------------------------------------ the constrained modes
+
+  const polygon = createConstrainedMode({
+    ui, state, scene, drawing, worker, setState, setStats, exportButtons: files.exportButtons,
+    hideStepper: () => {
+      liftStepper.offer({ why: 'Available in the unconstrained mode.' });
+      document.getElementById('dl-stepper').hidden = true;
+    },
+  });
+  const viewUrlParams = () => (polygon.polygonMode() ? polygon.urlParams() : urlParams());
+  document.getElementById('dl-mode').addEventListener('change', (event) => {
+    polygon.setMode(event.target.value);
+    compute({ push: true, force: true });
+  });
 
   function cancel() {
+    if (polygon.polygonMode()) {
+      polygon.cancel();
+      return;
+    }
     if (pendingKey === null) return;
     worker.restart(); // a wasm call cannot be interrupted
     cancelledKey = pendingKey;
@@ -240,7 +281,10 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
   return {
     name: 'delaunay',
     render,
-    resize,
+    resize() {
+      resize();
+      polygon.redraw();
+    },
     activate() {
       state.active = true;
       controls.enabled = true;
@@ -253,11 +297,14 @@ export function createDelaunayView({ stage, worker, setState, viewport }) {
       controls.enabled = false;
       showHover(-1);
     },
-    applyUrl,
-    urlParams,
+    applyUrl(q) {
+      polygon.applyUrl(q); // the mode first: the panel's applyUrl computes
+      applyUrl(q);
+    },
+    urlParams: viewUrlParams,
     openFile: files.openFile,
     cancel,
-    fileHint: '2D points (x y per line, rbox "2 n", or OBJ/OFF/PLY/STL vertices: x and y)',
-    busyLabel: () => 'Triangulating',
+    fileHint: '2D points (x y per line, rbox "2 n", or OBJ/OFF/PLY/STL vertices: x and y), or a polygon (GeoJSON, Triangle .poly)',
+    busyLabel: () => (state.mode === 'quality' ? 'Meshing' : 'Triangulating'),
   };
 }

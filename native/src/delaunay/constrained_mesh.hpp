@@ -485,10 +485,13 @@ private:
     /// with the same coordinates, or the new one.
     std::uint32_t insert_point(const double* p, std::uint32_t start) { return insert_at(p, locate(p, start)); }
 
-    /// insert_point with the triangle holding p already found (as locate() finds it).
-    std::uint32_t insert_at(const double* p, std::uint32_t t0) {
+    /// insert_point with the triangle holding p already found (as locate() finds it). With
+    /// `whole_cavity` the caller has put p's whole conflict region in cavity_ (Bowyer-Watson:
+    /// the triangles whose circumcircle holds p, reached from t0 without crossing a segment, p on
+    /// no segment and no vertex): the cavity is filled as it is and no flips are needed.
+    std::uint32_t insert_at(const double* p, std::uint32_t t0, bool whole_cavity = false) {
         std::uint32_t on_edge = kGhost;
-        if (!is_ghost(t0)) {
+        if (!is_ghost(t0) && !whole_cavity) {
             for (std::uint32_t e = 3 * t0; e < 3 * t0 + 3; ++e) {
                 const double* v = pt(vertex_[e]);
                 if (v[0] == p[0] && v[1] == p[1]) return vertex_[e];
@@ -498,9 +501,8 @@ private:
         }
         // The cavity: conflicting triangles reachable without crossing a constrained edge.
         std::vector<std::uint32_t>& cavity = cavity_;
-        cavity.clear();
         auto in_cavity = [&](std::uint32_t t) { return std::find(cavity.begin(), cavity.end(), t) != cavity.end(); };
-        cavity.push_back(t0);
+        if (!whole_cavity) cavity.assign(1, t0);
         Segment split{kGhost, kGhost, 0, 0, 0};
         if (on_edge != kGhost) {
             cavity.push_back(twin_[on_edge] / 3);
@@ -510,7 +512,7 @@ private:
         boundary_.clear();
         // Outside the hull, the ghosts (and triangles) in conflict, as Bowyer-Watson finds them;
         // inside, only the triangle or the two triangles holding p: Lawson's flips do the rest.
-        const bool outside = is_ghost(t0) || is_ghost(cavity.back());
+        const bool outside = !whole_cavity && (is_ghost(t0) || is_ghost(cavity.back()));
         for (std::size_t k = 0; outside && k < cavity.size(); ++k) {
             const std::uint32_t t = cavity[k];
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
@@ -569,6 +571,7 @@ private:
             set_flags(aq, split.wind, split.count, split.input);
             set_flags(qb, split.wind, split.count, split.input);
         }
+        if (whole_cavity) return q;
         for (const BoundaryEdge& b : boundary_)
             if (b.from != kGhost && b.to != kGhost) fresh_.push_back({b.from, b.to});
         legalize();

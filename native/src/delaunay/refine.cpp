@@ -146,15 +146,15 @@ std::vector<std::uint8_t> Refiner::keep() const {
     return in;
 }
 
-bool Refiner::bad(std::uint32_t t) const {
+int Refiner::flaw(std::uint32_t t, int* shortest) const {
     const std::uint32_t* v = &m_.vertex_[3 * t];
     const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
     const double limit = area2_[m_.region_[t]];
     if (limit > 0) {
         const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        if (area2 > limit) return true;
+        if (area2 > limit) return kTooLarge;
     }
-    if (cos2_ >= 1.0) return false;
+    if (cos2_ >= 1.0) return kFine;
     // The smallest angle is opposite the shortest edge (edge k runs from corner k to k + 1).
     const double* p[3] = {a, b, c};
     double len[3];
@@ -164,14 +164,22 @@ bool Refiner::bad(std::uint32_t t) const {
     if (len[2] < len[s]) s = 2;
     const double *u = p[s], *w = p[(s + 2) % 3], *x = p[(s + 1) % 3];
     const double dot = (u[0] - w[0]) * (x[0] - w[0]) + (u[1] - w[1]) * (x[1] - w[1]);
-    const double l1 = len[(s + 2) % 3], l2 = len[(s + 1) % 3];  // w-u and x-w
-    if (!(dot > 0 && dot * dot > cos2_ * l1 * l2)) return false;
-    // The angle at w is small. Leave it when it is an input angle (both its edges on segments) or
-    // the triangle sits between two points on segments at the same distance from their common
-    // end (splitting it would start a cascade down the small angle: Shewchuk's rule).
+    *shortest = s;
+    // cos^2 of the angle at w against cos^2 of the bound (the angle is acute: dot > 0).
+    return dot > 0 && dot * dot > cos2_ * len[(s + 2) % 3] * len[(s + 1) % 3] ? kSmallAngle : kFine;
+}
+
+bool Refiner::bad(std::uint32_t t) const {
+    int s = 0;
+    const int kind = flaw(t, &s);
+    if (kind != kSmallAngle) return kind == kTooLarge;
+    // The angle at w (opposite the shortest edge u-x) is small. Leave it when it is an input angle
+    // (both its edges on segments) or the triangle sits between two points on segments at the
+    // same distance from their common end (splitting it would start a cascade down the small
+    // angle: Shewchuk's rule).
     const std::uint32_t e_in = 3 * t + (s + 1) % 3, e_out = 3 * t + (s + 2) % 3;  // x -> w, w -> u
     if (m_.edge_[e_in] != 0 && m_.edge_[e_out] != 0) return false;
-    const std::uint32_t vu = v[s], vx = v[(s + 1) % 3];
+    const std::uint32_t vu = m_.vertex_[3 * t + s], vx = m_.vertex_[3 * t + (s + 1) % 3];
     if (vu < on_segment_.size() && vx < on_segment_.size()) {
         const std::uint32_t s1 = on_segment_[vu], s2 = on_segment_[vx];
         if (s1 != kGhost && s2 != kGhost && s1 != s2) {
@@ -180,7 +188,7 @@ bool Refiner::bad(std::uint32_t t) const {
             if (p1.a == p2.a || p1.a == p2.b) join = p1.a;
             else if (p1.b == p2.a || p1.b == p2.b) join = p1.b;
             if (join != kGhost) {
-                const double d1 = squared_distance(m_.pt(join), u), d2 = squared_distance(m_.pt(join), x);
+                const double d1 = squared_distance(m_.pt(join), m_.pt(vu)), d2 = squared_distance(m_.pt(join), m_.pt(vx));
                 if (d1 < 1.001 * d2 && d2 < 1.001 * d1) return false;
             }
         }
@@ -387,7 +395,8 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     }
     if (on_wall) return true;  // on a segment that cannot be split: left as it is
     if (!count_point()) return false;
-    m_.insert_at(centre, at);
+    m_.cavity_ = cavity_;  // p's whole conflict region: filled as it is (Bowyer-Watson)
+    m_.insert_at(centre, at, true);
     if (m_.internal_error_) {
         error = "internal error: a refinement point could not be inserted (please report this input)";
         return false;
@@ -444,25 +453,11 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     }
     m_.track_ = false;
     if (!error.empty()) return false;
+    int shortest = 0;
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) {
-        if (m_.vertex_[3 * t] != kDead && !m_.is_ghost(t) && m_.region_[t] != 0 && still_bad(t)) ++unrefined_count;
+        if (m_.vertex_[3 * t] != kDead && !m_.is_ghost(t) && m_.region_[t] != 0 && flaw(t, &shortest) != kFine) ++unrefined_count;
     }
     return true;
-}
-
-bool Refiner::still_bad(std::uint32_t t) const {
-    const std::uint32_t* v = &m_.vertex_[3 * t];
-    const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
-    const double limit = area2_[m_.region_[t]];
-    if (limit > 0 && (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > limit) return true;
-    if (cos2_ >= 1.0) return false;
-    const double* p[3] = {a, b, c};
-    for (int k = 0; k < 3; ++k) {
-        const double *w = p[k], *u = p[(k + 1) % 3], *x = p[(k + 2) % 3];
-        const double dot = (u[0] - w[0]) * (x[0] - w[0]) + (u[1] - w[1]) * (x[1] - w[1]);
-        if (dot > 0 && dot * dot > cos2_ * squared_distance(w, u) * squared_distance(w, x)) return true;
-    }
-    return false;
 }
 
 }  // namespace constrained_detail

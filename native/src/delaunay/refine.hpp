@@ -53,8 +53,12 @@ private:
     void flood(std::vector<std::uint32_t>& stack, std::uint32_t region);
     void seed_at(const double* p, std::vector<std::uint32_t>& seeds);
     std::uint32_t alive_triangle() const;
+    /// kTooLarge, kSmallAngle (with the shortest edge's index in the triangle) or kFine: the
+    /// bounds alone, before the exemptions of bad().
+    static constexpr int kFine = 0, kTooLarge = 1, kSmallAngle = 2;
+    int flaw(std::uint32_t t, int* shortest) const;
+    /// To be refined: a flaw not exempt (small input angles, Shewchuk's rule).
     bool bad(std::uint32_t t) const;
-    bool still_bad(std::uint32_t t) const;
     bool encroached(std::uint32_t e) const;
     void retest();
     bool count_point();
