@@ -24,7 +24,12 @@
 //               CGAL::Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2(0.125, 0) — the default
 //               shape bound B = 0.125 (smallest angle about 20.7 degrees), no size bound — init(true)
 //               (the marks as the domain) and refine_mesh(). Timed whole; the line reports the mesh's
-//               triangles inside, vertices and smallest angle (for the later quality-mesh comparison).
+//               triangles inside, vertices and smallest angle (the quality-mesh comparison).
+//   hullkit-mesh a polygon only: hullkit::triangulate_polygon with PolygonOptions.quality.min_angle =
+//               asin(sqrt(0.125)) in degrees (CGAL's bound above; no area bound). Timed whole; the line
+//               adds the smallest angle, the bound ("min_angle_bound_deg": what the check of the dump
+//               holds the mesh to) and the library's count of triangles left below it ("unrefined").
+//               Only in hullkit_constrained_bench.
 //
 // Input: the JSON of bench/constrained_inputs.mjs: a polygon ({"kind": "polygon", "coords",
 // "holeIndices"}) or a graph ({"kind": "graph", "pointsFile", "segmentsFile"}: raw float64 x y, uint32
@@ -36,11 +41,13 @@
 //
 // --dump PREFIX writes the first run's triangles (the inside ones for a polygon) to PREFIX.tri (uint32
 // index triples) and the coordinates they index to PREFIX.xy (float64 x y: the input's, then any
-// points the implementation added), for bench/constrained_check.mjs. Not for cgal-mesh.
+// points the implementation added), for bench/constrained_check.mjs (hullkit-mesh's with --mesh). Not for
+// cgal-mesh.
 //
 // Output: one JSON line on stdout: {"impl", "input", "kind", "n", "first", "runs", "warm",
 // "triangles", "vertices", "added_points", "peak_rss_mb", "input_rss_mb", "detail"} (+ "min_angle_deg"
-// for cgal-mesh); "error" instead on failure (exit status 0: the table shows the row as failed).
+// for the meshes, "min_angle_bound_deg" and "unrefined" for hullkit-mesh); "error" instead on failure
+// (exit status 0: the table shows the row as failed).
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -92,7 +99,7 @@ struct Args {
 Args parse_args(int argc, char** argv) {
     Args args;
     CLI::App app{"times one constrained Delaunay implementation on one input", "hullkit_constrained_bench"};
-    app.add_option("--impl", args.impl, "hullkit, cgal-cdt or cgal-mesh")->required();
+    app.add_option("--impl", args.impl, "hullkit, hullkit-mesh, cgal-cdt or cgal-mesh")->required();
     app.add_option("--input", args.input, "an input JSON of bench/constrained_inputs.mjs")->required();
     app.add_option("--runs", args.runs, "timed runs, the first reported on its own")->check(CLI::PositiveNumber);
     app.add_option("--budget", args.budget, "no further run once the runs add up to this many seconds");
@@ -265,6 +272,8 @@ struct Run {
     std::size_t vertices = 0;
     std::size_t added = 0;
     double min_angle_deg = -1;
+    double min_angle_bound_deg = -1;  // hullkit-mesh: the bound asked for
+    long long unrefined = -1;         // hullkit-mesh: triangles the library left below it
 };
 
 struct Dump {
@@ -296,13 +305,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The smallest angle (degrees) of the in-domain faces of a mesh.
-/// The smallest angle at corner a of triangle a b c, in degrees.
+/// The angle at corner a of triangle a b c, in degrees.
 double corner_angle(double ax, double ay, double bx, double by, double cx, double cy) {
     const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
     return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI;
 }
 
+/// The smallest angle (degrees) of triangles given as index triples into flat x y coordinates.
 [[maybe_unused]] double smallest_angle(const std::vector<std::uint32_t>& triangles, const std::vector<double>& xy) {
     double smallest = 180;
     for (std::size_t t = 0; t < triangles.size(); t += 3) {
@@ -316,6 +325,7 @@ double corner_angle(double ax, double ay, double bx, double by, double cx, doubl
     return smallest;
 }
 
+/// The smallest angle (degrees) of the in-domain faces of a mesh.
 double smallest_angle(const MeshCdt& cdt) {
     double smallest = 180;
     for (auto f : cdt.finite_face_handles()) {
@@ -455,6 +465,8 @@ int main(int argc, char** argv) {
             if (dump) *dump = Dump{result.triangles, result.coords};
             Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
             out.min_angle_deg = smallest_angle(result.triangles, result.coords);
+            out.min_angle_bound_deg = options.quality.min_angle;
+            out.unrefined = static_cast<long long>(result.unrefined_count);
             return out;
         };
 #else
@@ -508,6 +520,11 @@ int main(int argc, char** argv) {
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, ",\"min_angle_deg\":%.4f", last.min_angle_deg);
         extra = buffer;
+    }
+    if (last.min_angle_bound_deg >= 0) {
+        char buffer[96];
+        std::snprintf(buffer, sizeof buffer, ",\"min_angle_bound_deg\":%.17g,\"unrefined\":%lld", last.min_angle_bound_deg, last.unrefined);
+        extra += buffer;
     }
     std::printf("{\"impl\":%s,\"input\":%s,\"kind\":%s,\"n\":%zu,\"first\":%.6g,\"runs\":[%s],\"warm\":%s,\"triangles\":%zu,"
                 "\"vertices\":%zu,\"added_points\":%zu,\"peak_rss_mb\":%.1f,\"input_rss_mb\":%.1f%s,\"detail\":%s}\n",

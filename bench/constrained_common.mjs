@@ -22,6 +22,8 @@
 // boundary edges on the convex hull's supporting lines and the total area the hull's, every distinct
 // input point used, and every segment an edge (or a chain of edges through exactly collinear points).
 // A failed test makes the verdict "wrong" with the first reason; the area error is always reported.
+// Quality meshes (points added inside and on the rings, rounded to doubles) get checkMesh instead:
+// see there.
 import { readFileSync } from 'node:fs';
 import { orient2d } from 'robust-predicates';
 
@@ -392,4 +394,209 @@ export function checkGraph(input, triangles, coords = input.coords) {
   }
   if (missing) return result(`${missing} of ${segs.length / 2} segments are no edge (first: segment ${firstMissing})`);
   return result(null);
+}
+
+/**
+ * Ring edges of a polygon with the inside on their left (outer ring counter-clockwise, holes
+ * clockwise), zero-length edges (repeated vertices) left out: [{ux, uy, vx, vy}].
+ */
+function ringEdges(input) {
+  const pc = input.coords;
+  const ox = pc[0], oy = pc[1];
+  const edges = [];
+  ringRanges(pc.length / 2, input.holeIndices).forEach(([s, e], r) => {
+    const flip = (r === 0) !== (ringArea2(pc, s, e, ox, oy) > 0);
+    for (let i = s; i < e; i++) {
+      const j = i + 1 < e ? i + 1 : s;
+      const [u, v] = flip ? [j, i] : [i, j];
+      const ux = pc[2 * u], uy = pc[2 * u + 1], vx = pc[2 * v], vy = pc[2 * v + 1];
+      if (ux !== vx || uy !== vy) edges.push({ ux, uy, vx, vy });
+    }
+  });
+  return edges;
+}
+
+/** Distance from (px, py) to the segment u-v, relative to u (large coordinates, short edges). */
+function segmentDistance(e, px, py) {
+  const dx = e.vx - e.ux, dy = e.vy - e.uy;
+  const qx = px - e.ux, qy = py - e.uy;
+  const t = Math.max(0, Math.min(1, (qx * dx + qy * dy) / (dx * dx + dy * dy)));
+  return Math.hypot(qx - t * dx, qy - t * dy);
+}
+
+/**
+ * A uniform grid over the ring edges answering "which ring edges pass within `tol` of this point".
+ * Long edges go in piece by piece, so that each piece covers a few cells only.
+ */
+function ringEdgeGrid(edges, tol) {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (const e of edges) {
+    minX = Math.min(minX, e.ux, e.vx); maxX = Math.max(maxX, e.ux, e.vx);
+    minY = Math.min(minY, e.uy, e.vy); maxY = Math.max(maxY, e.uy, e.vy);
+  }
+  const width = Math.max(maxX - minX, tol), height = Math.max(maxY - minY, tol);
+  const cell = Math.sqrt((width * height) / Math.max(edges.length, 1)) * 2;
+  const cols = Math.max(1, Math.min(4096, Math.ceil(width / cell)));
+  const rows = Math.max(1, Math.min(4096, Math.ceil(height / cell)));
+  const cw = width / cols, ch = height / rows;
+  const col = (x) => Math.max(0, Math.min(cols - 1, Math.floor((x - minX) / cw)));
+  const row = (y) => Math.max(0, Math.min(rows - 1, Math.floor((y - minY) / ch)));
+  const cells = new Map();
+  edges.forEach((e, k) => {
+    const pieces = Math.max(1, Math.ceil(Math.max(Math.abs(e.vx - e.ux) / cw, Math.abs(e.vy - e.uy) / ch)));
+    for (let p = 0; p < pieces; p++) {
+      const ax = e.ux + ((e.vx - e.ux) * p) / pieces, ay = e.uy + ((e.vy - e.uy) * p) / pieces;
+      const bx = e.ux + ((e.vx - e.ux) * (p + 1)) / pieces, by = e.uy + ((e.vy - e.uy) * (p + 1)) / pieces;
+      for (let r = row(Math.min(ay, by) - 2 * tol); r <= row(Math.max(ay, by) + 2 * tol); r++) {
+        for (let c = col(Math.min(ax, bx) - 2 * tol); c <= col(Math.max(ax, bx) + 2 * tol); c++) {
+          const key = r * cols + c;
+          const list = cells.get(key);
+          // Edges go in in order: edge k is already in a cell's list only as its last entry.
+          if (!list) cells.set(key, [k]);
+          else if (list[list.length - 1] !== k) list.push(k);
+        }
+      }
+    }
+  });
+  return (px, py) => (cells.get(row(py) * cols + col(px)) ?? []).filter((k) => segmentDistance(edges[k], px, py) <= tol);
+}
+
+/** The angle at corner a of triangle a b c, in radians. */
+function cornerAngle(ax, ay, bx, by, cx, cy) {
+  const ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
+  return Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+/**
+ * Checks a quality mesh of a polygon (a triangulation with points added inside and on the rings),
+ * e.g. hullkit's triangulate_polygon with quality.min_angle. The points added on a ring edge are the
+ * nearest doubles to points of the edge, so the mesh's boundary follows the rings only up to that
+ * rounding, and the exact boundary test of checkPolygon does not apply. Instead:
+ *   - every index in range, every triangle clockwise (y up; exact orient2d, nonzero), no directed
+ *     edge twice (overlap);
+ *   - every boundary edge (no reverse edge) on one ring edge, both ends within a few ulps of the
+ *     input's largest coordinate, running the ring's way round (inside on the same side); the
+ *     boundary's total length the rings' perimeter and the total area the polygon's (even-odd:
+ *     outer minus holes; the generator's rings neither cross nor touch), both within a relative 1e-9;
+ *   - every angle at least minAngle − 1e-9 degrees (angles in doubles), except in triangles that
+ *     small input angles excuse: a corner at an input vertex inside a wedge between two ring edges
+ *     narrower than the bound (the input angle itself, and the fan of triangles in it), or, as in
+ *     Shewchuk's rule, a smallest angle facing an edge whose ends lie on two ring edges with a common
+ *     end at equal distances from it, within 0.05% (the concentric shells' triangles). Those are
+ *     counted.
+ * Whether the mesh is (constrained) Delaunay is not checked: the dump does not say which edges are
+ * constrained. Returns {verdict, reason?, triangles, area_error, length_error, min_angle_deg,
+ * below_bound, excused_input_angle, excused_shells}.
+ */
+export function checkMesh(input, triangles, coords, { minAngle }) {
+  const pc = input.coords;
+  const ox = pc[0], oy = pc[1];
+  const count = triangles.length / 3;
+  const fields = { triangles: count, area_error: null, length_error: null, min_angle_deg: null, below_bound: null, excused_input_angle: null, excused_shells: null };
+  const wrong = (reason) => ({ verdict: 'wrong', reason, ...fields });
+  const basics = triangleBasics(coords, triangles, ox, oy);
+  if (basics.reason) return wrong(basics.reason);
+  if (count && ccw(...[0, 1, 2].flatMap((e) => [coords[2 * triangles[e]], coords[2 * triangles[e] + 1]])) > 0) {
+    return wrong('the triangles are counter-clockwise (y up), not clockwise');
+  }
+  const expected = polygonArea(pc, input.holeIndices);
+  fields.area_error = Math.abs(basics.area - expected) / Math.abs(expected);
+
+  let maxAbs = 0;
+  for (const v of pc) maxAbs = Math.max(maxAbs, Math.abs(v));
+  const tol = 8 * Number.EPSILON * maxAbs;
+  const edges = ringEdges(input);
+  const near = ringEdgeGrid(edges, tol);
+  let perimeter = 0;
+  for (const e of edges) perimeter += Math.hypot(e.vx - e.ux, e.vy - e.uy);
+  let length = 0;
+  const { boundary } = basics;
+  for (let k = 0; k < boundary.length; k += 2) {
+    const a = boundary[k], b = boundary[k + 1];
+    const ax = coords[2 * a], ay = coords[2 * a + 1], bx = coords[2 * b], by = coords[2 * b + 1];
+    const onB = near(bx, by);
+    const along = near(ax, ay).some((i) => onB.includes(i) && (bx - ax) * (edges[i].vx - edges[i].ux) + (by - ay) * (edges[i].vy - edges[i].uy) > 0);
+    if (!along) return wrong(`boundary edge ${a}->${b} lies on no ring edge (or runs against it): a filled hole, a missing or extra triangle`);
+    length += Math.hypot(bx - ax, by - ay);
+  }
+  fields.length_error = Math.abs(length - perimeter) / perimeter;
+  if (!(fields.length_error <= 1e-9)) return wrong(`the boundary's length ${length} differs from the rings' ${perimeter} by ${fields.length_error.toExponential(2)} (relative)`);
+  if (!(fields.area_error <= 1e-9)) return wrong(`total area ${basics.area} differs from the polygon's by ${fields.area_error.toExponential(2)} (relative)`);
+
+  // The directions of the ring edges at each input vertex (by coordinates), sorted: the wedges.
+  const directions = new Map();
+  const addDirection = (x, y, tx, ty) => {
+    const key = `${x},${y}`;
+    const angle = Math.atan2(ty - y, tx - x);
+    const list = directions.get(key);
+    if (list) list.push(angle);
+    else directions.set(key, [angle]);
+  };
+  for (const e of edges) {
+    addDirection(e.ux, e.uy, e.vx, e.vy);
+    addDirection(e.vx, e.vy, e.ux, e.uy);
+  }
+  for (const list of directions.values()) list.sort((p, q) => p - q);
+  const bound = (minAngle * Math.PI) / 180;
+  const slack = (1e-9 * Math.PI) / 180;
+  // The wedge between ring edges at input vertex (px, py) holding the corner towards b and c.
+  const narrowWedge = (px, py, bx, by, cx, cy) => {
+    const list = directions.get(`${px},${py}`);
+    if (!list || list.length < 2) return false;
+    const ub = Math.hypot(bx - px, by - py), uc = Math.hypot(cx - px, cy - py);
+    const mid = Math.atan2((by - py) / ub + (cy - py) / uc, (bx - px) / ub + (cx - px) / uc);
+    let i = list.findIndex((d) => d > mid);
+    if (i < 0) i = 0;
+    const from = list[(i + list.length - 1) % list.length], to = list[i];
+    const wedge = to > from ? to - from : to - from + 2 * Math.PI;
+    return wedge < bound + slack;
+  };
+  // Ends of an edge on two ring edges with a common end, at equal distances from it.
+  const shellEdge = (px, py, qx, qy) => {
+    for (const i of near(px, py)) {
+      for (const j of near(qx, qy)) {
+        if (i === j) continue;
+        for (const [ax, ay] of [[edges[i].ux, edges[i].uy], [edges[i].vx, edges[i].vy]]) {
+          if (!((ax === edges[j].ux && ay === edges[j].uy) || (ax === edges[j].vx && ay === edges[j].vy))) continue;
+          // "Equal" as hullkit's refinement takes it: squared distances within 0.1% (a segment split at
+          // its middle lands near a shell, not on it, when its length is near a power of two).
+          const dp = Math.hypot(px - ax, py - ay), dq = Math.hypot(qx - ax, qy - ay);
+          if (Math.abs(dp - dq) <= 4 * tol + 5e-4 * Math.max(dp, dq)) return true;
+        }
+      }
+    }
+    return false;
+  };
+  const inputVertex = (x, y) => directions.has(`${x},${y}`);
+  let smallest = Math.PI, below = 0, excusedInput = 0, excusedShells = 0, first = -1, firstAngle = 0;
+  const t = basics.tri;
+  for (let k = 0; k < count; k++) {
+    const v = [t[3 * k], t[3 * k + 1], t[3 * k + 2]];
+    const xy = v.map((i) => [coords[2 * i], coords[2 * i + 1]]);
+    let low = Math.PI, at = 0;
+    for (let c = 0; c < 3; c++) {
+      const [a, b, d] = [xy[c], xy[(c + 1) % 3], xy[(c + 2) % 3]];
+      const angle = cornerAngle(a[0], a[1], b[0], b[1], d[0], d[1]);
+      if (angle < low) [low, at] = [angle, c];
+    }
+    smallest = Math.min(smallest, low);
+    if (low >= bound - slack) continue;
+    below++;
+    let excused = false;
+    for (let c = 0; c < 3 && !excused; c++) {
+      const [a, b, d] = [xy[c], xy[(c + 1) % 3], xy[(c + 2) % 3]];
+      excused = inputVertex(a[0], a[1]) && narrowWedge(a[0], a[1], b[0], b[1], d[0], d[1]);
+    }
+    if (excused) { excusedInput++; continue; }
+    const [p, q] = [xy[(at + 1) % 3], xy[(at + 2) % 3]];
+    if (shellEdge(p[0], p[1], q[0], q[1])) { excusedShells++; continue; }
+    if (first < 0) [first, firstAngle] = [k, low];
+  }
+  Object.assign(fields, { min_angle_deg: (smallest * 180) / Math.PI, below_bound: below, excused_input_angle: excusedInput, excused_shells: excusedShells });
+  const unexcused = below - excusedInput - excusedShells;
+  if (unexcused) {
+    return wrong(`${unexcused} triangle(s) below the ${minAngle.toFixed(4)}° bound that no small input angle excuses ` +
+      `(first: triangle ${first}, ${((firstAngle * 180) / Math.PI).toFixed(4)}°)`);
+  }
+  return { verdict: 'ok', ...fields };
 }

@@ -11,25 +11,30 @@
 #   3. runs every implementation x input, one process each, one after the other (never two at once:
 #      the machine has 2 cores), collecting JSON lines in bench/out/constrained/results.jsonl:
 #        native  hullkit (triangulate_polygon / constrained_delaunay), cgal-cdt (CGAL's CDT + nesting
-#                levels), cgal-mesh (Delaunay_mesher_2, polygons: time and triangle count only);
-#                on the graph also hullkit with --threads 1 (kind native-1thread)
+#                levels); on the graph also hullkit with --threads 1 (kind native-1thread); on the
+#                polygons the quality meshes with CGAL's angle bound (B = 0.125, about 20.7 degrees):
+#                cgal-mesh (Delaunay_mesher_2: time, triangles, smallest angle; not checked) and
+#                hullkit-mesh (triangulate_polygon with quality.min_angle), side by side; not on
+#                star-1e4 (its 4968 needle spikes need about 3.8e7 triangles at that bound)
 #        js      hullkit (wasm triangulatePolygon / constrainedDelaunay), earcut, constrainautor
 #                (delaunator + @kninnug/constrainautor), cdt2d, poly2tri (bench/constrained_js_bench.mjs)
 #      Every triangulation is checked after its timed runs (bench/constrained_common.mjs: exactly the
 #      polygon covered once, or the graph's hull with every segment): the JS processes check their
-#      own first result; the native ones dump it (--dump) for bench/constrained_check.mjs. Each row
+#      own first result; the native ones dump it (--dump) for bench/constrained_check.mjs (hullkit-mesh's
+#      with --mesh: clockwise, boundary on the rings, area, angles but at small input angles). Each row
 #      gets a verdict: ok, wrong (with the reason), exception (a call threw / returned an error),
-#      timeout, crash, not available (hullkit's binding or core is not there yet);
+#      timeout, crash, not available (hullkit's binding or core is not there yet), skipped (a mesh not
+#      run, with the reason);
 #   4. bench/constrained_report.mjs writes bench/results-constrained.md (quick mode:
 #      bench/out/constrained/results-constrained.md) and prints the targets summary.
 # Environment:
 #   HULLKIT_BENCH_QUICK=1     smoke test: no lake-1e5, graph of 1e4 points / 1e3 segments, 3 runs each,
-#                             20 s per process at most (about 2-3 minutes)
+#                             20 s per process at most (about 2-4 minutes)
 #   HULLKIT_BENCH_NO_BUILD=1  use the built binaries and wasm module as they are
 #   HULLKIT_BENCH_NO_WASM_BUILD=1  build the native programs but use the wasm module as it is
 #   HULLKIT_BENCH_BUILD=DIR   the native build directory (default build/bench)
-#   HULLKIT_BENCH_TIMEOUT=S   stop a process after S seconds (default 600; quick 20); cgal-mesh gets
-#                             at most a fifth of it (its refinement can run away on tiny input angles)
+#   HULLKIT_BENCH_TIMEOUT=S   stop a process after S seconds (default 600; quick 20); the meshes get
+#                             a fifth of it, at least 10 s (refinement can run away on tiny input angles)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=bench/out/constrained
@@ -98,6 +103,12 @@ runs_for() {
   esac
 }
 
+# Quality meshes not run, with the reason the report shows. star-1e4: hullkit meshed it once in 133 s and
+# 8.7 GB (about 3.8e7 triangles); CGAL did not finish in 300 s.
+declare -A mesh_skip=(
+  [star-1e4]="needs ~3.8e7 triangles at this bound"
+)
+
 # record KIND LINE: tags a result line with its kind, appends it and prints a progress line.
 record() {
   local line
@@ -157,7 +168,38 @@ native_line() {
   ' "$line" "$check"
 }
 
-say "constrained bench: native runs (one process each; at most $timeout_s s, cgal-mesh $mesh_timeout_s s)"
+# mesh_line IMPL INPUT: a quality mesh of a polygon (cgal-mesh from the CGAL-only build, hullkit-mesh),
+# one process with the meshes' runs and time limit. hullkit-mesh dumps its first mesh and gets the mesh
+# check (bench/constrained_check.mjs --mesh, against the bound its line states); CGAL's mesh is not
+# dumped (its verdict "unchecked" when it ran).
+mesh_line() {
+  local impl=$1 input=$2 line check='{}'
+  local dump=$out/dump-$impl-$input
+  rm -f "$dump.tri" "$dump.xy"
+  if [ "$impl" = cgal-mesh ]; then
+    line=$(run_line "$impl" "$input" "$mesh_timeout_s" "$cgal_bench" --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30)
+  else
+    line=$(run_line "$impl" "$input" "$mesh_timeout_s" "$hullkit_bench" --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30 --dump "$dump")
+    if [ -f "$dump.tri" ] && node -e 'const r = JSON.parse(process.argv[1]); process.exit(r.error || r.min_angle_bound_deg == null ? 1 : 0)' "$line"; then
+      check=$(node bench/constrained_check.mjs --input "$out/$input.json" --dump "$dump" \
+        --mesh "$(node -p 'JSON.parse(process.argv[1]).min_angle_bound_deg' "$line")" 2>/dev/null ||
+        echo '{"verdict":"wrong","reason":"the check failed"}')
+    fi
+  fi
+  rm -f "$dump.tri" "$dump.xy"
+  node -e '
+    const r = JSON.parse(process.argv[1]), c = JSON.parse(process.argv[2]);
+    if (r.error && !r.verdict) r.verdict = r.error.startsWith("not available") ? "not available" : "exception";
+    if (!r.error && r.impl === "cgal-mesh") r.verdict = "unchecked";
+    else if (!r.error) {
+      Object.assign(r, { verdict: c.verdict ?? "wrong", reason: c.verdict ? c.reason : "no dump to check", area_error: c.area_error,
+        length_error: c.length_error, below_bound: c.below_bound, excused_input_angle: c.excused_input_angle, excused_shells: c.excused_shells });
+    }
+    console.log(JSON.stringify(r));
+  ' "$line" "$check"
+}
+
+say "constrained bench: native runs (one process each; at most $timeout_s s, the meshes $mesh_timeout_s s)"
 for input in "${polygons[@]}" "${graphs[@]}"; do
   record native "$(native_line cgal-cdt "$input" "$cgal_bench")"
   if [ -n "$hullkit_native_missing" ]; then
@@ -172,8 +214,17 @@ for input in "${polygons[@]}" "${graphs[@]}"; do
         record native-1thread "$(native_line hullkit "$input" "$hullkit_bench" --threads 1)"
       fi ;;
     *)
-      record native "$(run_line cgal-mesh "$input" "$mesh_timeout_s" "$cgal_bench" --impl cgal-mesh --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30 |
-        node -e 'let s = ""; process.stdin.on("data", (d) => (s += d)).on("end", () => { const r = JSON.parse(s); if (!r.verdict) r.verdict = r.error ? "exception" : "ok"; console.log(JSON.stringify(r)); })')" ;;
+      if [ -n "${mesh_skip[$input]:-}" ]; then
+        record native "$(failure_line cgal-mesh "$input" skipped "${mesh_skip[$input]}")"
+        record native "$(failure_line hullkit-mesh "$input" skipped "${mesh_skip[$input]}")"
+      else
+        record native "$(mesh_line cgal-mesh "$input")"
+        if [ -n "$hullkit_native_missing" ]; then
+          record native "$(failure_line hullkit-mesh "$input" "not available" "$hullkit_native_missing")"
+        else
+          record native "$(mesh_line hullkit-mesh "$input")"
+        fi
+      fi ;;
   esac
 done
 

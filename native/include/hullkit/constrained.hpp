@@ -66,8 +66,11 @@ enum class FillRule {
 /// double to the chosen point of the segment and may lie off its line by that rounding; the segment
 /// is then the chain through it (the region's area changes by at most that rounding).
 /// Triangles whose smallest angle is between two segments meeting at less than the bound, or lies
-/// between two points on segments at the same distance from their common end (Shewchuk's rule for
-/// small input angles), are left as they are and counted (unrefined_count).
+/// between two points on segments at the same distance (within 0.1%) from their common end
+/// (Shewchuk's rule for small input angles), are left as they are and counted (unrefined_count).
+/// So are triangles whose shortest edge is below 2^-40 of the points' extent, and segments shorter
+/// than twice that are not split: features that small (a point a few units in the last place from
+/// a segment) would otherwise ask for points at that scale all along them.
 struct QualityOptions {
     /// Degrees, 0 to 34: refine until every angle is at least this (0: no angle bound). Up to 28.6
     /// termination is guaranteed (with exact arithmetic); above it refinement usually finishes, and
@@ -149,8 +152,8 @@ struct ConstrainedDelaunay {
 
 /// The CDT of `points` and `segment_count` segments (index pairs, `segments[2k]`, `segments[2k+1]`)
 /// covering the convex hull of the points. Segments between repeated points and repeated segments
-/// are harmless; an index past the points is an error naming the segment. Fails as delaunay() does
-/// on bad points.
+/// are harmless (a segment given twice, either way round, is one segment counted twice); an index
+/// past the points is an error naming the segment. Fails as delaunay() does on bad points.
 ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t* segments, std::size_t segment_count,
                                          const ConstrainedOptions& options = {});
 

@@ -160,9 +160,34 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     local_xy = std::vector<double>();
     Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added);
     in = delaunay_detail::Input();
-    for (const Segment& s : segments) {
-        const Segment piece{out.representative[s.a], out.representative[s.b], s.wind, s.count, s.input};
-        if (!cdt.insert(piece)) return failure(cdt.error, -1, cdt.error_segment);
+    // Repeated segments (the same two points, either way round: a hole sharing an edge with the
+    // outline, a segment given twice) become one with their counts and windings added, in the
+    // place of the first: inserted twice, a copy could meet the first one's rounded crossing
+    // points as new crossings and leave two chains a rounding apart.
+    std::vector<Segment> merged;
+    merged.reserve(segments.size());
+    {
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;  // (unordered ends, position in merged)
+        keys.reserve(segments.size());
+        for (const Segment& s : segments) {
+            Segment piece{out.representative[s.a], out.representative[s.b], s.wind, s.count, s.input};
+            if (piece.a == piece.b) continue;
+            if (piece.a > piece.b) std::swap(piece.a, piece.b), piece.wind = -piece.wind;
+            keys.push_back({(std::uint64_t{piece.a} << 32) | piece.b, static_cast<std::uint32_t>(merged.size())});
+            merged.push_back(piece);
+        }
+        std::stable_sort(keys.begin(), keys.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        for (std::size_t k = 1; k < keys.size(); ++k) {
+            if (keys[k].first != keys[k - 1].first) continue;
+            Segment& first = merged[keys[k - 1].second];
+            Segment& again = merged[keys[k].second];
+            first.wind += again.wind, first.count += again.count;
+            again.count = 0;
+            keys[k].second = keys[k - 1].second;  // a third copy adds to the first too
+        }
+    }
+    for (const Segment& piece : merged) {
+        if (piece.count != 0 && !cdt.insert(piece)) return failure(cdt.error, -1, cdt.error_segment);
     }
     out.crossing_count = cdt.crossings;
     Refiner refiner(cdt);

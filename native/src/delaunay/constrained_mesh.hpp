@@ -206,6 +206,13 @@ private:
         return vertex_[3 * t] == kGhost || vertex_[3 * t + 1] == kGhost || vertex_[3 * t + 2] == kGhost;
     }
     void link(std::uint32_t e, std::uint32_t f) { twin_[e] = f, twin_[f] = e; }
+    /// Marks on triangles that last until the next new_mark() (a generation count: no clearing).
+    void new_mark() {
+        if (++generation_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), generation_ = 1;
+        if (stamp_.size() < vertex_.size() / 3) stamp_.resize(vertex_.size() / 3 + vertex_.size() / 6 + 16, 0);
+    }
+    void mark(std::uint32_t t) { stamp_[t] = generation_; }
+    bool marked(std::uint32_t t) const { return stamp_[t] == generation_; }
     std::uint32_t add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         std::uint32_t t;
         if (!free_.empty()) {
@@ -213,10 +220,8 @@ private:
             free_.pop_back();
         } else {
             t = static_cast<std::uint32_t>(vertex_.size() / 3);
-            vertex_.resize(vertex_.size() + 3);
-            twin_.resize(twin_.size() + 3);
-            edge_.resize(vertex_.size());
-            region_.resize(vertex_.size() / 3);
+            for (int k = 0; k < 3; ++k) vertex_.push_back(0), twin_.push_back(0), edge_.push_back(0);
+            region_.push_back(0);
         }
         if (track_) touched_.push_back(t);
         vertex_[3 * t] = a, vertex_[3 * t + 1] = b, vertex_[3 * t + 2] = c;
@@ -501,11 +506,14 @@ private:
         }
         // The cavity: conflicting triangles reachable without crossing a constrained edge.
         std::vector<std::uint32_t>& cavity = cavity_;
-        auto in_cavity = [&](std::uint32_t t) { return std::find(cavity.begin(), cavity.end(), t) != cavity.end(); };
         if (!whole_cavity) cavity.assign(1, t0);
+        new_mark();
+        for (std::uint32_t t : cavity) mark(t);
+        auto in_cavity = [&](std::uint32_t t) { return marked(t); };
         Segment split{kGhost, kGhost, 0, 0, 0};
         if (on_edge != kGhost) {
             cavity.push_back(twin_[on_edge] / 3);
+            mark(cavity.back());
             if (edge_[on_edge] != 0)
                 split = {vertex_[on_edge], vertex_[next_edge(on_edge)], wind(on_edge), count(on_edge), origin(on_edge)};
         }
@@ -520,6 +528,7 @@ private:
                 if (in_cavity(u)) continue;
                 if (edge_[e] == 0 && conflicts(u, p)) {
                     cavity.push_back(u);
+                    mark(u);
                     continue;
                 }
             }
@@ -620,6 +629,8 @@ private:
     /// With track_ set, every triangle made or changed is appended to touched_ (refine.cpp).
     bool track_ = false;
     std::vector<std::uint32_t> touched_;
+    std::vector<std::uint32_t> stamp_;  ///< see new_mark()
+    std::uint32_t generation_ = 0;
 };
 
 }  // namespace constrained_detail

@@ -32,6 +32,15 @@ double cosine(double x) {
 /// diameter (the angle a w b is obtuse).
 int dot_sign(const double* a, const double* b, const double* w) {
     using namespace exact_detail;
+    // In floating point first: each difference and product rounds by at most a unit roundoff, the
+    // sum once more, so the computed value is within 4 (+ tiny) roundoffs of the products' sizes
+    // of the exact one; 8 leaves room.
+    const double p1 = (a[0] - w[0]) * (b[0] - w[0]), p2 = (a[1] - w[1]) * (b[1] - w[1]);
+    const double size = std::fabs(p1) + std::fabs(p2), dot = p1 + p2, bound = 8 * kEpsilon * size;
+    if (size > 0x1p-900) {  // no underflow in the products: the bound holds
+        if (dot > bound) return 1;
+        if (dot < -bound) return -1;
+    }
     double ax[2], ay[2], bx[2], by[2], h[16];
     const int axl = exact_diff(a[0], w[0], ax), ayl = exact_diff(a[1], w[1], ay);
     const int bxl = exact_diff(b[0], w[0], bx), byl = exact_diff(b[1], w[1], by);
@@ -172,6 +181,9 @@ int Refiner::flaw(std::uint32_t t, int* shortest) const {
 bool Refiner::bad(std::uint32_t t) const {
     int s = 0;
     const int kind = flaw(t, &s);
+    // Below the resolution refinement works at, nothing is refined (see refine()).
+    const std::uint32_t* v = &m_.vertex_[3 * t];
+    if (kind != kFine && squared_distance(m_.pt(v[s]), m_.pt(v[(s + 1) % 3])) < tiny2_) return false;
     if (kind != kSmallAngle) return kind == kTooLarge;
     // The angle at w (opposite the shortest edge u-x) is small. Leave it when it is an input angle
     // (both its edges on segments) or the triangle sits between two points on segments at the
@@ -179,7 +191,7 @@ bool Refiner::bad(std::uint32_t t) const {
     // angle: Shewchuk's rule).
     const std::uint32_t e_in = 3 * t + (s + 1) % 3, e_out = 3 * t + (s + 2) % 3;  // x -> w, w -> u
     if (m_.edge_[e_in] != 0 && m_.edge_[e_out] != 0) return false;
-    const std::uint32_t vu = m_.vertex_[3 * t + s], vx = m_.vertex_[3 * t + (s + 1) % 3];
+    const std::uint32_t vu = v[s], vx = v[(s + 1) % 3];
     if (vu < on_segment_.size() && vx < on_segment_.size()) {
         const std::uint32_t s1 = on_segment_[vu], s2 = on_segment_[vx];
         if (s1 != kGhost && s2 != kGhost && s1 != s2) {
@@ -259,7 +271,7 @@ bool Refiner::split_segment(std::uint32_t e) {
     // short to hold a point between its ends, it stays whole.
     const std::uint32_t f = m_.twin_[e];
     const std::uint32_t c = m_.vertex_[prev_edge(e)], d = m_.vertex_[prev_edge(f)];
-    const bool fits = !(m[0] == pa[0] && m[1] == pa[1]) && !(m[0] == pb[0] && m[1] == pb[1]) &&
+    const bool fits = squared_distance(pa, pb) >= 4 * tiny2_ && !(m[0] == pa[0] && m[1] == pa[1]) && !(m[0] == pb[0] && m[1] == pb[1]) &&
                       (c == kGhost || (m_.orient_at(a, c, m) < 0 && m_.orient_at(b, c, m) > 0)) &&
                       (d == kGhost || (m_.orient_at(b, d, m) < 0 && m_.orient_at(a, d, m) > 0)) &&
                       std::isfinite(m[0]) && std::isfinite(m[1]);
@@ -340,13 +352,30 @@ std::uint32_t Refiner::walk(const double* p, std::uint32_t t, std::uint32_t* wal
 
 bool Refiner::split_triangle(const BadTriangle& item) {
     const std::uint32_t t = item.t;
+    // The shortest edge a-b (corners k, k + 1), the third corner c.
     const std::uint32_t* v = &m_.vertex_[3 * t];
-    const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
+    const double* p[3] = {m_.pt(v[0]), m_.pt(v[1]), m_.pt(v[2])};
+    int k = 0;
+    double shortest = squared_distance(p[0], p[1]);
+    for (int j = 1; j < 3; ++j) {
+        const double l = squared_distance(p[j], p[(j + 1) % 3]);
+        if (l < shortest) shortest = l, k = j;
+    }
+    const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
     // The circumcentre, from a: (|ab|^2 (ac)perp - |ac|^2 (ab)perp) / (2 ab x ac).
     const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
     const double lb = bx * bx + by * by, lc = cx * cx + cy * cy;
     const double den = 2 * (bx * cy - by * cx);
-    const double centre[2] = {a[0] + (cy * lb - by * lc) / den, a[1] + (bx * lc - cx * lb) / den};
+    double centre[2] = {(cy * lb - by * lc) / den, (bx * lc - cx * lb) / den};  // from a
+    // Ungor's off-centre: when the circumcentre is farther from the shortest edge's middle than
+    // the apex of the isosceles triangle on that edge with the angle bound at its apex, that apex
+    // instead (slightly nearer, 0.95 of the way): fewer points for the same bound.
+    if (off_centre_ > 0) {
+        const double dx = centre[0] - bx / 2, dy = centre[1] - by / 2;
+        const double reach = std::sqrt(dx * dx + dy * dy), limit = off_centre_ * std::sqrt(lb);
+        if (reach > limit) centre[0] = bx / 2 + dx * (limit / reach), centre[1] = by / 2 + dy * (limit / reach);
+    }
+    centre[0] += a[0], centre[1] += a[1];
     if (!std::isfinite(centre[0]) || !std::isfinite(centre[1])) return true;
     std::uint32_t wall = kGhost;
     const std::uint32_t at = walk(centre, t, &wall);
@@ -361,8 +390,9 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     }
     // The segments the new point would encroach: those on the boundary of its cavity (the
     // triangles whose circumcircle holds it, reached without crossing a segment).
-    cavity_.clear();
-    cavity_.push_back(at);
+    cavity_.assign(1, at);
+    m_.new_mark();
+    m_.mark(at);
     walls_.clear();
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
         for (std::uint32_t e = 3 * cavity_[k]; e < 3 * cavity_[k] + 3; ++e) {
@@ -371,7 +401,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
                 continue;
             }
             const std::uint32_t u = m_.twin_[e] / 3;
-            if (std::find(cavity_.begin(), cavity_.end(), u) == cavity_.end() && m_.conflicts(u, centre)) cavity_.push_back(u);
+            if (!m_.marked(u) && m_.conflicts(u, centre)) cavity_.push_back(u), m_.mark(u);
         }
     }
     // The encroached ones, by their ends (splitting one changes the mesh's half-edges).
@@ -411,7 +441,24 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     const double pi = 3.14159265358979323846;
     const double cosine_bound = options.min_angle > 0 ? cosine(options.min_angle * (pi / 180)) : 1.0;
     cos2_ = cosine_bound * cosine_bound;
+    // The apex of the isosceles triangle with the bound at its apex is cot(bound / 2) / 2 of its
+    // base from the base's middle; 0.95 of that (Ungor's off-centres, as Triangle places them).
+    off_centre_ = options.min_angle > 0 ? 0.475 * std::sqrt((1 + cosine_bound) / (1 - cosine_bound)) : 0.0;
     cap_ = options.max_steiner_points;
+    // The resolution: 2^-40 of the points' extent. Features smaller than that (two chains of
+    // segments a rounding apart where overlapping segments met rounded crossings, a point a few
+    // ulps from a segment) would need points at that scale all along them; segments shorter than
+    // twice it are not split and triangles whose shortest edge is shorter are left as they are
+    // (counted in unrefined_count).
+    tiny2_ = 0;
+    {
+        double lo[2] = {m_.xy_[0], m_.xy_[1]}, hi[2] = {lo[0], lo[1]};
+        for (std::size_t i = 0; i < m_.xy_.size(); i += 2) {
+            for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], m_.xy_[i + k]), hi[k] = std::max(hi[k], m_.xy_[i + k]);
+        }
+        const double tiny = std::ldexp(std::max(hi[0] - lo[0], hi[1] - lo[1]), -40);
+        tiny2_ = tiny * tiny;
+    }
     if (cap_ == 0 && options.min_angle > 28.6) cap_ = 16 * m_.input_count_ + 1000000;
     // Every edge between the domain and the rest is kept as a segment; every segment is its own
     // parent (the whole segment, whose ends decide where its pieces are split).
@@ -429,6 +476,12 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         parents_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)]});
     }
     on_segment_.assign(m_.xy_.size() / 2, kGhost);
+    // Room to grow without moving (untouched capacity costs address space, not memory): a few
+    // times the mesh, as meshes at the usual bounds come out.
+    const std::size_t room = 4 * m_.vertex_.size();
+    m_.vertex_.reserve(room), m_.twin_.reserve(room), m_.edge_.reserve(room), m_.region_.reserve(room / 3);
+    m_.xy_.reserve(2 * m_.xy_.size() + room / 3), m_.out_.reserve(m_.out_.size() + room / 6);
+    m_.records_.reserve(4 * m_.records_.size());
     m_.track_ = true;
     m_.touched_.clear();
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) m_.touched_.push_back(t);
@@ -442,7 +495,8 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         } else if (bad_head < bad_.size()) {
             const BadTriangle item = bad_[bad_head++];
             const std::uint32_t* v = &m_.vertex_[3 * item.t];
-            if (v[0] != item.a || v[1] != item.b || v[2] != item.c || m_.region_[item.t] == 0 || !bad(item.t)) continue;
+            // Unchanged since it was found bad (same corners: same shape, edges and region).
+            if (v[0] != item.a || v[1] != item.b || v[2] != item.c) continue;
             if (!split_triangle(item)) break;
         } else {
             break;

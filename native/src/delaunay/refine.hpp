@@ -69,6 +69,8 @@ private:
     Cdt& m_;
     std::vector<double> area2_;
     double cos2_ = 1.0;
+    double off_centre_ = 0.0;  ///< see split_triangle (0: plain circumcentres)
+    double tiny2_ = 0.0;       ///< the square of the smallest length refinement works at (refine())
     bool conforming_ = false;
     std::size_t cap_ = 0;
     std::vector<Parent> parents_;
