@@ -476,12 +476,6 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         parents_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)]});
     }
     on_segment_.assign(m_.xy_.size() / 2, kGhost);
-    // Room to grow without moving (untouched capacity costs address space, not memory): a few
-    // times the mesh, as meshes at the usual bounds come out.
-    const std::size_t room = 4 * m_.vertex_.size();
-    m_.vertex_.reserve(room), m_.twin_.reserve(room), m_.edge_.reserve(room), m_.region_.reserve(room / 3);
-    m_.xy_.reserve(2 * m_.xy_.size() + room / 3), m_.out_.reserve(m_.out_.size() + room / 6);
-    m_.records_.reserve(4 * m_.records_.size());
     m_.track_ = true;
     m_.touched_.clear();
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) m_.touched_.push_back(t);
