@@ -340,6 +340,28 @@ double smallest_angle(const MeshCdt& cdt) {
     return smallest;
 }
 
+#if HULLKIT_CONSTRAINED_BENCH_HULLKIT
+/// hullkit::triangulate_polygon timed on the input; with quality options (hullkit-mesh) the line
+/// also gets the mesh's smallest angle, the bound and hullkit's count of triangles left below it.
+std::function<Run(Dump*)> hullkit_polygon_run(const Input& input, const hullkit::PolygonOptions& options) {
+    return [&input, options](Dump* dump) {
+        const auto start = std::chrono::steady_clock::now();
+        hullkit::ConstrainedDelaunay result = hullkit::triangulate_polygon(
+            hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), options);
+        const double seconds = seconds_since(start);
+        if (!result.ok()) throw std::runtime_error(result.error);
+        if (dump) *dump = Dump{result.triangles, result.coords};
+        Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
+        if (options.quality.active()) {
+            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
+            out.min_angle_bound_deg = options.quality.min_angle;
+            out.unrefined = static_cast<long long>(result.unrefined_count);
+        }
+        return out;
+    };
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -421,15 +443,7 @@ int main(int argc, char** argv) {
             options.threads = args.threads;
             detail = "hullkit::triangulate_polygon(PointSpan2, holeIndices, count, PolygonOptions{evenodd, threads " +
                      std::to_string(args.threads) + "})";
-            run = [&input, options](Dump* dump) {
-                const auto start = std::chrono::steady_clock::now();
-                hullkit::ConstrainedDelaunay result = hullkit::triangulate_polygon(
-                    hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), options);
-                const double seconds = seconds_since(start);
-                if (!result.ok()) throw std::runtime_error(result.error);
-                if (dump) *dump = Dump{result.triangles, result.coords};
-                return Run{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
-            };
+            run = hullkit_polygon_run(input, options);
         } else {
             hullkit::ConstrainedOptions options;
             options.threads = args.threads;
@@ -456,19 +470,7 @@ int main(int argc, char** argv) {
         options.quality.min_angle = std::asin(std::sqrt(0.125)) * 180 / M_PI;
         detail = "hullkit::triangulate_polygon(..., PolygonOptions{evenodd, quality.min_angle " +
                  std::to_string(options.quality.min_angle) + " (CGAL's B = 0.125)})";
-        run = [&input, options](Dump* dump) {
-            const auto start = std::chrono::steady_clock::now();
-            hullkit::ConstrainedDelaunay result = hullkit::triangulate_polygon(
-                hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), options);
-            const double seconds = seconds_since(start);
-            if (!result.ok()) throw std::runtime_error(result.error);
-            if (dump) *dump = Dump{result.triangles, result.coords};
-            Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
-            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
-            out.min_angle_bound_deg = options.quality.min_angle;
-            out.unrefined = static_cast<long long>(result.unrefined_count);
-            return out;
-        };
+        run = hullkit_polygon_run(input, options);
 #else
         return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");
 #endif

@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "delaunay/constrained_checks.hpp"
 #include "hullkit/constrained.hpp"
 
 namespace {
@@ -20,19 +21,9 @@ using hullkit::ConstrainedDelaunay;
 using hullkit::FillRule;
 using hullkit::PointSpan2;
 
-mpq_class q(double v) { return mpq_class(v); }
-
-/// Twice the signed area of the (clockwise) triangles, exactly: positive when they are clockwise.
-mpq_class twice_area(const ConstrainedDelaunay& d) {
-    mpq_class sum = 0;
-    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
-        const double* a = &d.coords[2 * d.triangles[3 * t]];
-        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
-        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
-        sum -= (q(b[0]) - q(a[0])) * (q(c[1]) - q(a[1])) - (q(b[1]) - q(a[1])) * (q(c[0]) - q(a[0]));
-    }
-    return sum;
-}
+using constrained_test::q;
+using constrained_test::twice_area;
+using constrained_test::verified;
 
 /// Rings as earcut takes them: flat coordinates and the start of every ring after the first.
 struct Rings {
@@ -74,13 +65,6 @@ void centroids_inside(const Rings& r, const ConstrainedDelaunay& d) {
     }
 }
 
-void verified(const ConstrainedDelaunay& d, bool polygon) {
-    REQUIRE(d.ok());
-    const auto report = hullkit::verify_constrained(PointSpan2(d.coords), d.triangles.data(), d.triangle_count(),
-                                                    d.halfedges.data(), d.constrained.data(), polygon);
-    for (const auto& p : report.problems) UNSCOPED_INFO(p);
-    REQUIRE(report.ok);
-}
 
 ConstrainedDelaunay polygon(const Rings& r, FillRule fill = FillRule::EvenOdd, unsigned threads = 0) {
     hullkit::PolygonOptions options;

@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "delaunay/constrained_checks.hpp"
 #include "hullkit/constrained.hpp"
 
 namespace {
@@ -20,19 +21,9 @@ using hullkit::ConstrainedDelaunay;
 using hullkit::PointSpan2;
 using hullkit::QualityOptions;
 
-mpq_class q(double v) { return mpq_class(v); }
-
-/// Twice the area of the (clockwise) triangles, exactly.
-mpq_class twice_area(const ConstrainedDelaunay& d) {
-    mpq_class sum = 0;
-    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
-        const double* a = &d.coords[2 * d.triangles[3 * t]];
-        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
-        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
-        sum -= (q(b[0]) - q(a[0])) * (q(c[1]) - q(a[1])) - (q(b[1]) - q(a[1])) * (q(c[0]) - q(a[0]));
-    }
-    return sum;
-}
+using constrained_test::q;
+using constrained_test::twice_area;
+using constrained_test::verified;
 
 /// Twice the area enclosed by rings (even-odd: the shoelace sum with holes wound the other way
 /// is taken as the absolute value per ring, outer minus holes).
@@ -73,13 +64,6 @@ double largest_area(const ConstrainedDelaunay& d) {
     return best;
 }
 
-void verified(const ConstrainedDelaunay& d) {
-    REQUIRE(d.ok());
-    const auto report = hullkit::verify_constrained(PointSpan2(d.coords), d.triangles.data(), d.triangle_count(),
-                                                    d.halfedges.data(), d.constrained.data(), true);
-    INFO((report.problems.empty() ? std::string() : report.problems.front()));
-    REQUIRE(report.ok);
-}
 
 /// Every constrained edge of the output lies along an input segment: both ends within `slack`
 /// (relative to the segment's length) of one of them. Every input segment is covered: the
@@ -172,7 +156,7 @@ TEST_CASE("refine: a square with a square hole at 20, 28.6 and 33 degrees", "[re
         hullkit::PolygonOptions options;
         options.quality.min_angle = angle;
         const ConstrainedDelaunay d = hullkit::triangulate_polygon(PointSpan2(xy), starts, 1, options);
-        verified(d);
+        verified(d, true);
         REQUIRE(d.unrefined_count == 0);
         REQUIRE(d.steiner_count > 0);
         REQUIRE(d.steiner_count == d.added_count());
@@ -189,14 +173,14 @@ TEST_CASE("refine: a maximum area, global and per region", "[refine]") {
     hullkit::ConstrainedOptions options;
     options.quality.max_area = 0.5;
     ConstrainedDelaunay d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
-    verified(d);
+    verified(d, true);
     REQUIRE(largest_area(d) <= 0.5);
     REQUIRE(twice_area(d) == 32);
     segments_kept(d, xy, segs);
     // The right half gets a finer bound of its own.
     options.regions.push_back({3, 2, 0.05});
     d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
-    verified(d);
+    verified(d, true);
     double left = 0, right = 0;
     for (std::size_t t = 0; t < d.triangle_count(); ++t) {
         const double* a = &d.coords[2 * d.triangles[3 * t]];
@@ -218,13 +202,13 @@ TEST_CASE("refine: conforming meshes are Delaunay everywhere", "[refine]") {
     hullkit::ConstrainedOptions options;
     options.quality.conforming = true;
     ConstrainedDelaunay d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
-    verified(d);
+    verified(d, true);
     REQUIRE(d.steiner_count > 0);
     delaunay_everywhere(d);
     segments_kept(d, xy, segs);
     options.quality.min_angle = 25;
     d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
-    verified(d);
+    verified(d, true);
     delaunay_everywhere(d);
     REQUIRE(smallest_angle(d) >= 25);
 }
@@ -236,7 +220,7 @@ TEST_CASE("refine: small input angles are left alone and counted, without a casc
     hullkit::ConstrainedOptions options;
     options.quality.min_angle = 20;
     const ConstrainedDelaunay d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
-    verified(d);
+    verified(d, true);
     REQUIRE(d.unrefined_count > 0);
     REQUIRE(d.steiner_count < 2000);
     segments_kept(d, xy, segs);
@@ -274,7 +258,7 @@ TEST_CASE("refine: slanted segments and random polygons keep their segments and 
         options.quality.max_area = 1.0;
         const ConstrainedDelaunay d = hullkit::triangulate_polygon(PointSpan2(xy), starts, 1, options);
         INFO("trial " << trial);
-        verified(d);
+        verified(d, true);
         REQUIRE(largest_area(d) <= 1.0);
         if (d.unrefined_count == 0) REQUIRE(smallest_angle(d) >= 25);
         std::vector<std::uint32_t> segs;
@@ -297,7 +281,7 @@ TEST_CASE("refine: the same arrays every run, and no refinement without options"
     options.quality.min_angle = 30;
     const ConstrainedDelaunay a = hullkit::triangulate_polygon(PointSpan2(xy), starts, 1, options);
     const ConstrainedDelaunay b = hullkit::triangulate_polygon(PointSpan2(xy), starts, 1, options);
-    verified(a);
+    verified(a, true);
     REQUIRE(a.triangles == b.triangles);
     REQUIRE(a.coords == b.coords);
     REQUIRE(a.halfedges == b.halfedges);
@@ -338,7 +322,7 @@ TEST_CASE("refine: random graphs with crossing segments, whole hull and Triangle
         options.remove_exterior = trial % 5 == 4;
         const ConstrainedDelaunay d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
         INFO("trial " << trial << ": " << d.coords.size() / 2 << " points, " << d.triangle_count() << " triangles");
-        verified(d);
+        verified(d, true);
         if (options.quality.max_area > 0) REQUIRE(largest_area(d) <= options.quality.max_area);
         if (options.quality.conforming) delaunay_everywhere(d);
         // Every triangle below the angle bound is counted (random segments meet at small angles).
