@@ -68,9 +68,10 @@ enum class FillRule {
 /// Triangles whose smallest angle is between two segments meeting at less than the bound, or lies
 /// between two points on segments at the same distance (within 0.1%) from their common end
 /// (Shewchuk's rule for small input angles), are left as they are and counted (unrefined_count).
-/// So are triangles whose shortest edge is below 2^-40 of the points' extent, and segments shorter
-/// than twice that are not split: features that small (a point a few units in the last place from
-/// a segment) would otherwise ask for points at that scale all along them.
+/// So are triangles whose shortest edge is below 2^-40 of the points' extent or largest coordinate
+/// (whichever is larger), and segments shorter than twice that are not split: features that small
+/// (a point a few units in the last place from a segment) would otherwise ask for points at that
+/// scale all along them, where rounding decides more than the geometry.
 struct QualityOptions {
     /// Degrees, 0 to 34: refine until every angle is at least this (0: no angle bound). Up to 28.6
     /// termination is guaranteed (with exact arithmetic); above it refinement usually finishes, and
@@ -79,7 +80,8 @@ struct QualityOptions {
     /// No triangle larger than this (in the input's units squared); 0: no area bound.
     double max_area = 0;
     /// Every triangle Delaunay, not only constrained Delaunay: segments are split until no point
-    /// lies in the circle on any segment as diameter (Triangle's -D).
+    /// lies in the circle on any segment as diameter (Triangle's -D). Segments below the
+    /// resolution (see above) stay whole; their triangles are counted in unrefined_count.
     bool conforming = false;
     /// Stop with an error once refinement has added this many points (0: no cap, see min_angle).
     std::size_t max_steiner_points = 0;

@@ -321,7 +321,9 @@ bool Refiner::split_segment(std::uint32_t e) {
     m_.set_flags(3 * t3, wind, record.count, record.origin);
     m_.records_[m_.edge_[3 * t1]].parent = record.parent;
     m_.records_[m_.edge_[3 * t3]].parent = record.parent;
-    for (const Cdt::Edge edge : {Cdt::Edge{c, a}, Cdt::Edge{b, c}, Cdt::Edge{d, b}, Cdt::Edge{a, d}})
+    // Lawson's flips from the four outer edges and, as q may lie off the segment's line (then
+    // outside one old triangle's circumcircle), from the two new spokes too.
+    for (const Cdt::Edge edge : {Cdt::Edge{c, a}, Cdt::Edge{b, c}, Cdt::Edge{d, b}, Cdt::Edge{a, d}, Cdt::Edge{q, c}, Cdt::Edge{q, d}})
         if (edge.from != kGhost && edge.to != kGhost) m_.fresh_.push_back(edge);
     m_.legalize();
     return true;
@@ -445,7 +447,8 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     // base from the base's middle; 0.95 of that (Ungor's off-centres, as Triangle places them).
     off_centre_ = options.min_angle > 0 ? 0.475 * std::sqrt((1 + cosine_bound) / (1 - cosine_bound)) : 0.0;
     cap_ = options.max_steiner_points;
-    // The resolution: 2^-40 of the points' extent. Features smaller than that (two chains of
+    // The resolution: 2^-40 of the points' extent or of their largest coordinate, whichever is
+    // larger (4096 units in the last place at least). Features smaller than that (two chains of
     // segments a rounding apart where overlapping segments met rounded crossings, a point a few
     // ulps from a segment) would need points at that scale all along them; segments shorter than
     // twice it are not split and triangles whose shortest edge is shorter are left as they are
@@ -456,7 +459,10 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         for (std::size_t i = 0; i < m_.xy_.size(); i += 2) {
             for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], m_.xy_[i + k]), hi[k] = std::max(hi[k], m_.xy_[i + k]);
         }
-        const double tiny = std::ldexp(std::max(hi[0] - lo[0], hi[1] - lo[1]), -40);
+        // Far from the origin the doubles are coarser: the largest magnitude counts too.
+        const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+        const double magnitude = std::max(std::max(std::fabs(lo[0]), std::fabs(hi[0])), std::max(std::fabs(lo[1]), std::fabs(hi[1])));
+        const double tiny = std::ldexp(std::max(extent, magnitude), -40);
         tiny2_ = tiny * tiny;
     }
     if (cap_ == 0 && options.min_angle > 28.6) cap_ = 16 * m_.input_count_ + 1000000;
@@ -495,6 +501,9 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         } else {
             break;
         }
+#ifdef HULLKIT_CDT_DEBUG
+        m_.check("refinement point " + std::to_string(steiner_count));
+#endif
         retest();
         if (split_head == split_.size()) split_.clear(), split_head = 0;
         if (bad_head > 4096 && bad_head * 2 > bad_.size()) bad_.erase(bad_.begin(), bad_.begin() + bad_head), bad_head = 0;
@@ -503,7 +512,12 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     if (!error.empty()) return false;
     int shortest = 0;
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) {
-        if (m_.vertex_[3 * t] != kDead && !m_.is_ghost(t) && m_.region_[t] != 0 && flaw(t, &shortest) != kFine) ++unrefined_count;
+        if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t) || m_.region_[t] == 0) continue;
+        bool missed = flaw(t, &shortest) != kFine;
+        // Conforming: a segment still encroached (too short to split) leaves its triangles
+        // possibly not Delaunay.
+        for (std::uint32_t e = 3 * t; e < 3 * t + 3 && conforming_ && !missed; ++e) missed = m_.edge_[e] != 0 && encroached(e);
+        unrefined_count += missed;
     }
     return true;
 }
