@@ -67,13 +67,17 @@ Options:
   --convex            .poly input: keep the triangles outside the segments too
                       (the whole convex hull, hole regions still removed)
   --min-angle DEG     a quality mesh (Triangle's -q): add points until every
-                      angle is at least DEG degrees (0 to 34; up to 28.6
-                      refinement always finishes); angles between segments
-                      smaller than DEG stay (counted as unrefined in --stats)
-  --max-area A        no triangle larger than A (Triangle's -a)
+                      angle is at least DEG degrees, 0 to 34 (default 0: no
+                      angle bound; up to 28.6 refinement always finishes);
+                      angles between segments smaller than DEG stay (counted
+                      as unrefined in --stats)
+  --max-area A        no triangle larger than A (Triangle's -a; default 0:
+                      no area bound)
   --conforming        every triangle Delaunay: segments split as needed
                       (Triangle's -D)
-  --max-steiner N     fail once refinement has added N points (Triangle's -S)
+  --max-steiner N     a whole number from 0 to 4000000000: fail once
+                      refinement has added N points (Triangle's -S; default
+                      0: no cap)
   --stats             print one JSON line to standard error: points, added,
                       segments, crossings, steiner (points added by
                       refinement), unrefined, triangles, seconds
@@ -330,8 +334,10 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     app.add_option("--min-angle", args->quality.min_angle)->multi_option_policy(last);
     app.add_option("--max-area", args->quality.max_area)->multi_option_policy(last);
     app.add_flag("--conforming", args->quality.conforming);
-    app.add_option("--max-steiner", args->quality.max_steiner_points)->multi_option_policy(last);
+    unsigned max_steiner = 0;
+    add_whole_number_option(app, "--max-steiner", &max_steiner, 0, 4000000000u);
     parse_or_throw(app, argv, "triangulate");
+    args->quality.max_steiner_points = max_steiner;
     if (help) {
         std::fputs(kUsage, stdout);
         return false;
