@@ -223,10 +223,13 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
         }
         in->segment_line.push_back(line);
     }
-    if (i >= lines.size()) return;  // no hole section: none
-    bool more = false;
-    for (std::size_t j = i; j < lines.size() && !more; ++j) more = numbers_of(lines[j], &v) && !v.empty();
-    if (!more) return;
+    // Whether a line from i on holds numbers (an optional section follows).
+    auto more = [&]() {
+        for (std::size_t j = i; j < lines.size(); ++j)
+            if (numbers_of(lines[j], &v) && !v.empty()) return true;
+        return false;
+    };
+    if (!more()) return;  // no hole section: none
     line = next("hole header");
     const std::uint64_t holes = whole(v[0], line, "the hole count");
     for (std::uint64_t k = 0; k < holes; ++k) {
@@ -234,9 +237,7 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
         if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
         in->holes.push_back(v[1]), in->holes.push_back(v[2]);
     }
-    more = false;
-    for (std::size_t j = i; j < lines.size() && !more; ++j) more = numbers_of(lines[j], &v) && !v.empty();
-    if (!more) return;
+    if (!more()) return;
     // Regions: "index x y attribute max_area" (the attribute is read and not used; a max_area <= 0
     // is no bound, as Triangle reads it).
     line = next("region header");

@@ -70,8 +70,7 @@ void Refiner::flood(std::vector<std::uint32_t>& stack, std::uint32_t region) {
     }
 }
 
-void Refiner::seed_at(const double* p, std::vector<std::uint32_t>& seeds) {
-    const std::uint32_t start = m_.out_.empty() ? 0 : alive_triangle();
+void Refiner::seed_at(const double* p, std::uint32_t start, std::vector<std::uint32_t>& seeds) {
     const std::uint32_t t0 = m_.locate(p, start);
     if (m_.is_ghost(t0)) return;  // outside the hull: nothing
     for (std::uint32_t e = 3 * t0; e < 3 * t0 + 3; ++e) {
@@ -119,28 +118,18 @@ void Refiner::mark_graph(bool exterior, const std::vector<double>& holes, const 
             if (m_.region_[t] != 0 && m_.edge_[e] == 0 && m_.is_ghost(m_.twin_[e] / 3)) remove(t);
         }
     }
-    // Removal floods into triangles not yet removed (region 0 stops the generic flood, so a
-    // dedicated one): reach everything connected without crossing a segment.
-    auto flood_remove = [&]() {
-        while (!stack.empty()) {
-            const std::uint32_t t = stack.back();
-            stack.pop_back();
-            for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-                const std::uint32_t u = m_.twin_[e] / 3;
-                if (m_.edge_[e] == 0 && !m_.is_ghost(u)) remove(u);
-            }
-        }
-    };
-    flood_remove();
+    // Removing is flooding with region 0: everything reached without crossing a segment.
+    flood(stack, 0);
+    const std::uint32_t start = alive_triangle();  // where point location starts
     for (std::size_t h = 0; h + 1 < holes.size(); h += 2) {
         seeds.clear();
-        seed_at(&holes[h], seeds);
+        seed_at(&holes[h], start, seeds);
         for (std::uint32_t t : seeds) remove(t);
-        flood_remove();
+        flood(stack, 0);
     }
     for (std::size_t r = 0; 2 * r + 1 < regions.size(); ++r) {
         seeds.clear();
-        seed_at(&regions[2 * r], seeds);
+        seed_at(&regions[2 * r], start, seeds);
         const std::uint32_t id = kDomain + 1 + static_cast<std::uint32_t>(r);
         for (std::uint32_t t : seeds) {
             if (m_.region_[t] != 0 && m_.region_[t] != id) m_.region_[t] = id, stack.push_back(t);
@@ -392,18 +381,20 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     }
     // The segments the new point would encroach: those on the boundary of its cavity (the
     // triangles whose circumcircle holds it, reached without crossing a segment).
-    cavity_.assign(1, at);
+    // Gathered in the mesh's own cavity list, which insert_at fills as it is.
+    std::vector<std::uint32_t>& cavity = m_.cavity_;
+    cavity.assign(1, at);
     m_.new_mark();
     m_.mark(at);
     walls_.clear();
-    for (std::size_t k = 0; k < cavity_.size(); ++k) {
-        for (std::uint32_t e = 3 * cavity_[k]; e < 3 * cavity_[k] + 3; ++e) {
+    for (std::size_t k = 0; k < cavity.size(); ++k) {
+        for (std::uint32_t e = 3 * cavity[k]; e < 3 * cavity[k] + 3; ++e) {
             if (m_.edge_[e] != 0) {
                 walls_.push_back(e);
                 continue;
             }
             const std::uint32_t u = m_.twin_[e] / 3;
-            if (!m_.marked(u) && m_.conflicts(u, centre)) cavity_.push_back(u), m_.mark(u);
+            if (!m_.marked(u) && m_.conflicts(u, centre)) cavity.push_back(u), m_.mark(u);
         }
     }
     // The encroached ones, by their ends (splitting one changes the mesh's half-edges).
@@ -427,8 +418,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     }
     if (on_wall) return true;  // on a segment that cannot be split: left as it is
     if (!count_point()) return false;
-    m_.cavity_ = cavity_;  // p's whole conflict region: filled as it is (Bowyer-Watson)
-    m_.insert_at(centre, at, true);
+    m_.insert_at(centre, at, true);  // p's whole conflict region, filled as it is (Bowyer-Watson)
     if (m_.internal_error_) {
         error = "internal error: a refinement point could not be inserted (please report this input)";
         return false;
@@ -453,15 +443,11 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     // ulps from a segment) would need points at that scale all along them; segments shorter than
     // twice it are not split and triangles whose shortest edge is shorter are left as they are
     // (counted in unrefined_count).
-    tiny2_ = 0;
     {
-        double lo[2] = {m_.xy_[0], m_.xy_[1]}, hi[2] = {lo[0], lo[1]};
-        for (std::size_t i = 0; i < m_.xy_.size(); i += 2) {
-            for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], m_.xy_[i + k]), hi[k] = std::max(hi[k], m_.xy_[i + k]);
-        }
         // Far from the origin the doubles are coarser: the largest magnitude counts too.
-        const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
-        const double magnitude = std::max(std::max(std::fabs(lo[0]), std::fabs(hi[0])), std::max(std::fabs(lo[1]), std::fabs(hi[1])));
+        double magnitude = 0;
+        for (double v : m_.xy_) magnitude = std::max(magnitude, std::fabs(v));
+        const double extent = delaunay_detail::coordinate_span(PointSpan2(m_.xy_));
         const double tiny = std::ldexp(std::max(extent, magnitude), -40);
         tiny2_ = tiny * tiny;
     }

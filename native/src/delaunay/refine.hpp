@@ -50,8 +50,13 @@ private:
         std::uint32_t a, b;
     };
 
+    /// Gives `region` to every triangle reached from those on the stack without crossing a
+    /// segment, stopping at ghosts and at triangles outside the domain or already in `region`
+    /// (with region 0: removes what is reached from the domain).
     void flood(std::vector<std::uint32_t>& stack, std::uint32_t region);
-    void seed_at(const double* p, std::vector<std::uint32_t>& seeds);
+    /// The triangles a hole or region point picks (all around it on a corner, both on an edge),
+    /// located from triangle `start`; none outside the hull.
+    void seed_at(const double* p, std::uint32_t start, std::vector<std::uint32_t>& seeds);
     std::uint32_t alive_triangle() const;
     /// kTooLarge, kSmallAngle (with the shortest edge's index in the triangle) or kFine: the
     /// bounds alone, before the exemptions of bad().
@@ -78,7 +83,7 @@ private:
     std::set<std::pair<std::uint32_t, std::uint32_t>> unsplittable_;
     std::vector<BadTriangle> bad_;
     std::vector<SplitItem> split_;
-    std::vector<std::uint32_t> cavity_, walls_;
+    std::vector<std::uint32_t> walls_;
     std::vector<Cdt::Edge> encroached_;
 };
 
