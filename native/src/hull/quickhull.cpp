@@ -26,11 +26,14 @@ namespace {
 struct Face {
     Index v[3];     // counter-clockwise seen from outside
     Index twin[3];  // twin[k]: the half-edge (3 * face + edge) opposite edge v[k] -> v[k + 1]
-    Index outside;  // first outside point, kNone if none
-    Index farthest; // the outside point with the largest (rounded) height
-    double far_height;
-    Index mark;     // visit stamp of the current iteration
-    bool alive;
+    Index outside;  // the outside list's first point, the farthest (see push_outside); kNone if none
+    Index mark;     // visit stamp of the current iteration; kDeadFace once the face is gone; at
+                    // the end, the face's number among the live ones
+    // 32 bytes a face (a sphere's hull has twice as many faces as points): no farthest point or
+    // height beside the list, no flag beside the mark.
+
+    bool alive() const { return mark != kDeadFace; }
+    static constexpr Index kDeadFace = kNone;
 };
 
 class Quickhull {
@@ -49,29 +52,28 @@ public:
         while (!pending_.empty()) {
             const Index f = pending_.back();
             pending_.pop_back();
-            if (!faces_[f].alive || faces_[f].outside == kNone) continue;
+            if (!faces_[f].alive() || faces_[f].outside == kNone) continue;
             if (!add_point(f, error)) return false;
         }
         release(next_);
         release(pending_);
-        // Number the live faces consecutively.
-        LargeArray<Index> number(faces_.size(), kNone);
+        // Number the live faces consecutively (in their marks: the search is over).
         Index live = 0;
         for (std::size_t f = 0; f < faces_.size(); ++f) {
-            if (faces_[f].alive) number[f] = live++;
+            if (faces_[f].alive()) faces_[f].mark = live++;
         }
         surface.triangles.resize(3 * std::size_t{live});
         surface.twins.resize(3 * std::size_t{live});
         surface.flat.assign(3 * std::size_t{live}, 0);
         for (std::size_t f = 0; f < faces_.size(); ++f) {
             const Face& face = faces_[f];
-            if (!face.alive) continue;
-            const std::size_t t = number[f];
+            if (!face.alive()) continue;
+            const std::size_t t = face.mark;
             std::copy(face.v, face.v + 3, &surface.triangles[3 * t]);
             const Plane plane = plane_of(static_cast<Index>(f));
             for (int k = 0; k < 3; ++k) {
                 const Index g = face.twin[k] / 3;
-                const Index other = 3 * number[g] + face.twin[k] % 3;
+                const Index other = 3 * faces_[g].mark + face.twin[k] % 3;
                 surface.twins[3 * t + k] = other;
                 if (g < f) {  // each pair once
                     surface.flat[3 * t + k] = surface.flat[other];
@@ -115,10 +117,7 @@ private:
         face.v[1] = b;
         face.v[2] = c;
         face.outside = kNone;
-        face.farthest = kNone;
-        face.far_height = 0.0;
         face.mark = 0;
-        face.alive = true;
         return f;
     }
 
@@ -127,17 +126,26 @@ private:
         faces_[other / 3].twin[other % 3] = half_edge;
     }
 
-    /// Puts point p on face f's outside list (h: its rounded height, to pick the farthest;
-    /// ties go to the lower index so that of identical points the lowest index is chosen).
-    void push_outside(Index f, Index p, double h) {
+    /// Puts point p on face f's outside list, whose first point is the farthest from f's plane
+    /// (`plane`; h: p's rounded height above it, compared with the first point's computed again
+    /// the same way); ties go to the lower index so that of identical points the lowest index is
+    /// chosen. Any other point goes second.
+    void push_outside(Index f, const Plane& plane, Index p, double h) {
         Face& face = faces_[f];
-        if (face.outside == kNone) pending_.push_back(f);
-        next_[p] = face.outside;
-        face.outside = p;
-        if (face.farthest == kNone || h > face.far_height ||
-            (h == face.far_height && original_[p] < original_[face.farthest])) {
-            face.farthest = p;
-            face.far_height = h;
+        const Index first = face.outside;
+        if (first == kNone) {
+            pending_.push_back(f);
+            next_[p] = kNone;
+            face.outside = p;
+            return;
+        }
+        const double first_height = height(plane, at(first));
+        if (h > first_height || (h == first_height && original_[p] < original_[first])) {
+            next_[p] = first;
+            face.outside = p;
+        } else {
+            next_[p] = next_[first];
+            next_[first] = p;
         }
     }
 
@@ -149,7 +157,7 @@ private:
         for (std::size_t tried = 0; tried < m; ++tried, k = k + 1 == m ? 0 : k + 1) {
             double h;
             if (side(planes[k], p, &h) > 0) {
-                push_outside(owners[k], p, h);
+                push_outside(owners[k], planes[k], p, h);
                 last_hit_ = k;
                 return;
             }
@@ -183,7 +191,7 @@ private:
 
     /// One quickhull step: the farthest point above face f joins the hull.
     bool add_point(Index f, std::string& error) {
-        const Index eye = faces_[f].farthest;
+        const Index eye = faces_[f].outside;  // the farthest
         ++stamp_;
         // Visible faces by depth-first search; the horizon comes out as a counter-clockwise cycle
         // of half-edges on the visible side.
@@ -247,7 +255,7 @@ private:
                 q = after;
             }
             face.outside = kNone;
-            face.alive = false;
+            face.mark = Face::kDeadFace;
             free_.push_back(v);
         }
         return true;
