@@ -167,9 +167,7 @@ int Refiner::flaw(std::uint32_t t, int* shortest) const {
     return dot > 0 && dot * dot > cos2_ * len[(s + 2) % 3] * len[(s + 1) % 3] ? kSmallAngle : kFine;
 }
 
-bool Refiner::bad(std::uint32_t t) const {
-    int s = 0;
-    const int kind = flaw(t, &s);
+bool Refiner::bad(std::uint32_t t, int kind, int s) const {
     // Below the resolution refinement works at, nothing is refined (see refine()).
     const std::uint32_t* v = &m_.vertex_[3 * t];
     if (kind != kFine && squared_distance(m_.pt(v[s]), m_.pt(v[(s + 1) % 3])) < tiny2_) return false;
@@ -209,10 +207,28 @@ bool Refiner::encroached(std::uint32_t e) const {
 
 void Refiner::retest() {
     for (std::uint32_t t : m_.touched_) {
-        if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t)) continue;
-        if (m_.region_[t] != 0 && bad(t)) bad_.push_back({t, m_.vertex_[3 * t], m_.vertex_[3 * t + 1], m_.vertex_[3 * t + 2]});
-        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-            if (m_.edge_[e] != 0 && encroached(e)) split_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)], false});
+        const std::uint32_t* v = &m_.vertex_[3 * t];
+        if (v[0] == kDead || m_.is_ghost(t)) continue;
+        const bool in_domain = m_.region_[t] != 0;
+        if (in_domain) {
+            int s = 0;
+            const int kind = flaw(t, &s);
+            if (kind != kFine) {
+                const BadTriangle item{t, v[0], v[1], v[2]};
+                flawed_.push_back(item);
+                if (bad(t, kind, s)) bad_.push_back(item);
+            }
+        }
+        if (!in_domain && !conforming_) continue;
+        // A segment among t's edges is encroached from this side when t's third corner is inside
+        // its diametral circle; the other side is tested with the triangle there (every triangle
+        // is retested when it gets new corners).
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t e = 3 * t + k;
+            if (m_.edge_[e] == 0) continue;
+            const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+            if (dot_sign(m_.pt(a), m_.pt(b), m_.pt(v[(k + 2) % 3])) < 0) split_.push_back({a, b, false});
+        }
     }
     m_.touched_.clear();
 }
@@ -496,14 +512,27 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     }
     m_.track_ = false;
     if (!error.empty()) return false;
-    int shortest = 0;
-    for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) {
-        if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t) || m_.region_[t] == 0) continue;
-        bool missed = flaw(t, &shortest) != kFine;
-        // Conforming: a segment still encroached (too short to split) leaves its triangles
-        // possibly not Delaunay.
-        for (std::uint32_t e = 3 * t; e < 3 * t + 3 && conforming_ && !missed; ++e) missed = m_.edge_[e] != 0 && encroached(e);
-        unrefined_count += missed;
+    if (conforming_) {
+        // A segment still encroached (too short to split) leaves its triangles possibly not
+        // Delaunay: every triangle is looked at.
+        int shortest = 0;
+        for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) {
+            if (m_.vertex_[3 * t] == kDead || m_.is_ghost(t) || m_.region_[t] == 0) continue;
+            bool missed = flaw(t, &shortest) != kFine;
+            for (std::uint32_t e = 3 * t; e < 3 * t + 3 && !missed; ++e) missed = m_.edge_[e] != 0 && encroached(e);
+            unrefined_count += missed;
+        }
+    } else {
+        // A flaw depends on the corners alone, and every triangle was retested when it got its
+        // corners: the ones left below a bound are those found flawed that still have the same
+        // corners (each counted once).
+        m_.new_mark();
+        for (const BadTriangle& item : flawed_) {
+            const std::uint32_t* v = &m_.vertex_[3 * item.t];
+            if (v[0] != item.a || v[1] != item.b || v[2] != item.c || m_.marked(item.t)) continue;
+            m_.mark(item.t);
+            ++unrefined_count;
+        }
     }
     return true;
 }

@@ -62,8 +62,9 @@ private:
     /// bounds alone, before the exemptions of bad().
     static constexpr int kFine = 0, kTooLarge = 1, kSmallAngle = 2;
     int flaw(std::uint32_t t, int* shortest) const;
-    /// To be refined: a flaw not exempt (small input angles, Shewchuk's rule).
-    bool bad(std::uint32_t t) const;
+    /// To be refined: t's flaw `kind` (not kFine; `shortest` from flaw()) not exempt (small input
+    /// angles, Shewchuk's rule).
+    bool bad(std::uint32_t t, int kind, int shortest) const;
     bool encroached(std::uint32_t e) const;
     void retest();
     bool count_point();
@@ -82,6 +83,7 @@ private:
     std::vector<std::uint32_t> on_segment_;  ///< per vertex: the parent segment it was added on, or kGhost
     std::set<std::pair<std::uint32_t, std::uint32_t>> unsplittable_;
     std::vector<BadTriangle> bad_;
+    std::vector<BadTriangle> flawed_;  ///< every domain triangle retested with a flaw (for unrefined_count)
     std::vector<SplitItem> split_;
     std::vector<std::uint32_t> walls_;
     std::vector<Cdt::Edge> encroached_;
