@@ -9,8 +9,8 @@
 //
 // How: arrays of at least kLargeArray bytes are mapped on their own (mmap), aligned to 2 MiB,
 // rounded up to whole 2 MiB pages, marked MADV_HUGEPAGE and unmapped when freed; smaller ones
-// come from operator new as usual. Elsewhere
-// (WebAssembly, other systems) every array comes from operator new.
+// come from operator new as usual. Elsewhere (WebAssembly, other systems, sanitizer builds) every
+// array comes from operator new.
 //
 // A LargeArray's resize(n) and LargeArray(n) leave the new elements unwritten (the allocator
 // default-initializes them): each such array is written in full by its owner before any read,
@@ -27,7 +27,17 @@
 #include <utility>
 #include <vector>
 
-#if defined(__linux__) && !defined(__EMSCRIPTEN__)
+// Under AddressSanitizer or ThreadSanitizer large arrays come from operator new too, so that the
+// sanitizers see them (they do not watch memory mapped by hand).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define HULLKIT_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define HULLKIT_SANITIZED 1
+#endif
+#endif
+
+#if defined(__linux__) && !defined(__EMSCRIPTEN__) && !defined(HULLKIT_SANITIZED)
 #include <sys/mman.h>
 #define HULLKIT_HUGE_PAGES 1
 #else
