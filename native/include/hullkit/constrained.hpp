@@ -105,9 +105,11 @@ struct ConstrainedOptions {
     /// them: iterated rounding settles after one or two points per crossing pair on every input
     /// hullkit has met, and the guard turns a pathological one into an error instead of a long run.
     std::size_t max_added_points = 0;
-    /// Triangle's .poly domain (see remove_regions): drop the exterior (the triangles reachable from
-    /// the convex hull's edges that are not on a segment) and the regions around the hole points
-    /// (x y pairs) before refining and returning.
+    /// Triangle's .poly domain (its `-p` switch without `-c`): drop the exterior (the triangles
+    /// reachable from the convex hull's edges that are not on a segment, without crossing one) and
+    /// the region around each hole point (x y pairs; the triangles reachable from those holding it
+    /// without crossing a segment: all around it on a corner, both on an edge; nothing outside the
+    /// hull) before refining and returning. Every test is an exact orient2d.
     bool remove_exterior = false;
     std::vector<double> holes;
     std::vector<RegionSeed> regions;
@@ -168,16 +170,6 @@ ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t*
 /// ring_starts must be increasing and at most the point count (else an error naming the ring).
 ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
                                         const PolygonOptions& options = {});
-
-/// Triangle's way of saying what to mesh (its .poly files, its `-p` switch without `-c`): removes from
-/// a constrained_delaunay() result, in place, the triangles of the exterior (those reachable from the
-/// convex hull's edges that are not on a segment, without crossing a segment) when `exterior`, and
-/// of every hole: the region (triangles reachable without crossing a segment) around each point of
-/// `holes` (a hole point on an edge or a corner takes every triangle touching it; a hole point
-/// outside the hull or in a region already removed does nothing). Every test is an exact
-/// orient2d. `halfedges` of the kept triangles across removed ones become -1. Returns the number of
-/// triangles removed.
-std::size_t remove_regions(ConstrainedDelaunay& triangulation, bool exterior, PointSpan2 holes);
 
 /// An exact check of a constrained triangulation, independent of how it was built: every triangle
 /// clockwise with nonzero area (orient2d); no directed edge used twice; `halfedges` (when given,

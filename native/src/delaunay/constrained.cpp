@@ -277,59 +277,6 @@ ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* 
     return build(points, list, domain, options.max_added_points);
 }
 
-std::size_t remove_regions(ConstrainedDelaunay& d, bool exterior, PointSpan2 holes) {
-    const std::size_t corners = d.triangles.size(), count = corners / 3;
-    if (count == 0) return 0;
-    std::vector<std::uint8_t> removed(count, 0);
-    std::vector<std::uint32_t> stack;
-    auto seed = [&](std::size_t t) {
-        if (!removed[t]) removed[t] = 1, stack.push_back(static_cast<std::uint32_t>(t));
-    };
-    if (exterior) {
-        for (std::size_t e = 0; e < corners; ++e)
-            if (d.halfedges[e] < 0 && !d.constrained[e]) seed(e / 3);
-    }
-    if (holes.count > 0) {
-        const PointSpan2 coords(d.coords);
-        const double scale = std::ldexp(1.0, delaunay_detail::incircle_exponent(coords));
-        for (std::size_t h = 0; h < holes.count; ++h) {
-            const double hx = holes[h][0] * scale, hy = holes[h][1] * scale;
-            for (std::size_t t = 0; t < count; ++t) {
-                bool inside = true;  // clockwise triangle: the point is on the right of (or on) each edge
-                for (int k = 0; k < 3 && inside; ++k) {
-                    const double* a = coords[d.triangles[3 * t + k]];
-                    const double* b = coords[d.triangles[3 * t + (k + 1) % 3]];
-                    inside = orient2d(a[0] * scale, a[1] * scale, b[0] * scale, b[1] * scale, hx, hy) <= 0;
-                }
-                if (inside) seed(t);
-            }
-        }
-    }
-    while (!stack.empty()) {
-        const std::uint32_t t = stack.back();
-        stack.pop_back();
-        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-            if (d.halfedges[e] >= 0 && !d.constrained[e]) seed(static_cast<std::size_t>(d.halfedges[e]) / 3);
-    }
-    std::vector<std::int32_t> index(count, -1);
-    std::int32_t kept = 0;
-    for (std::size_t t = 0; t < count; ++t)
-        if (!removed[t]) index[t] = kept++;
-    for (std::size_t t = 0; t < count; ++t) {
-        if (index[t] < 0) continue;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::size_t from = 3 * t + k, to = 3 * static_cast<std::size_t>(index[t]) + k;
-            const std::int32_t h = d.halfedges[from];
-            d.triangles[to] = d.triangles[from];
-            d.constrained[to] = d.constrained[from];
-            d.halfedges[to] = h < 0 || index[h / 3] < 0 ? -1 : 3 * index[h / 3] + h % 3;
-        }
-    }
-    const std::size_t now = 3 * static_cast<std::size_t>(kept);
-    d.triangles.resize(now), d.halfedges.resize(now), d.constrained.resize(now);
-    return count - static_cast<std::size_t>(kept);
-}
-
 const char* fill_rule_name(FillRule fill) { return fill == FillRule::EvenOdd ? "evenodd" : "nonzero"; }
 
 bool parse_fill_rule(const std::string& name, FillRule* out) {
