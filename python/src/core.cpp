@@ -974,6 +974,13 @@ public:
                     head[s] = static_cast<std::int64_t>(e);
                 }
             }
+            // The walk's step, precomputed in edge order (independent loads) so that the walk
+            // below, in point order, follows one dependent load per step: the out-half-edge of the
+            // same point in the next polygon counter-clockwise, -1 at the hull.
+            std::vector<std::int32_t> around(edges);
+            for (std::size_t e = 0; e < edges; ++e)
+                around[e] = twin[e] < 0 ? -1 : static_cast<std::int32_t>(following[twin[e]]);
+            std::vector<std::uint32_t>().swap(following);  // no more use
             std::vector<std::int64_t> ring;
             for (std::size_t s = 0; s < n; ++s) {
                 if (r.representative[s] != s) continue;
@@ -983,7 +990,7 @@ public:
                 std::int64_t e = head[s];
                 do {
                     ring.push_back(polygon[e]);
-                    e = twin[e] < 0 ? -1 : static_cast<std::int64_t>(following[twin[e]]);
+                    e = around[e];
                 } while (e >= 0 && e != head[s]);
                 if (open[s]) {
                     cells.insert(cells.end(), ring.begin(), ring.end());
