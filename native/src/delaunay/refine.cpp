@@ -195,22 +195,19 @@ bool Refiner::bad(std::uint32_t t, int kind, int s) const {
     return true;
 }
 
-bool Refiner::encroached(std::uint32_t e) const {
-    const double *a = m_.pt(m_.vertex_[e]), *b = m_.pt(m_.vertex_[next_edge(e)]);
-    for (std::uint32_t h : {e, m_.twin_[e]}) {
-        const std::uint32_t t = h / 3;
-        if (m_.is_ghost(t) || (!conforming_ && m_.region_[t] == 0)) continue;
-        if (dot_sign(a, b, m_.pt(m_.vertex_[prev_edge(h)])) < 0) return true;
-    }
-    return false;
+bool Refiner::encroached_from(std::uint32_t h) const {
+    const std::uint32_t t = h / 3;
+    if (m_.is_ghost(t) || (!conforming_ && m_.region_[t] == 0)) return false;
+    return dot_sign(m_.pt(m_.vertex_[h]), m_.pt(m_.vertex_[next_edge(h)]), m_.pt(m_.vertex_[prev_edge(h)])) < 0;
 }
+
+bool Refiner::encroached(std::uint32_t e) const { return encroached_from(e) || encroached_from(m_.twin_[e]); }
 
 void Refiner::retest() {
     for (std::uint32_t t : m_.touched_) {
         const std::uint32_t* v = &m_.vertex_[3 * t];
         if (v[0] == kDead || m_.is_ghost(t)) continue;
-        const bool in_domain = m_.region_[t] != 0;
-        if (in_domain) {
+        if (m_.region_[t] != 0) {
             int s = 0;
             const int kind = flaw(t, &s);
             if (kind != kFine) {
@@ -219,16 +216,10 @@ void Refiner::retest() {
                 if (bad(t, kind, s)) bad_.push_back(item);
             }
         }
-        if (!in_domain && !conforming_) continue;
-        // A segment among t's edges is encroached from this side when t's third corner is inside
-        // its diametral circle; the other side is tested with the triangle there (every triangle
-        // is retested when it gets new corners).
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t e = 3 * t + k;
-            if (m_.edge_[e] == 0) continue;
-            const std::uint32_t a = v[k], b = v[(k + 1) % 3];
-            if (dot_sign(m_.pt(a), m_.pt(b), m_.pt(v[(k + 2) % 3])) < 0) split_.push_back({a, b, false});
-        }
+        // t's segments from t's side only; the other side is tested with the triangle there
+        // (every triangle is retested when it gets new corners).
+        for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+            if (m_.edge_[e] != 0 && encroached_from(e)) split_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)], false});
     }
     m_.touched_.clear();
 }
@@ -523,8 +514,8 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
             unrefined_count += missed;
         }
     } else {
-        // A flaw depends on the corners alone, and every triangle was retested when it got its
-        // corners: the ones left below a bound are those found flawed that still have the same
+        // A flaw depends on the corners alone (the region goes with them), and every triangle was
+        // retested when it got its corners: the ones left below a bound are those found flawed that still have the same
         // corners (each counted once).
         m_.new_mark();
         for (const BadTriangle& item : flawed_) {

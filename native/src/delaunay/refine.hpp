@@ -65,6 +65,10 @@ private:
     /// To be refined: t's flaw `kind` (not kFine; `shortest` from flaw()) not exempt (small input
     /// angles, Shewchuk's rule).
     bool bad(std::uint32_t t, int kind, int shortest) const;
+    /// Half-edge h's segment has the third corner of h's triangle strictly inside its diametral
+    /// circle (that triangle in the domain, or any finite one when conforming).
+    bool encroached_from(std::uint32_t h) const;
+    /// From either side.
     bool encroached(std::uint32_t e) const;
     void retest();
     bool count_point();
