@@ -149,8 +149,8 @@ class Triangulation:
     def scipy_voronoi(self, infinity_region: bool, /) -> tuple[
         NDArray[np.float64],
         NDArray[np.int32],
-        NDArray[np.int64],
-        NDArray[np.int64],
+        NDArray[np.int32],
+        NDArray[np.int32],
         NDArray[np.int64],
         NDArray[np.intp],
         NDArray[np.float64],

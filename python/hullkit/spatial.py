@@ -653,7 +653,8 @@ class Voronoi(_Incremental):
       has one vertex per square or cube, exactly at its centre).
     * 2D: ``regions`` are counter-clockwise, a bounded one from its lowest vertex, an unbounded
       one with -1 last (between its last and first vertex); a ridge is ``[a, b]``, or
-      ``[-1, a]`` for a ray. 3D: a region lists its
+      ``[-1, a]`` for a ray. 2D vertices are numbered along a space-filling curve (nearby
+      vertices are near each other in the array; Qhull's order is its own). 3D: a region lists its
       vertices ascending (-1 first if unbounded; scipy's order is Qhull's); a ridge lists its
       face's vertices in order around it, an unbounded face ``[-1, a, ..., b]`` (the chain between
       its two rays). Unlike Qhull, every face is listed, also an unbounded one with a single
@@ -682,13 +683,13 @@ class Voronoi(_Incremental):
     >>> points = np.array([[x, y] for x in range(3) for y in range(3)], dtype=float)
     >>> vor = Voronoi(points)
     >>> vor.vertices.tolist()
-    [[0.5, 0.5], [0.5, 1.5], [1.5, 0.5], [1.5, 1.5]]
+    [[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]
     >>> vor.regions[vor.point_region[4]]  # the centre's cell, counter-clockwise
-    [0, 2, 3, 1]
+    [0, 1, 2, 3]
     >>> vor.regions[vor.point_region[1]]  # (0, 1)'s: unbounded, -1 last
-    [0, 1, -1]
+    [0, 3, -1]
     >>> vor.ridge_dict[(1, 4)], vor.ridge_dict[(0, 1)]
-    ([1, 0], [-1, 0])
+    ([3, 0], [-1, 0])
     >>> vor.volumes.tolist()[:5]
     [inf, inf, inf, inf, 1.0]
     >>> cube = np.array([[x, y, z] for x in range(3) for y in range(3) for z in range(3)], dtype=float)
@@ -777,11 +778,11 @@ class Voronoi(_Incremental):
 
     # -- 2D ------------------------------------------------------------------------------------
     def _from_2d(self, xy):
-        """The diagram from the Delaunay polygons (cocircular triangles merged), made in the core
-        (Triangulation.scipy_voronoi in python/src/core.cpp: one vertex per polygon, a ridge per
-        Delaunay edge, each point's cell counter-clockwise); None when done."""
+        """The diagram made in the core (hullkit::delaunay_voronoi_diagram, through
+        Triangulation.scipy_voronoi: one vertex per Delaunay polygon, exactly cocircular triangles
+        merged; a ridge per Delaunay edge; each point's cell counter-clockwise); None when done."""
         with _translated():
-            core = _core.Triangulation(xy, "incremental", True, 0)
+            core = _core.Triangulation(xy, "incremental", False, 0)
         self.dimension = core.dimension
         if core.dimension < 2:  # collinear: the points in order along the line (or one point)
             return self._along_line(core.representative, core.hull, (-1, -1))

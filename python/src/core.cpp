@@ -228,21 +228,6 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
     return report_dict(report);
 }
 
-/// The centre of the circle through a, b, c (x y each) into out[0], out[1]: from the differences to
-/// a, scaled by a power of two to about 1 (no overflow or underflow in the squares of tiny or huge
-/// triangles; a grid's centres come out exactly); inf or NaN when the points are collinear.
-void circle_centre(const double* a, const double* b, const double* c, double* out) {
-    double ba[2] = {b[0] - a[0], b[1] - a[1]}, ca[2] = {c[0] - a[0], c[1] - a[1]};
-    int exponent = 0;
-    std::frexp(std::max(std::max(std::fabs(ba[0]), std::fabs(ba[1])), std::max(std::fabs(ca[0]), std::fabs(ca[1]))), &exponent);
-    for (double* v : {ba, ca}) v[0] = std::ldexp(v[0], -exponent), v[1] = std::ldexp(v[1], -exponent);
-    const double lb = ba[0] * ba[0] + ba[1] * ba[1], lc = ca[0] * ca[0] + ca[1] * ca[1];
-    const double denominator = 2.0 * (ba[0] * ca[1] - ba[1] * ca[0]);
-    const double x = (ca[1] * lb - ba[1] * lc) / denominator;
-    const double y = (ba[0] * lc - ca[0] * lb) / denominator;
-    out[0] = a[0] + std::ldexp(x, exponent);  // a centre beyond the doubles' range: inf
-    out[1] = a[1] + std::ldexp(y, exponent);
-}
 
 /// The furthest-site Delaunay triangulation of 2D points, from their hull cycle `hull` (the
 /// indices of the points on the hull's boundary, in order either way): the triangulation of the
@@ -428,7 +413,7 @@ py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_
             number[root] = static_cast<std::int32_t>(centres.size() / 2);
             centres.resize(centres.size() + 2);
             const double* xy = points.data();
-            circle_centre(xy + 2 * triangles[3 * q], xy + 2 * triangles[3 * q + 1], xy + 2 * triangles[3 * q + 2],
+            hullkit::circumcentre(xy + 2 * triangles[3 * q], xy + 2 * triangles[3 * q + 1], xy + 2 * triangles[3 * q + 2],
                           &centres[centres.size() - 2]);
         }
         group[q] = number[root];
@@ -905,135 +890,36 @@ public:
         return py::make_tuple(owned(std::move(found.gradients), {n, k, 2}), found.iterations, found.converged);
     }
 
-    /// scipy.spatial.Voronoi's arrays, from the Delaunay polygons (a triangulation made with
-    /// merge_cocircular, dimension 2): (vertices (P, 2): each polygon's circumcentre; ridge_points
-    /// (R, 2) int32, p < q; ridge_vertices (R, 2) int64: [the polygon across, the polygon], or
-    /// [-1, polygon] on the hull, in half-edge order, each Delaunay edge once; the regions of the
-    /// distinct points (ascending) as one flat int64 array and offsets (distinct + 1): each
-    /// point's polygons counter-clockwise, a bounded cell from its lowest, an unbounded one with
-    /// -1 last; point_region (n,) intp: each point's region, counting an empty one first when
-    /// `infinity_region` (a repeated point its representative's); volumes (n,): each point's cell
-    /// area, inf when unbounded). nested_lists makes scipy's lists of them.
+    /// scipy.spatial.Voronoi's arrays (hullkit::delaunay_voronoi_diagram, dimension 2): (vertices
+    /// (V, 2); ridge_points (R, 2) int32, p < q; ridge_vertices (R, 2) int32: [the vertex across,
+    /// the vertex], or [-1, vertex] for a ray; the regions as one flat int32 array and int64
+    /// offsets (one region per distinct point, in the core's cell order): each counter-clockwise, a
+    /// bounded one from its lowest vertex, an unbounded one with -1 last; point_region (n,) intp:
+    /// each point's region, counting an empty one first when `infinity_region` (a repeated point
+    /// its representative's); volumes (n,): each point's cell area, inf when unbounded).
     py::tuple scipy_voronoi(bool infinity_region) const {
-        const hullkit::Delaunay& r = result_;
-        if (r.dimension != 2 || r.polygon_offsets.size() < 2)
-            throw std::invalid_argument("scipy_voronoi needs a 2D triangulation made with merge_cocircular");
+        if (result_.dimension != 2) throw std::invalid_argument("scipy_voronoi needs a 2D triangulation");
         const std::size_t n = static_cast<std::size_t>(points_.shape(0));
-        const double* xy = points_.data();
-        const std::vector<std::uint32_t>& off = r.polygon_offsets;
-        const std::vector<std::uint32_t>& corner = r.polygon_vertices;
-        const std::size_t polygons = off.size() - 1, edges = corner.size();
-        std::vector<std::uint32_t> polygon(edges), following(edges), preceding(edges);
-        std::vector<double> vertices(2 * polygons);
-        std::vector<std::int32_t> twin(edges, -1);  // below 2^31: the core limits the points
-        std::vector<std::int32_t> ridge_points;
-        std::vector<std::int64_t> ridge_edge;  // the half-edge of each ridge
-        std::vector<std::int64_t> cells;       // each distinct point's region, -1 for infinity
-        std::vector<std::size_t> cell_start;   // per distinct point (ascending), and one past the last
-        std::vector<double> area(n, 0.0);
-        {
-            py::gil_scoped_release unlocked;
-            for (std::size_t p = 0; p < polygons; ++p) {
-                const std::uint32_t first = off[p], last = off[p + 1], size = last - first;
-                for (std::uint32_t e = first; e < last; ++e) {
-                    polygon[e] = static_cast<std::uint32_t>(p);
-                    following[e] = e + 1 < last ? e + 1 : first;
-                    preceding[e] = e > first ? e - 1 : last - 1;
-                }
-                // The circle through corners 0, size/3 and 2 size/3.
-                circle_centre(xy + 2 * corner[first], xy + 2 * corner[first + size / 3], xy + 2 * corner[first + 2 * size / 3],
-                              &vertices[2 * p]);
-            }
-            // Twins: the half-edges with the same two ends.
-            auto lower = [&](std::size_t e) { return std::min(corner[e], corner[following[e]]); };
-            auto higher = [&](std::size_t e) { return std::max(corner[e], corner[following[e]]); };
-            pair_half_edges(n, edges, lower, higher, [&](std::uint32_t e, std::uint32_t f) {
-                twin[e] = static_cast<std::int32_t>(f), twin[f] = static_cast<std::int32_t>(e);
-            });
-            ridge_points.reserve(edges + 2);
-            ridge_edge.reserve(edges / 2 + 1);
-            cells.reserve(edges + n);
-            cell_start.reserve(n + 1);
-            for (std::size_t e = 0; e < edges; ++e) {
-                if (twin[e] >= 0 && twin[e] < static_cast<std::int64_t>(e)) continue;
-                const std::uint32_t s = corner[e], t = corner[following[e]];
-                ridge_points.push_back(static_cast<std::int32_t>(std::min(s, t)));
-                ridge_points.push_back(static_cast<std::int32_t>(std::max(s, t)));
-                ridge_edge.push_back(static_cast<std::int64_t>(e));
-            }
-            // Cells: from a point's out-half-edge e, the next polygon counter-clockwise is across e
-            // (its out-half-edge follows the twin). A hull point's chain starts at the out-half-edge
-            // whose preceding one has no twin and ends at one without.
-            std::vector<std::int64_t> head(n, -1);
-            std::vector<char> open(n, 0);
-            for (std::size_t e = 0; e < edges; ++e) {
-                const std::uint32_t s = corner[e];
-                if (twin[preceding[e]] < 0) {
-                    head[s] = static_cast<std::int64_t>(e), open[s] = 1;
-                } else if (!open[s] && head[s] < 0) {
-                    head[s] = static_cast<std::int64_t>(e);
-                }
-            }
-            // The walk's step, precomputed in edge order (independent loads) so that the walk
-            // below, in point order, follows one dependent load per step: the out-half-edge of the
-            // same point in the next polygon counter-clockwise, -1 at the hull.
-            std::vector<std::int32_t> around(edges);
-            for (std::size_t e = 0; e < edges; ++e)
-                around[e] = twin[e] < 0 ? -1 : static_cast<std::int32_t>(following[twin[e]]);
-            std::vector<std::uint32_t>().swap(following);  // no more use
-            std::vector<std::int64_t> ring;
-            for (std::size_t s = 0; s < n; ++s) {
-                if (r.representative[s] != s) continue;
-                cell_start.push_back(cells.size());
-                if (head[s] < 0) continue;
-                ring.clear();
-                std::int64_t e = head[s];
-                do {
-                    ring.push_back(polygon[e]);
-                    e = around[e];
-                } while (e >= 0 && e != head[s]);
-                if (open[s]) {
-                    cells.insert(cells.end(), ring.begin(), ring.end());
-                    cells.push_back(-1);
-                    area[s] = std::numeric_limits<double>::infinity();
-                    continue;
-                }
-                const std::size_t shift = static_cast<std::size_t>(std::min_element(ring.begin(), ring.end()) - ring.begin());
-                std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(shift), ring.end());
-                cells.insert(cells.end(), ring.begin(), ring.end());
-                double twice = 0.0;  // the fan from the point over each edge of the cell
-                for (std::size_t k = 0; k < ring.size(); ++k) {
-                    const double* u = vertices.data() + 2 * ring[k];
-                    const double* v = vertices.data() + 2 * ring[(k + 1) % ring.size()];
-                    twice += (u[0] - xy[2 * s]) * (v[1] - xy[2 * s + 1]) - (u[1] - xy[2 * s + 1]) * (v[0] - xy[2 * s]);
-                }
-                area[s] = 0.5 * twice;
-            }
-            cell_start.push_back(cells.size());
-        }
-        const std::size_t ridges = ridge_edge.size();
-        std::vector<std::int64_t> ridge_vertices(2 * ridges);
-        for (std::size_t k = 0; k < ridges; ++k) {
-            const std::int64_t e = ridge_edge[k];
-            ridge_vertices[2 * k] = twin[e] < 0 ? -1 : static_cast<std::int64_t>(polygon[twin[e]]);
-            ridge_vertices[2 * k + 1] = polygon[e];
-        }
-        const std::size_t first = infinity_region ? 1 : 0;
-        std::vector<std::int64_t> region_of(n, 0);
-        for (std::size_t s = 0, k = 0; s < n; ++s) {
-            if (r.representative[s] == s) region_of[s] = static_cast<std::int64_t>(k++ + first);
-        }
+        hullkit::VoronoiDiagram found;
         std::vector<py::ssize_t> point_region(n);
         std::vector<double> volumes(n);
-        for (std::size_t s = 0; s < n; ++s) {
-            point_region[s] = static_cast<py::ssize_t>(region_of[r.representative[s]]);
-            volumes[s] = area[r.representative[s]];
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::delaunay_voronoi_diagram(span(), result_, 0);
+            const py::ssize_t first = infinity_region ? 1 : 0;
+            if (found.ok()) {
+                for (std::size_t s = 0; s < n; ++s) {
+                    const auto cell = static_cast<std::size_t>(found.point_cell[s]);
+                    point_region[s] = static_cast<py::ssize_t>(cell) + first;
+                    volumes[s] = found.areas[cell];
+                }
+            }
         }
-        std::vector<std::int64_t> offsets(cell_start.begin(), cell_start.end());  // cell_start has no more use
-        return py::make_tuple(owned_points(std::move(vertices), 2),
-                              owned(std::move(ridge_points), {static_cast<py::ssize_t>(ridges), 2}),
-                              owned(std::move(ridge_vertices), {static_cast<py::ssize_t>(ridges), 2}), owned(std::move(cells)),
-                              owned(std::move(offsets)), owned(std::move(point_region)), owned(std::move(volumes)));
+        if (!found.ok()) throw CoreError(found.error, -1);
+        const auto ridges = static_cast<py::ssize_t>(found.ridge_points.size() / 2);
+        return py::make_tuple(owned_points(std::move(found.vertices), 2), owned(std::move(found.ridge_points), {ridges, 2}),
+                              owned(std::move(found.ridge_vertices), {ridges, 2}), owned(std::move(found.cells)),
+                              owned(std::move(found.cell_offsets)), owned(std::move(point_region)), owned(std::move(volumes)));
     }
 
     py::tuple voronoi(double xmin, double ymin, double xmax, double ymax) const {

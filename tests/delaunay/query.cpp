@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <set>
 
 #include "delaunay_checks.hpp"
 
@@ -304,6 +305,229 @@ TEST_CASE("delaunay_voronoi: collinear points give slabs, one point the rectangl
     const std::vector<double> one = {0.5, 0.5};
     const hullkit::VoronoiCells all = hullkit::delaunay_voronoi(one, hullkit::delaunay(one), 0, 0, 1, 1);
     REQUIRE(all.cell_xy == std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1});
+}
+
+namespace {
+
+/// The whole diagram against its definition, independently of delaunay_voronoi_diagram's code:
+/// a vertex per exactly cocircular group of triangles (GMP incircle across every interior edge),
+/// each ridge a Delaunay edge between two groups (or on the hull), each cell the groups around its
+/// point counter-clockwise, and each bounded cell equal to the cell clipped by bisectors
+/// (delaunay_voronoi) in a rectangle holding it: the same corners and area up to rounding.
+void check_voronoi_diagram(const std::vector<double>& xy, const Delaunay& d, const hullkit::VoronoiDiagram& v) {
+    REQUIRE(v.ok());
+    const std::size_t n = xy.size() / 2, triangles = d.triangle_count();
+    REQUIRE(v.triangle_vertex.size() == triangles);
+    REQUIRE(v.point_cell.size() == n);
+    const std::size_t cell_count = v.cell_point.size();
+    REQUIRE(v.cell_offsets.size() == cell_count + 1);
+    REQUIRE(v.areas.size() == cell_count);
+    REQUIRE(v.cell_offsets.back() == static_cast<std::int64_t>(v.cells.size()));
+    std::size_t bad = 0;
+    // Groups: same vertex across an interior edge exactly when the four corners are cocircular;
+    // numbered by first triangle.
+    std::uint32_t next_new = 0;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t g = v.triangle_vertex[t];
+        if (g == next_new) ++next_new;
+        bad += g > next_new;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::int32_t h = d.halfedges[3 * t + k];
+            if (h < 0) continue;
+            const double* a = &xy[2 * d.triangles[3 * t]];
+            const double* b = &xy[2 * d.triangles[3 * t + 1]];
+            const double* c = &xy[2 * d.triangles[3 * t + 2]];
+            const double* o = &xy[2 * d.triangles[3 * (h / 3) + (h % 3 + 2) % 3]];
+            const bool cocircular = delaunay_test::gmp_incircle(a[0], a[1], b[0], b[1], c[0], c[1], o[0], o[1]) == 0;
+            bad += cocircular != (g == v.triangle_vertex[static_cast<std::size_t>(h) / 3]);
+        }
+    }
+    REQUIRE(bad == 0);
+    REQUIRE(v.vertices.size() == 2 * std::size_t{next_new});
+    // Every vertex is equidistant (to rounding) from the corners of its triangles.
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const double* c = &v.vertices[2 * v.triangle_vertex[t]];
+        const double* a = &xy[2 * d.triangles[3 * t]];
+        const double r = std::hypot(c[0] - a[0], c[1] - a[1]);
+        for (int k = 1; k < 3; ++k) {
+            const double* b = &xy[2 * d.triangles[3 * t + k]];
+            bad += std::fabs(std::hypot(c[0] - b[0], c[1] - b[1]) - r) > 1e-9 * (1 + r);
+        }
+    }
+    // Ridges: each undirected Delaunay edge between different groups (or on the hull) once.
+    std::set<std::pair<std::int32_t, std::int32_t>> expected, got;
+    for (std::size_t e = 0; e < d.triangles.size(); ++e) {
+        const std::int32_t h = d.halfedges[e];
+        if (h >= 0 && v.triangle_vertex[e / 3] == v.triangle_vertex[static_cast<std::size_t>(h) / 3]) continue;
+        const auto a = static_cast<std::int32_t>(d.triangles[e]), b = static_cast<std::int32_t>(d.triangles[delaunay_test::next_edge(e)]);
+        expected.emplace(std::min(a, b), std::max(a, b));
+    }
+    const std::size_t ridges = v.ridge_points.size() / 2;
+    REQUIRE(v.ridge_vertices.size() == 2 * ridges);
+    for (std::size_t r = 0; r < ridges; ++r) {
+        got.emplace(v.ridge_points[2 * r], v.ridge_points[2 * r + 1]);
+        bad += v.ridge_points[2 * r] >= v.ridge_points[2 * r + 1];
+        bad += v.ridge_vertices[2 * r + 1] < 0 || v.ridge_vertices[2 * r] == v.ridge_vertices[2 * r + 1];
+    }
+    REQUIRE(got.size() == ridges);
+    REQUIRE(got == expected);
+    // Cells against the clipped ones in a rectangle holding every vertex.
+    double lo[2] = {0, 0}, hi[2] = {0, 0};
+    for (std::size_t i = 0; i < v.vertices.size(); ++i) {
+        lo[i % 2] = std::min(lo[i % 2], v.vertices[i]), hi[i % 2] = std::max(hi[i % 2], v.vertices[i]);
+    }
+    for (std::size_t i = 0; i < xy.size(); ++i) lo[i % 2] = std::min(lo[i % 2], xy[i]), hi[i % 2] = std::max(hi[i % 2], xy[i]);
+    const hullkit::VoronoiCells clipped = hullkit::delaunay_voronoi(xy, d, lo[0] - 1, lo[1] - 1, hi[0] + 1, hi[1] + 1);
+    std::size_t distinct = 0;
+    for (std::size_t s = 0; s < n; ++s) {
+        const auto cell = static_cast<std::size_t>(v.point_cell[s]);
+        REQUIRE(cell < cell_count);
+        if (d.representative[s] != s) {
+            bad += v.point_cell[s] != v.point_cell[d.representative[s]];
+            continue;
+        }
+        ++distinct;
+        bad += v.cell_point[cell] != s;
+        const auto begin = static_cast<std::size_t>(v.cell_offsets[cell]), end = static_cast<std::size_t>(v.cell_offsets[cell + 1]);
+        REQUIRE(end > begin);
+        const double area = v.areas[cell];
+        const bool open = v.cells[end - 1] == -1;
+        bad += open != std::isinf(area);
+        // Distinct groups around s, counter-clockwise: a bounded cell from its lowest vertex.
+        std::set<std::int32_t> around;
+        for (std::size_t e = 0; e < d.triangles.size(); ++e)
+            if (d.triangles[e] == s) around.insert(static_cast<std::int32_t>(v.triangle_vertex[e / 3]));
+        const std::set<std::int32_t> listed(v.cells.begin() + static_cast<std::ptrdiff_t>(begin),
+                                            v.cells.begin() + static_cast<std::ptrdiff_t>(end - (open ? 1 : 0)));
+        bad += listed != around || listed.size() != end - begin - (open ? 1 : 0);
+        if (open) continue;
+        bad += v.cells[begin] != *listed.begin();
+        double twice = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+            const double* u = &v.vertices[2 * static_cast<std::size_t>(v.cells[k])];
+            const double* w = &v.vertices[2 * static_cast<std::size_t>(v.cells[k + 1 == end ? begin : k + 1])];
+            twice += u[0] * w[1] - u[1] * w[0];
+        }
+        bad += !(twice > 0) || std::fabs(twice / 2 - area) > 1e-9 * (1 + std::fabs(area));
+        double clipped_twice = 0;
+        const std::uint32_t cb = clipped.cell_offsets[s], ce = clipped.cell_offsets[s + 1];
+        for (std::uint32_t k = cb; k < ce; ++k) {
+            const std::uint32_t l = k + 1 == ce ? cb : k + 1;
+            clipped_twice += clipped.cell_xy[2 * k] * clipped.cell_xy[2 * l + 1] - clipped.cell_xy[2 * l] * clipped.cell_xy[2 * k + 1];
+            // Each clipped corner is one of the cell's vertices.
+            double nearest = INFINITY;
+            for (std::size_t j = begin; j < end; ++j) {
+                const double* u = &v.vertices[2 * static_cast<std::size_t>(v.cells[j])];
+                nearest = std::min(nearest, std::hypot(u[0] - clipped.cell_xy[2 * k], u[1] - clipped.cell_xy[2 * k + 1]));
+            }
+            bad += nearest > 1e-7;
+        }
+        bad += std::fabs(clipped_twice / 2 - area) > 1e-7 * (1 + std::fabs(area));
+    }
+    REQUIRE(distinct == cell_count);
+    REQUIRE(bad == 0);
+}
+
+}  // namespace
+
+TEST_CASE("delaunay_voronoi_diagram: vertices per cocircular group, ridges, cells and areas, any thread count", "[query]") {
+    std::vector<std::vector<double>> inputs = {grid_with_random(5), grid_with_random(6)};
+    {  // a 12 x 9 grid (every square one vertex at its centre, interior cells of area 1)
+        std::vector<double> grid;
+        for (int j = 0; j < 9; ++j)
+            for (int i = 0; i < 12; ++i) grid.insert(grid.end(), {double((i * 7) % 12), double(j)});
+        inputs.push_back(grid);
+    }
+    {  // the twelve lattice points of x^2 + y^2 = 25 (exactly cocircular: one 12-gon) and three outside
+        std::vector<double> ring = {7, 1, -6.5, 3, 0.5, -8};
+        for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+                 {5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}})
+            ring.insert(ring.end(), {x, y});
+        inputs.push_back(ring);
+    }
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<double> many;
+    for (int k = 0; k < 40000; ++k) many.insert(many.end(), {u(rng), u(rng)});
+    for (int j = 0; j < 60; ++j)
+        for (int i = 0; i < 60; ++i) many.insert(many.end(), {2 + i / 16.0, j / 16.0});  // a grid beside them
+    for (std::size_t input = 0; input < inputs.size(); ++input) {
+        INFO("input " << input);
+        const std::vector<double>& xy = inputs[input];
+        const Delaunay d = hullkit::delaunay(xy);
+        check_voronoi_diagram(xy, d, hullkit::delaunay_voronoi_diagram(xy, d, 1));
+    }
+    // The 12 x 9 grid: one vertex per square, at its centre exactly; every interior cell of area 1.
+    const std::vector<double>& grid = inputs[2];
+    const hullkit::VoronoiDiagram g = hullkit::delaunay_voronoi_diagram(grid, hullkit::delaunay(grid));
+    REQUIRE(g.vertices.size() == 2 * 11 * 8);
+    for (std::size_t k = 0; k < g.vertices.size(); ++k) REQUIRE(g.vertices[k] - std::floor(g.vertices[k]) == 0.5);
+    std::size_t unit = 0;
+    for (double a : g.areas) unit += a == 1.0;
+    REQUIRE(unit == 10 * 7);
+    // The circle: its twelve lattice points share one vertex, at (0, 0); 5 vertices in all (the
+    // 12-gon and the four triangles between it and the three points outside).
+    const std::vector<double>& ring = inputs[3];
+    const hullkit::VoronoiDiagram c = hullkit::delaunay_voronoi_diagram(ring, hullkit::delaunay(ring));
+    std::set<std::int32_t> shared;
+    for (std::size_t s = 3; s < 15; ++s) {
+        const auto k = static_cast<std::size_t>(c.point_cell[s]);
+        std::set<std::int32_t> cell(c.cells.begin() + c.cell_offsets[k], c.cells.begin() + c.cell_offsets[k + 1]);
+        if (s == 3) shared = cell;
+        std::set<std::int32_t> both;
+        for (std::int32_t x : cell) if (shared.count(x)) both.insert(x);
+        shared = both;
+    }
+    REQUIRE(shared.size() == 1);
+    const double* centre = &c.vertices[2 * static_cast<std::size_t>(*shared.begin())];
+    REQUIRE(std::hypot(centre[0], centre[1]) < 1e-12);
+    // Identical arrays for every thread count, on a larger input with a grid in it.
+    const Delaunay d = hullkit::delaunay(many);
+    const hullkit::VoronoiDiagram one = hullkit::delaunay_voronoi_diagram(many, d, 1);
+    check_voronoi_diagram(many, d, one);
+    for (unsigned threads : {2u, 3u, 0u}) {
+        const hullkit::VoronoiDiagram other = hullkit::delaunay_voronoi_diagram(many, d, threads);
+        REQUIRE(other.vertices == one.vertices);
+        REQUIRE(other.triangle_vertex == one.triangle_vertex);
+        REQUIRE(other.ridge_points == one.ridge_points);
+        REQUIRE(other.ridge_vertices == one.ridge_vertices);
+        REQUIRE(other.cells == one.cells);
+        REQUIRE(other.cell_offsets == one.cell_offsets);
+        REQUIRE(other.cell_point == one.cell_point);
+        REQUIRE(other.point_cell == one.point_cell);
+        REQUIRE(std::memcmp(other.areas.data(), one.areas.data(), one.areas.size() * sizeof(double)) == 0);
+    }
+}
+
+TEST_CASE("delaunay_voronoi_diagram: collinear points, one point, repeated points, errors", "[query]") {
+    const std::vector<double> line = {0, 0, 2, 0, 1, 0, 2, 0};
+    const hullkit::VoronoiDiagram l = hullkit::delaunay_voronoi_diagram(line, hullkit::delaunay(line));
+    REQUIRE(l.ok());
+    REQUIRE(l.vertices.empty());
+    REQUIRE(l.ridge_points == std::vector<std::int32_t>{0, 2, 1, 2});
+    REQUIRE(l.ridge_vertices == std::vector<std::int32_t>{-1, -1, -1, -1});
+    REQUIRE(l.cells == std::vector<std::int32_t>{-1, -1, -1});
+    REQUIRE(l.cell_offsets == std::vector<std::int64_t>{0, 1, 2, 3});
+    REQUIRE(l.point_cell == std::vector<std::int32_t>{0, 1, 2, 1});
+    REQUIRE(std::isinf(l.areas[2]));
+    const std::vector<double> one = {0.5, 0.5};
+    const hullkit::VoronoiDiagram o = hullkit::delaunay_voronoi_diagram(one, hullkit::delaunay(one));
+    REQUIRE(o.cells == std::vector<std::int32_t>{-1});
+    REQUIRE(o.ridge_points.empty());
+    // A triangle: one vertex, three rays, three open cells.
+    const std::vector<double> tri = {0, 0, 4, 0, 0, 4, 0, 0};
+    const hullkit::VoronoiDiagram t = hullkit::delaunay_voronoi_diagram(tri, hullkit::delaunay(tri));
+    REQUIRE(t.vertices == std::vector<double>{2, 2});
+    REQUIRE(t.ridge_vertices == std::vector<std::int32_t>{-1, 0, -1, 0, -1, 0});
+    REQUIRE(t.cells == std::vector<std::int32_t>{0, -1, 0, -1, 0, -1});
+    REQUIRE(t.cell_offsets == std::vector<std::int64_t>{0, 2, 4, 6});
+    REQUIRE(t.point_cell[3] == t.point_cell[0]);
+    // Errors: a failed triangulation, and one of other points.
+    const std::vector<double> nan = {0, 0, 1, 0, NAN, 1};
+    REQUIRE_FALSE(hullkit::delaunay_voronoi_diagram(nan, hullkit::delaunay(nan)).ok());
+    const hullkit::VoronoiDiagram other = hullkit::delaunay_voronoi_diagram(one, hullkit::delaunay(tri));
+    REQUIRE_FALSE(other.ok());
+    REQUIRE(other.error.find("not one of these 1 points") != std::string::npos);
 }
 
 TEST_CASE("verify_delaunay: rejects broken triangulations", "[verify]") {

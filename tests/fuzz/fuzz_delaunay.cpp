@@ -12,6 +12,8 @@
 //    (exact compare_distance, lowest index on ties);
 //  - delaunay_locate finds the lowest-indexed triangle holding each query (brute force), weights
 //    exactly 1 at a corner, input points nearest to themselves, the same on 1 and 3 threads;
+//  - delaunay_voronoi_diagram has a vertex per merge_cocircular polygon (the same corner sets), a
+//    cell per distinct point, and the same arrays on 1 and 3 threads;
 //  - an error is one line, with no triangulation.
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
 #include <algorithm>
@@ -97,6 +99,51 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (std::uint32_t k = first + 1; k < last; ++k) {  // starts at its lowest index
             if (polygons.polygon_vertices[k] <= polygons.polygon_vertices[first]) std::abort();
         }
+    }
+    // The whole Voronoi diagram: a vertex per Delaunay polygon (the corner sets of merge_cocircular's
+    // polygons, found here by incircle across edges), a nonempty cell per distinct point, ridge
+    // ends distinct points; the same arrays on 1 and 3 threads.
+    const hullkit::VoronoiDiagram vor = hullkit::delaunay_voronoi_diagram(points, tri, 1);
+    if (!vor.ok() || vor.point_cell.size() != n || vor.cell_offsets.size() != vor.cell_point.size() + 1) std::abort();
+    if (tri.dimension == 2) {
+        const std::size_t count = polygons.polygon_offsets.size() - 1;
+        if (vor.vertices.size() != 2 * count || vor.triangle_vertex.size() != tri.triangle_count()) std::abort();
+        std::vector<std::vector<std::uint32_t>> mine(count), theirs(count);
+        for (std::size_t e = 0; e < tri.triangles.size(); ++e) {
+            if (vor.triangle_vertex[e / 3] >= count) std::abort();
+            mine[vor.triangle_vertex[e / 3]].push_back(tri.triangles[e]);
+        }
+        for (std::size_t p = 0; p < count; ++p) {
+            std::sort(mine[p].begin(), mine[p].end());
+            mine[p].erase(std::unique(mine[p].begin(), mine[p].end()), mine[p].end());
+            theirs[p].assign(polygons.polygon_vertices.begin() + polygons.polygon_offsets[p],
+                             polygons.polygon_vertices.begin() + polygons.polygon_offsets[p + 1]);
+            std::sort(theirs[p].begin(), theirs[p].end());
+        }
+        std::sort(mine.begin(), mine.end());
+        std::sort(theirs.begin(), theirs.end());
+        if (mine != theirs) std::abort();
+    }
+    std::size_t cells = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto cell = static_cast<std::size_t>(vor.point_cell[i]);
+        if (cell >= vor.cell_point.size() || vor.point_cell[i] != vor.point_cell[tri.representative[i]]) std::abort();
+        if (tri.representative[i] != i) continue;
+        ++cells;
+        if (vor.cell_point[cell] != i || vor.cell_offsets[cell + 1] <= vor.cell_offsets[cell]) std::abort();
+    }
+    if (cells != vor.cell_point.size()) std::abort();
+    for (std::size_t r = 0; r < vor.ridge_points.size(); r += 2) {
+        const auto a = vor.ridge_points[r], b = vor.ridge_points[r + 1];
+        if (a >= b || a < 0 || static_cast<std::size_t>(b) >= n || tri.representative[a] != static_cast<std::uint32_t>(a)) std::abort();
+    }
+    const hullkit::VoronoiDiagram three = hullkit::delaunay_voronoi_diagram(points, tri, 3);
+    if (three.vertices.size() != vor.vertices.size() ||
+        (!vor.vertices.empty() &&
+         std::memcmp(three.vertices.data(), vor.vertices.data(), vor.vertices.size() * sizeof(double)) != 0) ||
+        three.cells != vor.cells || three.cell_offsets != vor.cell_offsets || three.ridge_points != vor.ridge_points ||
+        three.ridge_vertices != vor.ridge_vertices || three.point_cell != vor.point_cell) {
+        std::abort();
     }
     if (n <= 60) {
         hullkit::DelaunayOptions wrap;

@@ -213,6 +213,47 @@ struct VoronoiCells {
 VoronoiCells delaunay_voronoi(PointSpan2 points, const Delaunay& triangulation, double xmin,
                               double ymin, double xmax, double ymax);
 
+/// The centre of the circle through a, b, c (x y each) into out[0], out[1]: from the differences to
+/// a, scaled by a power of two to about 1 (no overflow or underflow in the squares of tiny or huge
+/// triangles; a grid's centres come out exactly); rounded; inf or NaN when the points are collinear.
+void circumcentre(const double* a, const double* b, const double* c, double* out);
+
+/// The whole Voronoi diagram of a triangulation's points, unbounded cells included, in
+/// scipy.spatial.Voronoi's layout (flat arrays). Which vertices, ridges and cells exist is decided
+/// exactly: two triangles that share an edge belong to one Delaunay polygon when their four corners
+/// are exactly cocircular (incircle), and each polygon is one Voronoi vertex, as Qhull merges them
+/// (a square grid has one vertex per square). Numbering depends only on the input:
+///  * vertex v is polygon number v, the polygons numbered in the order of their first triangle in
+///    `triangulation` (Hilbert order, so nearby vertices are near each other); its coordinates are the
+///    circumcentre (rounded) of the polygon's corners c0, c(m/3), c(2m/3), with c0 its lowest index
+///    and the corners in the triangles' orientation (a triangle's own three corners);
+///  * a ridge per Delaunay edge (between two polygons or on the hull), in the order of the
+///    half-edges that carry them (the lower of the two; hull half-edges where they are);
+///  * a cell per distinct point: its polygons' vertices counter-clockwise (y up), a bounded cell
+///    from its lowest vertex, an unbounded one (a hull point's) from the ray after its hull edge
+///    that comes in, with -1 (the vertex at infinity) last; the cells numbered in the order of
+///    their points' walks (along the triangles, so nearby cells are near each other), each
+///    point's cell in `point_cell` (a repeated point: its representative's). Collinear points: a
+///    ridge between each two neighbours along the line, with no vertex ({-1, -1}), and each cell
+///    {-1}; one distinct point: one cell {-1}.
+/// `threads` as elsewhere (0: every hardware thread); the arrays are the same for every count.
+/// Memory: the result takes about 140 bytes per point (two vertices, three ridges and a cell of six
+/// or so vertices each), and making it about 50 more for a while.
+struct VoronoiDiagram {
+    std::vector<double> vertices;               ///< 2 per vertex: x, y
+    std::vector<std::uint32_t> triangle_vertex; ///< per triangle of the triangulation: its polygon's vertex
+    std::vector<std::int32_t> ridge_points;     ///< 2 per ridge: the Delaunay edge's ends, lower first
+    std::vector<std::int32_t> ridge_vertices;   ///< 2 per ridge: the vertex across and the vertex, or -1, v for a ray
+    std::vector<std::int32_t> cells;            ///< every cell's vertices, flat
+    std::vector<std::int64_t> cell_offsets;     ///< cell count + 1: cell c is cells[cell_offsets[c] ..< cell_offsets[c + 1]]
+    std::vector<std::uint32_t> cell_point;      ///< per cell: its point (a distinct one)
+    std::vector<std::int32_t> point_cell;       ///< per input point: its cell (-1 only for no points)
+    std::vector<double> areas;                  ///< per cell: its area if bounded, +inf if not
+    std::string error;                          ///< empty on success
+    bool ok() const { return error.empty(); }
+};
+VoronoiDiagram delaunay_voronoi_diagram(PointSpan2 points, const Delaunay& triangulation, unsigned threads = 0);
+
 /// An exact check that `triangles` (triangle_count index triples) is a Delaunay triangulation of
 /// the distinct points of `points`: indices in range, every triangle clockwise (y up) and not
 /// degenerate, each undirected edge in at most two triangles with opposite directions, the
