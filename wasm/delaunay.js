@@ -1,4 +1,4 @@
-// hullkit.delaunay, find, locate and voronoi: the JS side of native/include/hullkit/delaunay.hpp.
+// hullkit.delaunay, find, locate, voronoi and voronoiDiagram: the JS side of native/include/hullkit/delaunay.hpp.
 // Points go in as a Float64Array x0 y0 x1 y1 ...; every result array is a fresh typed array the
 // caller owns (copied out of the WebAssembly heap), laid out as delaunator's. The queries take the
 // triangulation back: its arrays are checked and copied into the heap, and the core answers from
@@ -172,6 +172,29 @@ export function delaunayVoronoi(core, xy, triangulation, bounds) {
     return { cellOffsets: cells.cellOffsetsView().slice(), cellXY: cells.cellXYView().slice() };
   } finally {
     cells.delete();
+  }
+}
+
+/** The whole Voronoi diagram, unclipped, in scipy's layout (see hullkit.d.ts). */
+export function delaunayVoronoiDiagram(core, xy, triangulation) {
+  const where = 'voronoiDiagram';
+  const diagram = withTriangulationInHeap(core, toFloat64(xy, where, 2), triangulation, where, (...heap) =>
+    core.delaunayVoronoiDiagramFromHeap(...heap));
+  try {
+    if (!diagram.ok()) throw new HullkitError(`${where}: ${diagram.error()}`);
+    return {
+      vertices: diagram.verticesView().slice(),
+      triangleVertex: diagram.triangleVertexView().slice(),
+      ridgePoints: diagram.ridgePointsView().slice(),
+      ridgeVertices: diagram.ridgeVerticesView().slice(),
+      cells: diagram.cellsView().slice(),
+      cellOffsets: diagram.cellOffsetsView().slice(),
+      cellPoint: diagram.cellPointView().slice(),
+      pointCell: diagram.pointCellView().slice(),
+      areas: diagram.areasView().slice(),
+    };
+  } finally {
+    diagram.delete();
   }
 }
 

@@ -1,10 +1,11 @@
 // embind registrations for Delaunay triangulation and its queries (nearest point, point location,
-// Voronoi cells): the friendly API lives in delaunay.js. No geometry here.
+// Voronoi cells and the whole diagram): the friendly API lives in delaunay.js. No geometry here.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "embind_views.hpp"
 #include "hullkit/delaunay.hpp"
@@ -66,6 +67,24 @@ hullkit::VoronoiCells voronoi_from_heap(std::uintptr_t xy, std::uint32_t count, 
     return hullkit::delaunay_voronoi(hullkit::PointSpan2(doubles_at(xy), count), triangulation, xmin, ymin, xmax, ymax);
 }
 
+/// The whole diagram (delaunay_voronoi_diagram), with its cell offsets as 32-bit numbers (a
+/// wasm heap holds fewer than 2^32 bytes) for a Uint32Array.
+struct VoronoiDiagramJs {
+    hullkit::VoronoiDiagram diagram;
+    std::vector<std::uint32_t> offsets;
+};
+
+VoronoiDiagramJs voronoi_diagram_from_heap(std::uintptr_t xy, std::uint32_t count, int dimension, std::uintptr_t triangles,
+                                           std::uint32_t corner_count, std::uintptr_t halfedges, std::uintptr_t hull,
+                                           std::uint32_t hull_count, std::uintptr_t representative) {
+    const hullkit::Delaunay triangulation = triangulation_from_heap(count, dimension, triangles, corner_count, halfedges,
+                                                                    hull, hull_count, representative);
+    VoronoiDiagramJs out;
+    out.diagram = hullkit::delaunay_voronoi_diagram(hullkit::PointSpan2(doubles_at(xy), count), triangulation, 1);
+    out.offsets.assign(out.diagram.cell_offsets.begin(), out.diagram.cell_offsets.end());
+    return out;
+}
+
 /// Point location (delaunay_locate) for `query_count` x y pairs in a malloc'ed block at `queries`;
 /// the triangulation as find's. The flags were checked by the JS layer.
 hullkit::DelaunayQueries locate_from_heap(std::uintptr_t xy, std::uint32_t count, int dimension, std::uintptr_t triangles,
@@ -99,6 +118,17 @@ val triangle_view(const hullkit::DelaunayQueries& q) { return view_of(q.triangle
 val barycentric_view(const hullkit::DelaunayQueries& q) { return view_of(q.barycentric); }
 val nearest_view(const hullkit::DelaunayQueries& q) { return view_of(q.nearest); }
 double error_query(const hullkit::DelaunayQueries& q) { return static_cast<double>(q.error_query); }
+bool diagram_ok(const VoronoiDiagramJs& v) { return v.diagram.ok(); }
+std::string diagram_error(const VoronoiDiagramJs& v) { return v.diagram.error; }
+val diagram_vertices_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.vertices); }
+val diagram_triangle_vertex_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.triangle_vertex); }
+val diagram_ridge_points_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.ridge_points); }
+val diagram_ridge_vertices_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.ridge_vertices); }
+val diagram_cells_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.cells); }
+val diagram_cell_offsets_view(const VoronoiDiagramJs& v) { return view_of(v.offsets); }
+val diagram_cell_point_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.cell_point); }
+val diagram_point_cell_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.point_cell); }
+val diagram_areas_view(const VoronoiDiagramJs& v) { return view_of(v.diagram.areas); }
 
 // The recorded gift wrap on the lifted points (class GiftwrapTrace is registered in bindings.cpp).
 hullkit::GiftwrapTrace delaunay_giftwrap_trace_from_heap(std::uintptr_t xy, std::uint32_t count) {
@@ -134,4 +164,17 @@ EMSCRIPTEN_BINDINGS(hullkit_delaunay) {
         .function("nearestView", &nearest_view);
     emscripten::function("delaunayLocateFromHeap", &locate_from_heap);
     emscripten::function("delaunayVoronoiFromHeap", &voronoi_from_heap);
+    emscripten::class_<VoronoiDiagramJs>("VoronoiDiagram")
+        .function("ok", &diagram_ok)
+        .function("error", &diagram_error)
+        .function("verticesView", &diagram_vertices_view)
+        .function("triangleVertexView", &diagram_triangle_vertex_view)
+        .function("ridgePointsView", &diagram_ridge_points_view)
+        .function("ridgeVerticesView", &diagram_ridge_vertices_view)
+        .function("cellsView", &diagram_cells_view)
+        .function("cellOffsetsView", &diagram_cell_offsets_view)
+        .function("cellPointView", &diagram_cell_point_view)
+        .function("pointCellView", &diagram_point_cell_view)
+        .function("areasView", &diagram_areas_view);
+    emscripten::function("delaunayVoronoiDiagramFromHeap", &voronoi_diagram_from_heap);
 }

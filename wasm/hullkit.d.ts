@@ -319,6 +319,22 @@ export interface Hullkit {
    *   ymin < ymax, or a triangulation whose arrays do not fit `xy`.
    */
   voronoi(xy: Points2, triangulation: DelaunayTriangulation, bounds: ArrayLike<number>): VoronoiCells;
+  /**
+   * The whole Voronoi diagram of the points, unbounded cells included, as scipy.spatial.Voronoi
+   * lays it out: a vertex per Delaunay polygon (triangles whose corners are exactly cocircular
+   * share one: a square grid has one per square), a ridge per Delaunay edge, a cell per distinct
+   * point with its area. Which vertices, ridges and cells exist is decided exactly; coordinates
+   * and areas are rounded.
+   *
+   * @example
+   * const xy = [0, 0, 1, 0, 0, 1, 1, 1, 0.5, 2];
+   * const v = hullkit.voronoiDiagram(xy, hullkit.delaunay(xy));
+   * // v.vertices: [0.5, 0.5, 0.5, 1.375]: the unit square's centre and one more
+   * // v.cells.subarray(v.cellOffsets[v.pointCell[0]], v.cellOffsets[v.pointCell[0] + 1]): [0, -1]
+   *
+   * @throws {HullkitError} for a triangulation whose arrays do not fit `xy`.
+   */
+  voronoiDiagram(xy: Points2, triangulation: DelaunayTriangulation): VoronoiDiagram;
   /** The algorithm names `delaunay` accepts, the default first. */
   readonly delaunayAlgorithms: readonly DelaunayAlgorithm[];
   /** The fill rules triangulatePolygon accepts, the default first: ['evenodd', 'nonzero']. */
@@ -702,6 +718,35 @@ export interface VoronoiCells {
   cellOffsets: Uint32Array;
   /** The cells' corners, x y pairs. */
   cellXY: Float64Array;
+}
+
+/** The result of {@link Hullkit.voronoiDiagram}. */
+export interface VoronoiDiagram {
+  /**
+   * x y per Voronoi vertex: each Delaunay polygon's circumcentre (rounded), numbered in the order
+   * of the polygons' first triangles.
+   */
+  vertices: Float64Array;
+  /** Per triangle of the triangulation: its polygon's vertex. */
+  triangleVertex: Uint32Array;
+  /** 2 per ridge: the points p < q it separates (a Delaunay edge between two polygons or on the hull). */
+  ridgePoints: Int32Array;
+  /** 2 per ridge: the vertex across and the vertex, or -1 (infinity) and the vertex for a ray. */
+  ridgeVertices: Int32Array;
+  /**
+   * Every cell's vertices: cell c is `cells.subarray(cellOffsets[c], cellOffsets[c + 1])`,
+   * counter-clockwise (y up); a bounded cell from its lowest vertex, an unbounded one (a hull
+   * point's) with -1 last. Collinear points: each cell is [-1] and each ridge [-1, -1].
+   */
+  cells: Int32Array;
+  /** One more than there are cells (one per distinct point). */
+  cellOffsets: Uint32Array;
+  /** Per cell: its point. */
+  cellPoint: Uint32Array;
+  /** Per input point: its cell (a duplicate: its representative's). */
+  pointCell: Int32Array;
+  /** Per cell: its area, `Infinity` when unbounded. */
+  areas: Float64Array;
 }
 
 export interface Delaunay3Options {

@@ -2,7 +2,7 @@
 // typed arrays and return typed arrays the caller owns. Runs in Node (>= 20), browsers and workers.
 import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
-import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
+import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayVoronoiDiagram, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
 import { constrainedDelaunay, triangulatePolygon, FILL_RULES } from './constrained.js';
 import { checkRoute, RouteChecker } from './route.js';
@@ -44,6 +44,7 @@ export default async function createHullkit() {
     find: (xy, triangulation, x, y, start) => delaunayFind(core, xy, triangulation, x, y, start),
     locate: (xy, triangulation, queries, options) => delaunayLocate(core, xy, triangulation, queries, options),
     voronoi: (xy, triangulation, bounds) => delaunayVoronoi(core, xy, triangulation, bounds),
+    voronoiDiagram: (xy, triangulation) => delaunayVoronoiDiagram(core, xy, triangulation),
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
     triangulatePolygon: (coords, holeIndices, options) => triangulatePolygon(core, coords, holeIndices, options),
     constrainedDelaunay: (coords, edges, options) => constrainedDelaunay(core, coords, edges, options),

@@ -386,6 +386,67 @@ test('voronoi: bad bounds throw', () => {
   assert.throws(() => hullkit.voronoi(xy, t), TypeError);
 });
 
+test('voronoiDiagram: a vertex per cocircular group, each bounded cell the clipped cell, open cells on the hull', () => {
+  const xy = uniform(300, 23);
+  for (let j = 0; j < 6; j++) for (let i = 0; i < 6; i++) xy.set([2 + i / 4, j / 4], 2 * (240 + 6 * j + i)); // a grid
+  xy.set([xy[2], xy[3]], 2 * 299); // point 299 repeats point 1
+  const t = hullkit.delaunay(xy);
+  const v = hullkit.voronoiDiagram(xy, t);
+  for (const [name, type] of [['vertices', Float64Array], ['triangleVertex', Uint32Array], ['ridgePoints', Int32Array],
+    ['ridgeVertices', Int32Array], ['cells', Int32Array], ['cellOffsets', Uint32Array], ['cellPoint', Uint32Array],
+    ['pointCell', Int32Array], ['areas', Float64Array]]) assert.ok(v[name] instanceof type, name);
+  assert.equal(v.pointCell[299], v.pointCell[1]);
+  assert.equal(v.cellPoint.length, 299);
+  // The grid's 25 squares are 25 vertices, each at its square's centre.
+  const centres = new Set();
+  for (let k = 0; k < v.vertices.length; k += 2) {
+    const x = (v.vertices[k] - 2) * 4, y = v.vertices[k + 1] * 4;
+    if (x > 0 && x < 5 && y > 0 && y < 5 && x % 1 === 0.5 && y % 1 === 0.5) centres.add(`${x},${y}`);
+  }
+  assert.equal(centres.size, 25);
+  assert.equal(v.triangleVertex.length, t.triangles.length / 3);
+  // Against the cells clipped to a rectangle holding every vertex.
+  let [xmin, ymin, xmax, ymax] = [Infinity, Infinity, -Infinity, -Infinity];
+  for (let k = 0; k < v.vertices.length; k += 2) {
+    xmin = Math.min(xmin, v.vertices[k]); xmax = Math.max(xmax, v.vertices[k]);
+    ymin = Math.min(ymin, v.vertices[k + 1]); ymax = Math.max(ymax, v.vertices[k + 1]);
+  }
+  const clipped = hullkit.voronoi(xy, t, [xmin - 5, ymin - 5, xmax + 5, ymax + 5]);
+  const onHull = new Set(t.hull);
+  for (let c = 0; c < v.cellPoint.length; c++) {
+    const s = v.cellPoint[c];
+    const cell = v.cells.subarray(v.cellOffsets[c], v.cellOffsets[c + 1]);
+    assert.equal(v.pointCell[s], c);
+    assert.equal(cell[cell.length - 1] === -1, onHull.has(s), `cell of ${s}: open exactly on the hull`);
+    if (onHull.has(s)) {
+      assert.equal(v.areas[c], Infinity);
+      continue;
+    }
+    assert.equal(cell[0], Math.min(...cell), 'a bounded cell starts at its lowest vertex');
+    const corners = Float64Array.from(Array.from(cell).flatMap((k) => [v.vertices[2 * k], v.vertices[2 * k + 1]]));
+    const reference = clipped.cellXY.subarray(2 * clipped.cellOffsets[s], 2 * clipped.cellOffsets[s + 1]);
+    assert.ok(Math.abs(polygonArea(corners) - v.areas[c]) <= 1e-12 * (1 + v.areas[c]));
+    assert.ok(Math.abs(polygonArea(reference) - v.areas[c]) <= 1e-9 * (1 + v.areas[c]), `cell of ${s}`);
+  }
+  // Ridges: one per Delaunay edge between two groups: the edges less the grid squares' diagonals.
+  const edges = new Set();
+  for (let e = 0; e < t.triangles.length; e++) {
+    const a = t.triangles[e], b = t.triangles[e % 3 === 2 ? e - 2 : e + 1];
+    edges.add(`${Math.min(a, b)},${Math.max(a, b)}`);
+  }
+  assert.equal(v.ridgePoints.length / 2, edges.size - 25);
+  for (let r = 0; r < v.ridgePoints.length; r += 2) assert.ok(edges.has(`${v.ridgePoints[r]},${v.ridgePoints[r + 1]}`));
+});
+
+test('voronoiDiagram: collinear points, a triangulation of other points', () => {
+  const line = [0, 0, 2, 0, 1, 0];
+  const l = hullkit.voronoiDiagram(line, hullkit.delaunay(line));
+  assert.deepEqual(Array.from(l.cells), [-1, -1, -1]);
+  assert.deepEqual(Array.from(l.ridgePoints), [0, 2, 1, 2]);
+  assert.deepEqual(Array.from(l.ridgeVertices), [-1, -1, -1, -1]);
+  assert.throws(() => hullkit.voronoiDiagram([0, 0, 1, 0, 0, 1, 1, 1], hullkit.delaunay(line)), HullkitError);
+});
+
 test('delaunay: arrays of points as Delaunator.from takes them ([x, y]) and {x, y} objects (three.js Vector2)', () => {
   const xy = uniform(500, 31);
   const expected = hullkit.delaunay(xy);

@@ -6,7 +6,7 @@ import createHullkit, { HullkitError } from 'hullkit';
 import type {
   ConstrainedResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions,
   LocateResult, MeshData, PolygonOptions,
-  RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells,
+  RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells, VoronoiDiagram,
 } from 'hullkit';
 
 function check(condition: boolean, what: string): void {
@@ -87,6 +87,8 @@ const nearest: number = hullkit.find(xy, delaunay, 0.9, 0.9);
 check(nearest === 3, 'find');
 const cells: VoronoiCells = hullkit.voronoi(xy, delaunay, [-1, -1, 2, 2]);
 check(cells.cellOffsets.length === xy.length / 2 + 1, 'voronoi');
+const diagram: VoronoiDiagram = hullkit.voronoiDiagram(xy, delaunay);
+check(diagram.cellPoint.length === 5 && diagram.pointCell instanceof Int32Array && diagram.areas.some((a) => a === Infinity), 'voronoiDiagram');
 check(hullkit.delaunay(xy, { algorithm: 'giftwrap', mergeCocircular: true }).polygonOffsets !== undefined, 'polygons');
 
 // constrained triangulation: earcut's arguments, GeoJSON, graphs
