@@ -26,7 +26,7 @@ const char* const kUsage =
     R"(Usage: hullkit triangulate [INPUT|-] [-o FILE] [--format FORMAT]
                            [--fill evenodd|nonzero] [--convex] [--stats]
                            [--min-angle DEG] [--max-area A] [--conforming]
-                           [--max-steiner N]
+                           [--max-steiner N] [--region-attributes]
 
 Triangulates polygons with holes, or a planar straight-line graph, exactly: a
 constrained Delaunay triangulation in which every ring edge or segment is an
@@ -46,7 +46,8 @@ Input (the format from the file name, else the content):
                   the exterior (reached from the hull without crossing a
                   segment) and the region around each hole point are removed;
                   with --convex the exterior is kept (Triangle's -c); its
-                  regions' area bounds apply (attributes are not used)
+                  regions' area bounds apply, and their attributes with
+                  --region-attributes
 Rings are filled by --fill: evenodd (default; holes whatever their orientation)
 or nonzero (GeoJSON's and SVG's nonzero rule: holes wound the other way).
 
@@ -75,6 +76,11 @@ Options:
                       no area bound)
   --conforming        every triangle Delaunay: segments split as needed
                       (Triangle's -D)
+  --region-attributes .poly input: give each triangle the attribute of the
+                      region holding it, 0 outside every region (Triangle's
+                      -A): an attribute column in the .ele file, "attributes"
+                      (one per triangle) in JSON; the last of several region
+                      points in one region wins
   --max-steiner N     a whole number from 0 to 4000000000: fail once
                       refinement has added N points (Triangle's -S; default
                       0: no cap)
@@ -119,6 +125,7 @@ struct Input {
     std::vector<std::size_t> segment_line;
     std::vector<double> holes;
     std::vector<hullkit::RegionSeed> regions;  ///< a .poly's regional area bounds
+    std::vector<double> region_attributes;     ///< and their attributes
 };
 
 /// The numbers on a line, before any '#'; commas count as spaces. False if a word is not a number.
@@ -238,8 +245,7 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
         in->holes.push_back(v[1]), in->holes.push_back(v[2]);
     }
     if (!more()) return;
-    // Regions: "index x y attribute max_area" (the attribute is read and not used; a max_area <= 0
-    // is no bound, as Triangle reads it).
+    // Regions: "index x y attribute max_area" (a max_area <= 0 is no bound, as Triangle reads it).
     line = next("region header");
     const std::uint64_t regions = whole(v[0], line, "the region count");
     for (std::uint64_t k = 0; k < regions; ++k) {
@@ -247,6 +253,7 @@ void read_poly(const std::string& text, const std::string& source, Input* in) {
         if (v.size() < 4) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y attribute [max_area]\"");
         const double area = v.size() >= 5 && v[4] > 0 ? v[4] : 0.0;
         in->regions.push_back({v[1], v[2], area});
+        in->region_attributes.push_back(v[3]);
     }
     for (std::size_t j = i; j < lines.size(); ++j) {
         if (numbers_of(lines[j], &v) && !v.empty())
@@ -315,7 +322,7 @@ struct Args {
     std::string input = "-", output;
     Format format = Format::Off;
     hullkit::FillRule fill = hullkit::FillRule::EvenOdd;
-    bool convex = false, stats = false;
+    bool convex = false, stats = false, region_attributes = false;
     hullkit::QualityOptions quality;
 };
 
@@ -335,6 +342,7 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     app.add_option("--min-angle", args->quality.min_angle)->multi_option_policy(last);
     app.add_option("--max-area", args->quality.max_area)->multi_option_policy(last);
     app.add_flag("--conforming", args->quality.conforming);
+    app.add_flag("--region-attributes", args->region_attributes);
     unsigned max_steiner = 0;
     add_whole_number_option(app, "--max-steiner", &max_steiner, 0, 4000000000u);
     parse_or_throw(app, argv, "triangulate");
@@ -391,7 +399,16 @@ std::string write_obj(const hullkit::ConstrainedDelaunay& d) {
     return out;
 }
 
-std::string write_json(const hullkit::ConstrainedDelaunay& d) {
+/// Per triangle, the attribute of its region (0 outside every region): --region-attributes.
+std::vector<double> attributes_of(const Input& in, const hullkit::ConstrainedDelaunay& d) {
+    std::vector<double> out(d.triangle_count(), 0.0);
+    for (std::size_t t = 0; t < d.triangle_region.size() && t < out.size(); ++t) {
+        if (d.triangle_region[t] >= 0) out[t] = in.region_attributes[static_cast<std::size_t>(d.triangle_region[t])];
+    }
+    return out;
+}
+
+std::string write_json(const hullkit::ConstrainedDelaunay& d, const std::vector<double>* attributes) {
     std::string out = "{\"dimension\":" + std::to_string(d.dimension) + ",\"points\":[";
     for (std::size_t i = 0; i < d.coords.size(); i += 2) {
         if (i) out += ',';
@@ -407,6 +424,10 @@ std::string write_json(const hullkit::ConstrainedDelaunay& d) {
     for (std::size_t e = 0; e < d.halfedges.size(); ++e) out += (e ? "," : "") + std::to_string(d.halfedges[e]);
     out += "],\"constrained\":[";
     for (std::size_t e = 0; e < d.constrained.size(); ++e) out += (e ? "," : "") + std::to_string(d.constrained[e]);
+    if (attributes) {
+        out += "],\"attributes\":[";
+        for (std::size_t t = 0; t < attributes->size(); ++t) out += (t ? "," : "") + hullkit::format_json_number((*attributes)[t]);
+    }
     out += "],\"added\":" + std::to_string(d.added_count()) + ",\"duplicates\":[";
     bool first = true;
     for (std::size_t i = 0; i < d.representative.size(); ++i) {
@@ -454,16 +475,19 @@ std::string write_svg(const hullkit::ConstrainedDelaunay& d) {
 
 /// Triangle's .node (vertices numbered from 1) and .ele (triangles counter-clockwise, as Triangle
 /// writes them: y up).
-void write_node_ele(const std::string& output, const hullkit::ConstrainedDelaunay& d) {
+void write_node_ele(const std::string& output, const hullkit::ConstrainedDelaunay& d, const std::vector<double>* attributes) {
     const std::string ext = extension_of(output);
     const std::string base = ext == "node" || ext == "ele" ? output.substr(0, output.size() - ext.size() - 1) : output;
     std::string node = std::to_string(d.coords.size() / 2) + " 2 0 0\n";
     for (std::size_t i = 0; i < d.coords.size(); i += 2)
         node += std::to_string(i / 2 + 1) + ' ' + hullkit::format_double(d.coords[i]) + ' ' + hullkit::format_double(d.coords[i + 1]) + '\n';
-    std::string ele = std::to_string(d.triangle_count()) + " 3 0\n";
-    for (std::size_t t = 0; t < d.triangle_count(); ++t)
+    std::string ele = std::to_string(d.triangle_count()) + (attributes ? " 3 1\n" : " 3 0\n");
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
         ele += std::to_string(t + 1) + ' ' + std::to_string(d.triangles[3 * t] + 1) + ' ' + std::to_string(d.triangles[3 * t + 2] + 1) + ' ' +
-               std::to_string(d.triangles[3 * t + 1] + 1) + '\n';
+               std::to_string(d.triangles[3 * t + 1] + 1);
+        if (attributes) ele += ' ' + hullkit::format_double((*attributes)[t]);
+        ele += '\n';
+    }
     write_output(base + ".node", node);
     write_output(base + ".ele", ele);
 }
@@ -493,6 +517,10 @@ int run_triangulate(const std::vector<std::string>& argv) {
     if (!parse_args(argv, &args)) return kExitOk;
     const Input in = read_input_file(args.input);
     const std::string source = args.input == "-" ? "<stdin>" : args.input;
+    if (args.region_attributes && !in.poly)
+        throw UsageError("--region-attributes needs a Triangle .poly input (its regions carry the attributes); " + source + " is not one");
+    if (args.region_attributes && args.format != Format::Json && args.format != Format::Node)
+        throw UsageError("--region-attributes writes the attributes into .ele (--format node) or JSON output; OFF, OBJ and SVG have no place for them");
     const auto started = std::chrono::steady_clock::now();
     const hullkit::PointSpan2 points(in.xy);
     hullkit::ConstrainedDelaunay d;
@@ -510,13 +538,15 @@ int run_triangulate(const std::vector<std::string>& argv) {
         d = hullkit::triangulate_polygon(points, in.ring_starts.data(), in.ring_starts.size(), options);
     }
     if (!d.ok()) throw UsageError(located(source, in, d));
+    const std::vector<double> attributes = args.region_attributes ? attributes_of(in, d) : std::vector<double>();
+    const std::vector<double>* with = args.region_attributes ? &attributes : nullptr;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     switch (args.format) {
         case Format::Off: write_output(args.output, write_off(d)); break;
         case Format::Obj: write_output(args.output, write_obj(d)); break;
-        case Format::Json: write_output(args.output, write_json(d)); break;
+        case Format::Json: write_output(args.output, write_json(d, with)); break;
         case Format::Svg: write_output(args.output, write_svg(d)); break;
-        case Format::Node: write_node_ele(args.output, d); break;
+        case Format::Node: write_node_ele(args.output, d, with); break;
     }
     if (args.stats) {
         const std::size_t segments = in.poly ? in.segments.size() / 2 : in.xy.size() / 2;

@@ -79,7 +79,15 @@ def constrained(
     max_steiner_points: int,
     /,
 ) -> tuple[
-    NDArray[np.float64], NDArray[np.uint32], NDArray[np.int32], NDArray[np.uint8], NDArray[np.uint32], int, int, int
+    NDArray[np.float64],
+    NDArray[np.uint32],
+    NDArray[np.int32],
+    NDArray[np.uint8],
+    NDArray[np.uint32],
+    int,
+    int,
+    int,
+    NDArray[np.int32],
 ]: ...
 def furthest_delaunay(
     points: NDArray[np.float64], hull: NDArray[np.uint32], /

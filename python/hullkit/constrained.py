@@ -11,10 +11,11 @@ __all__ = ["triangulate", "triangulate_polygon"]
 
 # Triangle's switches hullkit honours, and those it does not have yet (with what they are).
 _SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose",
-             "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit"}
+             "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit",
+             "A": "regional attributes"}
 _NUMBERED = ("q", "a", "S")  # switches that may carry a number
 _NOT_YET = {
-    "u": "user refinement test", "r": "refining a mesh", "Y": "no Steiner points on the boundary", "A": "regional attributes",
+    "u": "user refinement test", "r": "refining a mesh", "Y": "no Steiner points on the boundary",
     "o": "second-order triangles", "i": "incremental insertion", "F": "Fortune's sweep", "l": "vertical cuts only", "s": "segment splitting",
     "C": "consistency checks", "j": "jettisoning vertices", "B": "no boundary markers", "P": "no .poly output", "N": "no .node output",
     "E": "no .ele output", "I": "no iteration numbers", "O": "ignoring holes", "X": "no exact arithmetic",
@@ -70,7 +71,7 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=
     if fill not in ("evenodd", "nonzero"):
         raise HullkitError(f"fill must be 'evenodd' or 'nonzero', got {fill!r}")
     quality = _quality(min_angle, max_area, conforming, max_steiner_points)
-    coords_out, triangles, halfedges, constrained, representative, crossings, steiner, unrefined = _run(
+    coords_out, triangles, halfedges, constrained, representative, crossings, steiner, unrefined, _ = _run(
         points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _NO_POINTS, None, quality)
     return {"coords": coords_out, "triangles": triangles, "halfedges": halfedges, "constrained": constrained,
             "representative": representative, "crossing_count": crossings, "steiner_count": steiner,
@@ -119,7 +120,9 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     ``V`` are accepted (indices are always zero-based). Without ``p`` the vertices' Delaunay
     triangulation. Quality meshes: ``q`` (a minimum angle, default 20 degrees: ``q30``), ``a0.5``
     (a maximum area), bare ``a`` (each region's area from ``tri['regions']``, rows x y attribute
-    max_area), ``D`` (conforming Delaunay), ``S100`` (at most 100 added points, else an error). The
+    max_area), ``D`` (conforming Delaunay), ``S100`` (at most 100 added points, else an error), ``A``
+    (``triangle_attributes`` (t, 1): the attribute of the region holding each triangle, the last
+    region given where several seeds share one, 0 outside every region). The
     keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``, ``max_steiner_points`` do the
     same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
     ``triangles`` (t, 3) counter-clockwise as Triangle's, ``segments`` (the edges on segments, each
@@ -160,13 +163,18 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     else:
         convex = True  # Triangle without p: the Delaunay triangulation of the vertices
     regions = None
+    rows = _np.zeros((0, 4))
+    if "A" in switches and "p" not in switches:
+        raise HullkitError("switch 'A' (regional attributes) needs 'p': the regions are bounded by tri['segments']")
     if "regions" in tri and "p" in switches:
         rows = _np.ascontiguousarray(tri["regions"], dtype=_np.float64)
         if rows.ndim != 2 or rows.shape[1] != 4:
             raise HullkitError(f"tri['regions'] must have shape (k, 4): x, y, attribute, max_area; got {rows.shape}")
+        if not _np.isfinite(rows[:, 2]).all():
+            raise HullkitError(f"tri['regions'] row {int(_np.flatnonzero(~_np.isfinite(rows[:, 2]))[0])}: the attribute is not finite")
         # Without a bare 'a' the regions' areas are not bounds (as Triangle reads them).
         regions = _np.ascontiguousarray(rows[:, [0, 1, 3]] if "a" in switches else _np.c_[rows[:, :2], _np.zeros(len(rows))])
-    vertices, triangles, halfedges, constrained, _, _, _, _ = _run(
+    vertices, triangles, halfedges, constrained, _, _, _, _, region = _run(
         points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality)
     out = {"vertices": vertices, "triangles": _np.ascontiguousarray(triangles[:, [0, 2, 1]])}
     flat = triangles.ravel()
@@ -183,4 +191,10 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
         out["holes"] = holes
     if "p" in switches and "regions" in tri:
         out["regions"] = _np.asarray(tri["regions"], dtype=_np.float64)
+    if "A" in switches:  # each triangle's region's attribute, 0 outside every region (Triangle's)
+        attributes = _np.zeros(len(triangles))
+        if len(region):
+            inside = region >= 0
+            attributes[inside] = rows[region[inside], 2]
+        out["triangle_attributes"] = attributes.reshape(-1, 1)
     return out

@@ -246,7 +246,8 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// the regions around `holes` (Triangle's .poly meaning), `regions` (k, 3: x, y, max_area) giving
 /// regional area bounds. `quality` is (min_angle, max_area, conforming, max_steiner_points): Delaunay
 /// refinement. Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
-/// representative, crossing_count, steiner_count, unrefined_count).
+/// representative, crossing_count, steiner_count, unrefined_count, triangle_region (t,) int32: each
+/// triangle's region row, -1 for none; empty without regions).
 py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
                       py::object ring_starts, const std::string& fill, bool convex, const Points& holes,
                       const Points& regions, double min_angle, double max_area, bool conforming,
@@ -283,7 +284,7 @@ py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py:
     const std::size_t crossings = d.crossing_count, steiner = d.steiner_count, unrefined = d.unrefined_count;
     return py::make_tuple(owned_points(std::move(d.coords), 2), owned(std::move(d.triangles), {triangles, 3}),
                           owned(std::move(d.halfedges)), owned(std::move(d.constrained)), owned(std::move(d.representative)),
-                          crossings, steiner, unrefined);
+                          crossings, steiner, unrefined, owned(std::move(d.triangle_region)));
 }
 
 py::tuple furthest_delaunay(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& hull) {

@@ -194,3 +194,54 @@ TEST_CASE("hullkit triangulate: quality meshes (--min-angle, --max-area, --confo
     const nlohmann::json conforming = json_of(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json", "--conforming", "--min-angle", "20"}));
     CHECK(checked_area(conforming) == 12);
 }
+
+TEST_CASE("hullkit triangulate: --region-attributes (Triangle's -A) in JSON and .ele, through refinement", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    // The square [0, 4]^2 split by the segment x = 2; region points (1, 1) attribute 5 and (3, 1)
+    // attribute 9 with an area bound, so the right half is refined.
+    write_text(dir.file("halves.poly"),
+               "6 2 0 0\n1 0 0\n2 2 0\n3 4 0\n4 4 4\n5 2 4\n6 0 4\n"
+               "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n2\n1 1 1 5\n2 3 1 9 0.25\n");
+    for (const std::vector<std::string>& extra : {std::vector<std::string>{}, std::vector<std::string>{"--min-angle", "25"}}) {
+        std::vector<std::string> args = {"triangulate", dir.file("halves.poly"), "--format", "json", "--region-attributes"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const nlohmann::json j = json_of(run_cli(dir, args));
+        CHECK(checked_area(j) == 16);
+        REQUIRE(j["attributes"].size() == j["triangles"].size());
+        std::size_t left = 0, right = 0;
+        for (std::size_t t = 0; t < j["triangles"].size(); ++t) {
+            double cx = 0;
+            for (int k = 0; k < 3; ++k) cx += j["points"][j["triangles"][t][k].get<std::size_t>()][0].get<double>() / 3;
+            const double attribute = j["attributes"][t].get<double>();
+            CHECK(attribute == (cx < 2 ? 5.0 : 9.0));
+            (cx < 2 ? left : right) += 1;
+        }
+        CHECK(right > left);  // the area bound applies on the right only
+    }
+    // Triangle's .ele: one attribute column; no regions: zeros; a later seed in the same region wins.
+    write_text(dir.file("same.poly"),
+               "6 2 0 0\n1 0 0\n2 2 0\n3 4 0\n4 4 4\n5 2 4\n6 0 4\n"
+               "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n2\n1 3 1 9\n2 3.5 3 -2.5\n");
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("same.poly"), "-o", dir.file("same.node"), "--region-attributes"}).exit_code == 0);
+    std::istringstream ele(read_text(dir.file("same.ele")));
+    std::size_t count = 0, corners = 0, attributes = 0;
+    ele >> count >> corners >> attributes;
+    REQUIRE(attributes == 1);
+    std::size_t on_right = 0;
+    for (std::size_t t = 0; t < count; ++t) {
+        std::size_t index, a, b, c;
+        double attribute;
+        ele >> index >> a >> b >> c >> attribute;
+        CHECK((attribute == 0 || attribute == -2.5));
+        on_right += attribute == -2.5;
+    }
+    CHECK(on_right == 2);
+    // Errors: not a .poly; a format without a place for them.
+    write_text(dir.file("rings.txt"), kSquareWithHole);
+    const RunResult rings = run_cli(dir, {"triangulate", dir.file("rings.txt"), "--format", "json", "--region-attributes"});
+    CHECK(rings.exit_code == 2);
+    CHECK(rings.err.find("--region-attributes needs a Triangle .poly input") != std::string::npos);
+    const RunResult off = run_cli(dir, {"triangulate", dir.file("halves.poly"), "--region-attributes"});
+    CHECK(off.exit_code == 2);
+    CHECK(off.err.find("OFF, OBJ and SVG have no place") != std::string::npos);
+}

@@ -74,8 +74,10 @@ def test_triangulate_pslg_exterior_and_convex():
 
 
 def test_clear_errors():
-    with pytest.raises(hullkit.HullkitError, match="switch 'A' \\(regional attributes"):
-        hullkit.triangulate(SQUARE_WITH_HOLE, "pA")
+    with pytest.raises(hullkit.HullkitError, match="switch 'Y' \\(no Steiner points on the boundary"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pY")
+    with pytest.raises(hullkit.HullkitError, match="switch 'A' \\(regional attributes\\) needs 'p'"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "A")
     with pytest.raises(hullkit.HullkitError, match=r"tri\['regions'\] must have shape"):
         hullkit.triangulate({**SQUARE_WITH_HOLE, "regions": [[0.5, 0.5, 1]]}, "pa")
     with pytest.raises(hullkit.HullkitError, match="min_angle must be from 0 to 34"):
@@ -137,6 +139,26 @@ def test_quality_meshes_as_triangle_makes_them():
     left = pts[tris].mean(axis=1)[:, 0] < 2
     assert areas[left].max() <= 0.05 and areas[~left].max() <= 0.5 and areas[~left].max() > 0.05
     assert "regions" in mesh
+
+
+def test_regional_attributes_as_triangles_A_switch():
+    split = {
+        "vertices": [[0, 0], [2, 0], [4, 0], [4, 2], [2, 2], [0, 2]],
+        "segments": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+        "regions": [[1, 1, 7.5, 0.05], [3, 1, -1, 0], [3.5, 1.5, 2, 0]],  # the last two in one region: 2 wins
+    }
+    for opts in ("pA", "pAq30", "pAa"):
+        mesh = hullkit.triangulate(split, opts)
+        attributes = mesh["triangle_attributes"]
+        assert attributes.shape == (len(mesh["triangles"]), 1)
+        left = mesh["vertices"][mesh["triangles"]].mean(axis=1)[:, 0] < 2
+        assert (attributes[left, 0] == 7.5).all() and (attributes[~left, 0] == 2).all(), opts
+    # A region without a seed gets 0, as Triangle gives it; without 'A' no attributes.
+    one = hullkit.triangulate({**split, "regions": [[3, 1, 4, 0]]}, "pA")
+    left = one["vertices"][one["triangles"]].mean(axis=1)[:, 0] < 2
+    assert (one["triangle_attributes"][left] == 0).all() and (one["triangle_attributes"][~left] == 4).all()
+    assert (hullkit.triangulate({k: v for k, v in split.items() if k != "regions"}, "pA")["triangle_attributes"] == 0).all()
+    assert "triangle_attributes" not in hullkit.triangulate(split, "p")
 
 
 def test_triangulate_polygon_quality_keywords():

@@ -144,6 +144,11 @@ struct ConstrainedDelaunay {
     std::size_t steiner_count = 0;   ///< points added by refinement (QualityOptions), after the crossings'
     /// Returned triangles that still miss the quality bounds (small input angles, see QualityOptions).
     std::size_t unrefined_count = 0;
+    /// With ConstrainedOptions::regions: per triangle, the seed whose region holds it (the last of
+    /// several seeds in one region), -1 where no seed's region does; triangles added by refinement
+    /// are in the region of the triangle they split. Triangle's regional attributes (its -A switch)
+    /// are the seeds' attributes looked up here. Empty without regions.
+    std::vector<std::int32_t> triangle_region;
 
     std::string error;
     std::int64_t error_point = -1;

@@ -216,7 +216,8 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
         out.steiner_count = refiner.steiner_count;
         out.unrefined_count = refiner.unrefined_count;
     }
-    cdt.write(refiner.keep(), exponent, out);
+    const bool regions = !domain.polygon && domain.regions && !domain.regions->empty();
+    cdt.write(refiner.keep(), exponent, out, regions, Refiner::kDomain + 1);
     return out;
 }
 

@@ -116,8 +116,10 @@ public:
     }
 
     /// Writes the triangles whose `keep` flag is set (all finite ones when keep is empty), and
-    /// appends the added points to out.coords (which holds the input points).
-    void write(const std::vector<std::uint8_t>& keep, int exponent, ConstrainedDelaunay& out) const {
+    /// appends the added points to out.coords (which holds the input points). With `regions`, each
+    /// written triangle's region seed too (region ids first_seed + r; -1 below first_seed).
+    void write(const std::vector<std::uint8_t>& keep, int exponent, ConstrainedDelaunay& out, bool regions = false,
+               std::uint32_t first_seed = 0) const {
         const std::size_t t_count = vertex_.size() / 3;
         std::vector<std::int32_t> index(t_count, -1);
         std::int32_t kept = 0;
@@ -128,8 +130,14 @@ public:
         out.triangles.resize(3 * static_cast<std::size_t>(kept));
         out.halfedges.resize(out.triangles.size());
         out.constrained.resize(out.triangles.size());
+        if (regions) out.triangle_region.resize(static_cast<std::size_t>(kept));
         for (std::size_t t = 0; t < t_count; ++t) {
             if (index[t] < 0) continue;
+            if (regions) {
+                const std::uint32_t id = region_[t];
+                out.triangle_region[static_cast<std::size_t>(index[t])] =
+                    id >= first_seed ? static_cast<std::int32_t>(id - first_seed) : -1;
+            }
             const std::size_t base = 3 * static_cast<std::size_t>(index[t]);
             out.triangles[base] = vertex_[3 * t];
             out.triangles[base + 1] = vertex_[3 * t + 2];
