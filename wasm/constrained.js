@@ -7,13 +7,14 @@ import { HullkitError, checkOptions, copyIn, flatCoordinates, toUint32 } from '.
 
 /** The fill rules triangulatePolygon accepts, the default first. */
 export const FILL_RULES = ['evenodd', 'nonzero'];
-const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints'];
+const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints', 'keepSegments'];
+const KEEP_SEGMENTS = { none: 0, boundary: 1, all: 2 };
 const POLYGON_OPTIONS = ['dim', 'fill', ...QUALITY_OPTIONS];
 const GRAPH_OPTIONS = ['holes', 'removeExterior', ...QUALITY_OPTIONS];
 
 /** The refinement options checked (the core checks the ranges again and names them). */
 function qualityOf(options, where) {
-  const { minAngle = 0, maxArea = 0, conforming = false, maxSteinerPoints = 0 } = options;
+  const { minAngle = 0, maxArea = 0, conforming = false, maxSteinerPoints = 0, keepSegments = 'none' } = options;
   if (typeof minAngle !== 'number' || !(minAngle >= 0 && minAngle <= 34)) {
     throw new HullkitError(`${where}: minAngle must be a number of degrees from 0 to 34, got ${String(minAngle)}`);
   }
@@ -24,7 +25,10 @@ function qualityOf(options, where) {
   if (!Number.isSafeInteger(maxSteinerPoints) || maxSteinerPoints < 0) {
     throw new HullkitError(`${where}: maxSteinerPoints must be a whole number (0: no cap), got ${String(maxSteinerPoints)}`);
   }
-  return [minAngle, maxArea, conforming, maxSteinerPoints];
+  if (!Object.hasOwn(KEEP_SEGMENTS, keepSegments)) {
+    throw new HullkitError(`${where}: keepSegments must be 'none', 'boundary' or 'all', got ${String(keepSegments)}`);
+  }
+  return [minAngle, maxArea, conforming, maxSteinerPoints, KEEP_SEGMENTS[keepSegments]];
 }
 
 /** Copies the core's result out (or throws its error naming the point or segment) and frees it. */

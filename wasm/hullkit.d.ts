@@ -636,6 +636,13 @@ export interface QualityOptions {
   conforming?: boolean;
   /** Reject (throw) once refinement has added this many points (default 0: no cap). */
   maxSteinerPoints?: number;
+  /**
+   * Segments refinement adds no point on (Triangle's -Y and -YY): 'boundary' the boundary's (a
+   * polygon's rings; a graph's outline and hole boundaries), 'all' every segment (default 'none').
+   * Where a circumcentre lies beyond such a segment, a triangle above `maxArea` gets its centroid
+   * and one with only a small angle is left (`unrefinedCount`).
+   */
+  keepSegments?: 'none' | 'boundary' | 'all';
 }
 
 export interface PolygonOptions extends QualityOptions {

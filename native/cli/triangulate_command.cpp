@@ -26,7 +26,8 @@ const char* const kUsage =
     R"(Usage: hullkit triangulate [INPUT|-] [-o FILE] [--format FORMAT]
                            [--fill evenodd|nonzero] [--convex] [--stats]
                            [--min-angle DEG] [--max-area A] [--conforming]
-                           [--max-steiner N] [--region-attributes]
+                           [--max-steiner N] [--keep-segments boundary|all]
+                           [--region-attributes]
 
 Triangulates polygons with holes, or a planar straight-line graph, exactly: a
 constrained Delaunay triangulation in which every ring edge or segment is an
@@ -76,6 +77,13 @@ Options:
                       no area bound)
   --conforming        every triangle Delaunay: segments split as needed
                       (Triangle's -D)
+  --keep-segments WHICH
+                      boundary: refinement adds no point on the boundary's
+                      segments (rings, a .poly's outline and holes; Triangle's
+                      -Y); all: on no segment (-YY); default: any segment
+                      may be split. Where a circumcentre lies beyond a kept
+                      one, a triangle above --max-area gets its centroid, one
+                      with only a small angle is left (counted as unrefined)
   --region-attributes .poly input: give each triangle the attribute of the
                       region holding it, 0 outside every region (Triangle's
                       -A): an attribute column in the .ele file, "attributes"
@@ -343,6 +351,8 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     app.add_option("--max-area", args->quality.max_area)->multi_option_policy(last);
     app.add_flag("--conforming", args->quality.conforming);
     app.add_flag("--region-attributes", args->region_attributes);
+    std::string keep_name;
+    app.add_option("--keep-segments", keep_name)->multi_option_policy(last);
     unsigned max_steiner = 0;
     add_whole_number_option(app, "--max-steiner", &max_steiner, 0, 4000000000u);
     parse_or_throw(app, argv, "triangulate");
@@ -356,6 +366,11 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
         if (!parse_format(format_name, &args->format)) throw UsageError("unknown format \"" + format_name + "\" (known: off, obj, json, svg, node)");
     } else if (!args->output.empty() && args->output != "-") {
         parse_format(extension_of(args->output), &args->format);
+    }
+    if (app.count("--keep-segments")) {
+        if (keep_name == "boundary") args->quality.keep_segments = 1;
+        else if (keep_name == "all") args->quality.keep_segments = 2;
+        else throw UsageError("--keep-segments must be boundary or all, got \"" + keep_name + "\"");
     }
     if (app.count("--fill") && !hullkit::parse_fill_rule(fill_name, &args->fill))
         throw UsageError("unknown fill rule \"" + fill_name + "\" (known: evenodd, nonzero)");

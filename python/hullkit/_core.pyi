@@ -77,6 +77,7 @@ def constrained(
     max_area: float,
     conforming: bool,
     max_steiner_points: int,
+    keep_segments: int,
     /,
 ) -> tuple[
     NDArray[np.float64],

@@ -12,10 +12,10 @@ __all__ = ["triangulate", "triangulate_polygon"]
 # Triangle's switches hullkit honours, and those it does not have yet (with what they are).
 _SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose",
              "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit",
-             "A": "regional attributes"}
+             "A": "regional attributes", "Y": "no Steiner points on the boundary (YY: on any segment)"}
 _NUMBERED = ("q", "a", "S")  # switches that may carry a number
 _NOT_YET = {
-    "u": "user refinement test", "r": "refining a mesh", "Y": "no Steiner points on the boundary",
+    "u": "user refinement test", "r": "refining a mesh",
     "o": "second-order triangles", "i": "incremental insertion", "F": "Fortune's sweep", "l": "vertical cuts only", "s": "segment splitting",
     "C": "consistency checks", "j": "jettisoning vertices", "B": "no boundary markers", "P": "no .poly output", "N": "no .node output",
     "E": "no .ele output", "I": "no iteration numbers", "O": "ignoring holes", "X": "no exact arithmetic",
@@ -24,7 +24,7 @@ _KEYS = ("vertices", "segments", "holes", "regions")
 _NO_POINTS = _np.zeros((0, 2))
 
 
-def _quality(min_angle, max_area, conforming, max_steiner_points):
+def _quality(min_angle, max_area, conforming, max_steiner_points, keep_segments=0):
     """The refinement keywords checked (the core checks the ranges again)."""
     try:
         min_angle, max_area = float(min_angle), float(max_area)
@@ -36,17 +36,19 @@ def _quality(min_angle, max_area, conforming, max_steiner_points):
         raise HullkitError(f"max_area must be a positive number (0: none), got {max_area}")
     if isinstance(max_steiner_points, bool) or not isinstance(max_steiner_points, (int, _np.integer)) or max_steiner_points < 0:
         raise HullkitError(f"max_steiner_points must be a whole number (0: no cap), got {max_steiner_points!r}")
-    return min_angle, max_area, bool(conforming), int(max_steiner_points)
+    if keep_segments not in (0, 1, 2) or isinstance(keep_segments, bool):
+        raise HullkitError(f"keep_segments must be 0 (none), 1 (the boundary's) or 2 (every segment), got {keep_segments!r}")
+    return min_angle, max_area, bool(conforming), int(max_steiner_points), int(keep_segments)
 
 
-def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0)):
+def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0, 0)):
     with _translated():
         return _core.constrained(points, segments, starts, fill, convex, holes,
                                  _np.zeros((0, 3)) if regions is None else regions, *quality)
 
 
 def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=0, max_area=0, conforming=False,
-                        max_steiner_points=0):
+                        max_steiner_points=0, keep_segments=0):
     """The triangles inside polygons with holes, earcut's way: ``coords`` the vertices (shape (n, 2),
     or flat x y x y ...), ``hole_indices`` the vertex index at which each hole (each ring after the
     first) starts. Rings open or closed, any orientation, nesting, touching or crossing; ``fill``
@@ -57,7 +59,8 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=
     A quality mesh of the inside (Delaunay refinement, as Triangle's -q, -a and -D): ``min_angle``
     degrees (0 to 34; up to 28.6 refinement always finishes), ``max_area`` (largest triangle),
     ``conforming`` (every triangle Delaunay), ``max_steiner_points`` (an error past this many added
-    points; 0 no cap). The points added follow the crossings in ``coords`` (``steiner_count``);
+    points; 0 no cap), ``keep_segments`` (1 or 2: no point added on the rings, as Triangle's -Y;
+    see ``triangulate``). The points added follow the crossings in ``coords`` (``steiner_count``);
     ``unrefined_count`` triangles were left below the bound at input angles smaller than it."""
     array = _np.asarray(coords, dtype=_np.float64)
     if array.ndim == 1:
@@ -70,7 +73,7 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=
         raise HullkitError(f"hole_indices must be increasing vertex indices from 0 to {len(points)}, got {starts.tolist()}")
     if fill not in ("evenodd", "nonzero"):
         raise HullkitError(f"fill must be 'evenodd' or 'nonzero', got {fill!r}")
-    quality = _quality(min_angle, max_area, conforming, max_steiner_points)
+    quality = _quality(min_angle, max_area, conforming, max_steiner_points, keep_segments)
     coords_out, triangles, halfedges, constrained, representative, crossings, steiner, unrefined, _ = _run(
         points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _NO_POINTS, None, quality)
     return {"coords": coords_out, "triangles": triangles, "halfedges": halfedges, "constrained": constrained,
@@ -91,7 +94,9 @@ def _switches(opts):
         while j < len(opts) and (opts[j].isdigit() or opts[j] == "."):
             j += 1
         number = opts[i + 1:j]
-        if c in _SWITCHES:
+        if c == "Y" and not number:  # 'Y' once: the boundary's segments; 'YY': every segment
+            found["Y"] = min(found.get("Y", 0) + 1, 2)
+        elif c in _SWITCHES:
             if number and c not in _NUMBERED:
                 raise HullkitError(f"switch '{c}' takes no number, got '{c}{number}' in opts {opts!r}")
             value = None
@@ -122,9 +127,11 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     (a maximum area), bare ``a`` (each region's area from ``tri['regions']``, rows x y attribute
     max_area), ``D`` (conforming Delaunay), ``S100`` (at most 100 added points, else an error), ``A``
     (``triangle_attributes`` (t, 1): the attribute of the region holding each triangle, the last
-    region given where several seeds share one, 0 outside every region). The
-    keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``, ``max_steiner_points`` do the
-    same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
+    region given where several seeds share one, 0 outside every region), ``Y`` (no point added on
+    the boundary's segments; ``YY`` on any segment: where a circumcentre lies beyond such a segment a
+    triangle too large gets its centroid, one with only a small angle is left, counted as
+    unrefined). The keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``,
+    ``max_steiner_points``, ``keep_segments`` (0, 1 = Y, 2 = YY) do the same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
     ``triangles`` (t, 3) counter-clockwise as Triangle's, ``segments`` (the edges on segments, each
     once), and ``neighbors``/``edges`` when asked."""
     if not isinstance(tri, dict):
@@ -134,7 +141,7 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
         raise HullkitError(f"tri key(s) {unknown} are not supported by hullkit yet (it takes {list(_KEYS)})")
     if "vertices" not in tri:
         raise HullkitError("tri needs 'vertices', shape (n, 2)")
-    known = {"convex", "min_angle", "max_area", "conforming", "max_steiner_points"}
+    known = {"convex", "min_angle", "max_area", "conforming", "max_steiner_points", "keep_segments"}
     extra = set(options) - known
     if extra:
         raise HullkitError(f"unknown keyword(s) {sorted(extra)} (known: {', '.join(sorted(known))})")
@@ -149,7 +156,8 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     steiner = options.get("max_steiner_points", 0)
     if "S" in switches:
         steiner = int(switches["S"] or 0)
-    quality = _quality(min_angle, max_area, bool(options.get("conforming", False)) or "D" in switches, steiner)
+    keep = options.get("keep_segments", switches.get("Y", 0))
+    quality = _quality(min_angle, max_area, bool(options.get("conforming", False)) or "D" in switches, steiner, keep)
     points = as_points(tri["vertices"], 2, "tri['vertices']")
     segments = _np.zeros((0, 2), _np.int64)
     holes = _np.zeros((0, 2))

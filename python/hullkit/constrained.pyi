@@ -24,6 +24,7 @@ class _TriangleResult(TypedDict):
     neighbors: NotRequired[NDArray[np.int32]]
     holes: NotRequired[NDArray[np.float64]]
     regions: NotRequired[NDArray[np.float64]]
+    triangle_attributes: NotRequired[NDArray[np.float64]]
 
 def triangulate_polygon(
     coords: ArrayLike,
@@ -34,6 +35,7 @@ def triangulate_polygon(
     max_area: float = 0,
     conforming: bool = False,
     max_steiner_points: int = 0,
+    keep_segments: Literal[0, 1, 2] = 0,
 ) -> _PolygonResult: ...
 def triangulate(
     tri: dict[str, Any],
@@ -44,4 +46,5 @@ def triangulate(
     max_area: float | None = None,
     conforming: bool = False,
     max_steiner_points: int = 0,
+    keep_segments: Literal[0, 1, 2] = 0,
 ) -> _TriangleResult: ...

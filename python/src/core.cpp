@@ -244,14 +244,14 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// Constrained Delaunay triangulation: with `ring_starts` given (a polygon's rings) the triangles
 /// inside by `fill`; else the graph of `segments`, then without `convex` its exterior removed and
 /// the regions around `holes` (Triangle's .poly meaning), `regions` (k, 3: x, y, max_area) giving
-/// regional area bounds. `quality` is (min_angle, max_area, conforming, max_steiner_points): Delaunay
-/// refinement. Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
+/// regional area bounds. `quality` is (min_angle, max_area, conforming, max_steiner_points,
+/// keep_segments): Delaunay refinement. Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
 /// representative, crossing_count, steiner_count, unrefined_count, triangle_region (t,) int32: each
 /// triangle's region row, -1 for none; empty without regions).
 py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
                       py::object ring_starts, const std::string& fill, bool convex, const Points& holes,
                       const Points& regions, double min_angle, double max_area, bool conforming,
-                      std::size_t max_steiner_points) {
+                      std::size_t max_steiner_points, unsigned keep_segments) {
     const std::size_t n = rows(points, 2, "points");
     const hullkit::PointSpan2 span(points.data(), n);
     hullkit::QualityOptions quality;
@@ -259,6 +259,7 @@ py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py:
     quality.max_area = max_area;
     quality.conforming = conforming;
     quality.max_steiner_points = max_steiner_points;
+    quality.keep_segments = keep_segments;
     hullkit::ConstrainedDelaunay d;
     if (!ring_starts.is_none()) {
         const auto starts = ring_starts.cast<py::array_t<std::uint32_t, py::array::c_style>>();

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cli/cli_support.hpp"
@@ -244,4 +245,36 @@ TEST_CASE("hullkit triangulate: --region-attributes (Triangle's -A) in JSON and 
     const RunResult off = run_cli(dir, {"triangulate", dir.file("halves.poly"), "--region-attributes"});
     CHECK(off.exit_code == 2);
     CHECK(off.err.find("OFF, OBJ and SVG have no place") != std::string::npos);
+}
+
+TEST_CASE("hullkit triangulate: --keep-segments boundary|all (Triangle's -Y, -YY)", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    write_text(dir.file("halves.poly"),
+               "6 2 0 0\n1 0 0\n2 2 0\n3 4 0\n4 4 4\n5 2 4\n6 0 4\n"
+               "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n");
+    // The segment edges (constrained half-edges, each edge once) along x = 0 and x = 2.
+    auto pieces = [](const nlohmann::json& j, double x) {
+        std::size_t count = 0;
+        for (std::size_t e = 0; e < j["constrained"].size(); ++e) {
+            const long twin = j["halfedges"][e].get<long>();
+            if (j["constrained"][e] == 0 || (twin >= 0 && static_cast<std::size_t>(twin) < e)) continue;
+            const auto& a = j["points"][j["triangles"][e / 3][e % 3].get<std::size_t>()];
+            const auto& b = j["points"][j["triangles"][e / 3][(e % 3 + 1) % 3].get<std::size_t>()];
+            count += a[0].get<double>() == x && b[0].get<double>() == x;
+        }
+        return count;
+    };
+    for (const auto& [keep, outline, middle] : std::vector<std::tuple<std::string, bool, bool>>{
+             {"", false, false}, {"boundary", true, false}, {"all", true, true}}) {
+        INFO("--keep-segments " << keep);
+        std::vector<std::string> args = {"triangulate", dir.file("halves.poly"), "--format", "json", "--max-area", "0.1", "--min-angle", "20"};
+        if (!keep.empty()) args.insert(args.end(), {"--keep-segments", keep});
+        const nlohmann::json j = json_of(run_cli(dir, args));
+        CHECK(checked_area(j) == 16);
+        CHECK((pieces(j, 0) == 1) == outline);
+        CHECK((pieces(j, 2) == 1) == middle);
+    }
+    const RunResult bad = run_cli(dir, {"triangulate", dir.file("halves.poly"), "--keep-segments", "inside"});
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("--keep-segments must be boundary or all") != std::string::npos);
 }

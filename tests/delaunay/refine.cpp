@@ -193,6 +193,77 @@ TEST_CASE("refine: a maximum area, global and per region", "[refine]") {
     REQUIRE(left > 0.05);
     REQUIRE(right <= 0.05);
     REQUIRE(twice_area(d) == 32);
+    // Each triangle's region point (Triangle's -A attributes come from it): 0 on the right, none on the left.
+    REQUIRE(d.triangle_region.size() == d.triangle_count());
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        const double cx = (d.coords[2 * d.triangles[3 * t]] + d.coords[2 * d.triangles[3 * t + 1]] + d.coords[2 * d.triangles[3 * t + 2]]) / 3;
+        REQUIRE(d.triangle_region[t] == (cx < 2 ? -1 : 0));
+    }
+}
+
+namespace {
+
+/// The constrained edges of the output, each once, as (lower, higher) vertex pairs.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> constrained_edges(const ConstrainedDelaunay& d) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+    for (std::size_t e = 0; e < d.triangles.size(); ++e) {
+        if (!d.constrained[e] || (d.halfedges[e] >= 0 && static_cast<std::size_t>(d.halfedges[e]) < e)) continue;
+        const std::uint32_t a = d.triangles[e], b = d.triangles[e % 3 == 2 ? e - 2 : e + 1];
+        out.emplace_back(std::min(a, b), std::max(a, b));
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("refine: keep_segments (Triangle's -Y, -YY) adds no point on the kept segments", "[refine]") {
+    // A polygon: every ring edge is on the boundary; -Y keeps all eight whole.
+    const std::vector<double> ring = {0, 0, 10, 0, 10, 10, 0, 10, 3, 3, 7, 3, 7, 6, 3, 6};
+    const std::uint32_t starts[] = {4};
+    hullkit::PolygonOptions polygon;
+    polygon.quality.min_angle = 25;
+    polygon.quality.max_area = 0.5;
+    polygon.quality.keep_segments = 1;
+    ConstrainedDelaunay d = hullkit::triangulate_polygon(PointSpan2(ring), starts, 1, polygon);
+    verified(d, true);
+    REQUIRE(d.steiner_count > 20);
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>> rings = {{0, 1}, {0, 3}, {1, 2}, {2, 3}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
+    REQUIRE(constrained_edges(d) == rings);
+    REQUIRE(largest_area(d) <= 0.5);
+    REQUIRE(twice_area(d) == twice_ring_area(ring, 0, 4) - twice_ring_area(ring, 4, 8));
+    // A graph, the square [0, 4]^2 halved by x = 2: -Y keeps the outline whole and splits the
+    // middle segment; -YY keeps that whole too. Without keep_segments both are split.
+    const std::vector<double> xy = {0, 0, 4, 0, 4, 4, 0, 4, 2, 0, 2, 4};
+    const std::vector<std::uint32_t> segs = {0, 4, 4, 1, 1, 2, 2, 5, 5, 3, 3, 0, 4, 5};
+    const auto on_line = [&](const ConstrainedDelaunay& m, double x) {  // constrained edges along x = const
+        std::size_t count = 0;
+        for (const auto& [a, b] : constrained_edges(m)) count += m.coords[2 * a] == x && m.coords[2 * b] == x;
+        return count;
+    };
+    for (unsigned keep : {0u, 1u, 2u}) {
+        INFO("keep_segments " << keep);
+        hullkit::ConstrainedOptions options;
+        options.remove_exterior = true;
+        options.quality.max_area = 0.1;
+        options.quality.min_angle = 20;
+        options.quality.keep_segments = keep;
+        d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
+        verified(d, true);
+        REQUIRE(twice_area(d) == 32);
+        REQUIRE(largest_area(d) <= 0.1);
+        REQUIRE((on_line(d, 0) == 1) == (keep >= 1));
+        REQUIRE((on_line(d, 4) == 1) == (keep >= 1));
+        REQUIRE((on_line(d, 2) == 1) == (keep == 2));
+        const std::vector<std::pair<std::uint32_t, std::uint32_t>> edges = constrained_edges(d);
+        const std::vector<std::pair<std::uint32_t, std::uint32_t>> outline = {{0, 3}, {0, 4}, {1, 2}, {1, 4}, {2, 5}, {3, 5}};
+        for (const auto& edge : outline) REQUIRE(std::binary_search(edges.begin(), edges.end(), edge) == (keep >= 1));
+        if (keep == 2) REQUIRE(edges.size() == 7);
+    }
+    hullkit::ConstrainedOptions bad;
+    bad.quality.keep_segments = 3;
+    REQUIRE(hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, bad).error.find("keep_segments must be") !=
+            std::string::npos);
 }
 
 TEST_CASE("refine: conforming meshes are Delaunay everywhere", "[refine]") {

@@ -3,7 +3,8 @@
 // magnitudes included; (1) int8 pairs: grids, collinear runs, repeats and crossings; (2) int8 pairs
 // scaled by 2^-30 far from the origin; (3) int16 pairs), whether they form rings (bit 2), the
 // fill rule (bit 3), Delaunay refinement (bit 4: a minimum angle of 0 to 30 degrees from the
-// second byte, at most 3000 added points; bit 5 conforming); the second byte also how rings split
+// second byte, at most 3000 added points; bit 5 conforming; bits 6-7 keep_segments 0, 1, 2, 0);
+// the second byte also how rings split
 // or which pairs are segments. Checked:
 //  - a returned triangulation passes the exact verify_constrained (valid, no overlap, unflagged
 //    edges locally Delaunay; polygons and refined meshes: every boundary edge flagged; graphs:
@@ -59,6 +60,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (data[0] & 16) {
         quality.min_angle = 2.0 * (pick >> 4);
         quality.conforming = (data[0] & 32) != 0;
+        quality.keep_segments = static_cast<unsigned>(data[0] >> 6) % 3;
         quality.max_steiner_points = 3000;
     }
     const std::vector<double> xy = fuzz_input::points2d(data + 2, size - 2, mode);

@@ -226,4 +226,31 @@ test('constrainedDelaunay: Triangle .poly domains (removeExterior, holes) and th
   assert.throws(() => hullkit.triangulatePolygon([0, 0, 1, 0, 1, 1, 0, 1], [], { maxArea: 1e-4, maxSteinerPoints: 50 }),
     (error) => error instanceof HullkitError && /max_steiner_points/.test(error.message));
   assert.throws(() => hullkit.constrainedDelaunay(coords, edges, { holes: [1] }), /holes/);
+  assert.throws(() => hullkit.triangulatePolygon(coords, [], { keepSegments: 'inner' }), /keepSegments must be 'none', 'boundary' or 'all'/);
+});
+
+test('keepSegments (Triangle\'s -Y, -YY): no point added on the kept segments, the area bound still met', () => {
+  // The square [0, 4]^2 halved by x = 2, as a graph: the outline is the boundary, x = 2 inside.
+  const coords = [0, 0, 2, 0, 4, 0, 4, 4, 2, 4, 0, 4];
+  const edges = [0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4];
+  const pieces = (mesh, x) => { // segment edges (each once) along the line x
+    let count = 0;
+    for (let e = 0; e < mesh.triangles.length; e++) {
+      if (!mesh.constrained[e] || (mesh.halfedges[e] >= 0 && mesh.halfedges[e] < e)) continue;
+      const a = mesh.triangles[e], b = mesh.triangles[e % 3 === 2 ? e - 2 : e + 1];
+      if (mesh.coords[2 * a] === x && mesh.coords[2 * b] === x) count++;
+    }
+    return count;
+  };
+  const plain = hullkit.constrainedDelaunay(coords, edges, { removeExterior: true });
+  for (const [keepSegments, outlineWhole, middleWhole] of [['none', false, false], ['boundary', true, false], ['all', true, true]]) {
+    const mesh = hullkit.constrainedDelaunay(coords, edges, { removeExterior: true, maxArea: 0.1, minAngle: 20, keepSegments });
+    checkValid(mesh, { boundaryConstrained: true });
+    assert.equal(twiceArea(mesh.coords, mesh.triangles), twiceArea(mesh.coords, plain.triangles));
+    assert.equal(pieces(mesh, 0) === 1, outlineWhole, keepSegments);
+    assert.equal(pieces(mesh, 2) === 1, middleWhole, keepSegments);
+  }
+  const ring = hullkit.triangulatePolygon([0, 0, 10, 0, 10, 10, 0, 10], [], { maxArea: 0.5, keepSegments: 'boundary' });
+  assert.ok(ring.steinerCount > 0);
+  for (let e = 0; e < ring.triangles.length; e++) if (ring.constrained[e]) assert.ok(ring.triangles[e] < 4, 'the sides stay whole');
 });

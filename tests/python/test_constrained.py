@@ -74,8 +74,10 @@ def test_triangulate_pslg_exterior_and_convex():
 
 
 def test_clear_errors():
-    with pytest.raises(hullkit.HullkitError, match="switch 'Y' \\(no Steiner points on the boundary"):
-        hullkit.triangulate(SQUARE_WITH_HOLE, "pY")
+    with pytest.raises(hullkit.HullkitError, match="switch 'r' \\(refining a mesh"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "pr")
+    with pytest.raises(hullkit.HullkitError, match="keep_segments must be 0"):
+        hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1], keep_segments=3)
     with pytest.raises(hullkit.HullkitError, match="switch 'A' \\(regional attributes\\) needs 'p'"):
         hullkit.triangulate(SQUARE_WITH_HOLE, "A")
     with pytest.raises(hullkit.HullkitError, match=r"tri\['regions'\] must have shape"):
@@ -159,6 +161,33 @@ def test_regional_attributes_as_triangles_A_switch():
     assert (one["triangle_attributes"][left] == 0).all() and (one["triangle_attributes"][~left] == 4).all()
     assert (hullkit.triangulate({k: v for k, v in split.items() if k != "regions"}, "pA")["triangle_attributes"] == 0).all()
     assert "triangle_attributes" not in hullkit.triangulate(split, "p")
+
+
+def test_no_steiner_points_on_kept_segments_Y_switch():
+    split = {
+        "vertices": [[0, 0], [2, 0], [4, 0], [4, 4], [2, 4], [0, 4]],
+        "segments": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+    }
+
+    def split_segments(mesh):  # (outline pieces, middle pieces): the segment edges on each
+        seg = mesh["vertices"][mesh["segments"]]
+        middle = (seg[:, :, 0] == 2).all(axis=1)
+        return int((~middle).sum()), int(middle.sum())
+
+    for opts, keyword, outline, middle_whole in (("pq25a0.1", 0, None, False), ("pq25a0.1Y", 1, 6, False),
+                                                  ("pq25a0.1YY", 2, 6, True)):
+        mesh = hullkit.triangulate(split, opts)
+        assert np.array_equal(mesh["triangles"], hullkit.triangulate(split, "pq25a0.1", keep_segments=keyword)["triangles"])
+        areas = np.array(twice_areas(mesh["vertices"], mesh["triangles"]), dtype=float) / 2
+        assert areas.sum() == 16 and areas.max() <= 0.1, opts
+        pieces, middle = split_segments(mesh)
+        assert (pieces == outline) if outline else pieces > 6, opts
+        assert (middle == 1) == middle_whole, opts
+    ring = hullkit.triangulate_polygon([0, 0, 10, 0, 10, 10, 0, 10], max_area=0.5, keep_segments=1)
+    assert ring["steiner_count"] > 0 and len(ring["coords"]) - ring["steiner_count"] == 4
+    flat = ring["triangles"].ravel()
+    boundary = [(flat[e], flat[e - 2 if e % 3 == 2 else e + 1]) for e in np.flatnonzero(ring["constrained"])]
+    assert len(boundary) == 4 and all(a < 4 and b < 4 for a, b in boundary)  # the four sides, whole
 
 
 def test_triangulate_polygon_quality_keywords():

@@ -97,6 +97,7 @@ check(polygon.triangles.length === 24 && polygon.constrained instanceof Uint8Arr
 const polygonOptions: PolygonOptions = { dim: 3, fill: 'nonzero' };
 check(hullkit.triangulatePolygon(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), null, polygonOptions).triangles.length === 3, 'dim 3');
 check(hullkit.triangulatePolygon({ type: 'Polygon', coordinates: [[[0, 0], [1, 0], [0, 1]]] }).coords.length === 6, 'GeoJSON');
+check(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { maxArea: 1, keepSegments: 'boundary' }).steinerCount > 0, 'keepSegments');
 const graph: ConstrainedResult = hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1, 1, 1], [0, 3]);
 check(graph.constrained.reduce((a, b) => a + b, 0) === 2 && hullkit.fillRules[0] === 'evenodd', 'constrainedDelaunay');
 // Point location in it: (0.5, 0.4) is the point 4 itself (a corner: weights 1, 0, 0), (0, 0.5) is on

@@ -85,6 +85,15 @@ struct QualityOptions {
     bool conforming = false;
     /// Stop with an error once refinement has added this many points (0: no cap, see min_angle).
     std::size_t max_steiner_points = 0;
+    /// Segments refinement leaves whole (no point is added on them), as Triangle's -Y and -YY:
+    /// 0 none; 1 the boundary's (segments with the domain on one side only: a polygon's rings, a
+    /// graph's outline and hole boundaries); 2 every segment. A point that would encroach such a
+    /// segment is added anyway; where a triangle's circumcentre lies beyond one, a triangle above
+    /// max_area gets its centroid instead and one with only a small angle is left (counted in
+    /// unrefined_count). The angle bound is then not guaranteed near those segments, and
+    /// termination is not either: unless max_steiner_points is set, the cap of min_angle > 28.6
+    /// applies.
+    unsigned keep_segments = 0;
     bool active() const { return min_angle > 0 || max_area > 0 || conforming; }
 };
 

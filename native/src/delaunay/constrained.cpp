@@ -128,6 +128,8 @@ std::string check_quality(const QualityOptions& q, const std::vector<RegionSeed>
         return "min_angle must be between 0 and 34 degrees (got " + std::to_string(q.min_angle) + ")";
     if (!(q.max_area >= 0 && std::isfinite(q.max_area)))
         return "max_area must be a positive number or 0 for none (got " + std::to_string(q.max_area) + ")";
+    if (q.keep_segments > 2)
+        return "keep_segments must be 0 (none), 1 (the boundary's) or 2 (every segment), got " + std::to_string(q.keep_segments);
     for (std::size_t r = 0; regions && r < regions->size(); ++r) {
         const RegionSeed& seed = (*regions)[r];
         if (!std::isfinite(seed.x) || !std::isfinite(seed.y) || !(seed.max_area >= 0 && std::isfinite(seed.max_area)))

@@ -219,7 +219,7 @@ void Refiner::retest() {
         // t's segments from t's side only; the other side is tested with the triangle there
         // (every triangle is retested when it gets new corners).
         for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-            if (m_.edge_[e] != 0 && encroached_from(e)) split_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)], false});
+            if (m_.edge_[e] != 0 && !kept_whole(e) && encroached_from(e)) split_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)], false});
     }
     m_.touched_.clear();
 }
@@ -235,10 +235,17 @@ bool Refiner::count_point() {
     return true;
 }
 
+bool Refiner::kept_whole(std::uint32_t e) const {
+    if (keep_segments_ == 0 || m_.edge_[e] == 0) return false;
+    if (keep_segments_ >= 2) return true;
+    const auto outside = [&](std::uint32_t t) { return m_.is_ghost(t) || m_.region_[t] == 0; };
+    return outside(e / 3) || outside(m_.twin_[e] / 3);
+}
+
 bool Refiner::split_segment(std::uint32_t e) {
     const std::uint32_t a = m_.vertex_[e], b = m_.vertex_[next_edge(e)];
     const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-    if (m_.edge_[e] == 0 || unsplittable_.count(key)) return false;
+    if (m_.edge_[e] == 0 || kept_whole(e) || unsplittable_.count(key)) return false;
     const Cdt::Record record = m_.records_[m_.edge_[e]];
     const Parent& parent = parents_[record.parent];
     const double *pa = m_.pt(a), *pb = m_.pt(b);
@@ -376,7 +383,16 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     centre[0] += a[0], centre[1] += a[1];
     if (!std::isfinite(centre[0]) || !std::isfinite(centre[1])) return true;
     std::uint32_t wall = kGhost;
-    const std::uint32_t at = walk(centre, t, &wall);
+    std::uint32_t at = walk(centre, t, &wall);
+    if (at == kGhost && wall != kGhost && kept_whole(wall)) {
+        // Beyond a segment kept whole (keep_segments): a triangle too large takes its centroid
+        // (inside it, so the area bound is still met); one with only a small angle is left.
+        int shortest = 0;
+        if (flaw(t, &shortest) != kTooLarge) return true;
+        centre[0] = (p[0][0] + p[1][0] + p[2][0]) / 3, centre[1] = (p[0][1] + p[1][1] + p[2][1]) / 3;
+        at = walk(centre, t, &wall);
+        if (at == kGhost) return true;  // (rounding put it across an edge onto a segment: left)
+    }
     if (at == kGhost) {
         // The centre is beyond a segment: that segment is split instead (Ruppert).
         if (wall != kGhost && split_segment(wall)) bad_.push_back(item);
@@ -437,6 +453,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
 bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
     area2_ = std::move(area2);
     conforming_ = options.conforming;
+    keep_segments_ = options.keep_segments;
     const double pi = 3.14159265358979323846;
     const double cosine_bound = options.min_angle > 0 ? cosine(options.min_angle * (pi / 180)) : 1.0;
     cos2_ = cosine_bound * cosine_bound;
@@ -458,7 +475,7 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         const double tiny = std::ldexp(std::max(extent, magnitude), -40);
         tiny2_ = tiny * tiny;
     }
-    if (cap_ == 0 && options.min_angle > 28.6) cap_ = 16 * m_.input_count_ + 1000000;
+    if (cap_ == 0 && (options.min_angle > 28.6 || keep_segments_ != 0)) cap_ = 16 * m_.input_count_ + 1000000;
     // Every edge between the domain and the rest is kept as a segment; every segment is its own
     // parent (the whole segment, whose ends decide where its pieces are split).
     for (std::uint32_t e = 0; e < m_.vertex_.size(); ++e) {

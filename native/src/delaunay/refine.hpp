@@ -72,6 +72,8 @@ private:
     bool encroached(std::uint32_t e) const;
     void retest();
     bool count_point();
+    /// Whether the segment at half-edge e stays whole (QualityOptions::keep_segments).
+    bool kept_whole(std::uint32_t e) const;
     bool split_segment(std::uint32_t e);
     bool split_triangle(const BadTriangle& item);
     std::uint32_t walk(const double* p, std::uint32_t t, std::uint32_t* wall);
@@ -82,6 +84,7 @@ private:
     double off_centre_ = 0.0;  ///< see split_triangle (0: plain circumcentres)
     double tiny2_ = 0.0;       ///< the square of the smallest length refinement works at (refine())
     bool conforming_ = false;
+    unsigned keep_segments_ = 0;
     std::size_t cap_ = 0;
     std::vector<Parent> parents_;
     std::vector<std::uint32_t> on_segment_;  ///< per vertex: the parent segment it was added on, or kGhost
