@@ -7,7 +7,7 @@ import { HullkitError, checkOptions, copyIn, flatCoordinates, toUint32 } from '.
 
 /** The fill rules triangulatePolygon accepts, the default first. */
 export const FILL_RULES = ['evenodd', 'nonzero'];
-const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints', 'keepSegments'];
+const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints', 'keepSegments', 'unsuitable'];
 const KEEP_SEGMENTS = { none: 0, boundary: 1, all: 2 };
 const POLYGON_OPTIONS = ['dim', 'fill', ...QUALITY_OPTIONS];
 const GRAPH_OPTIONS = ['holes', 'removeExterior', ...QUALITY_OPTIONS];
@@ -28,12 +28,43 @@ function qualityOf(options, where) {
   if (!Object.hasOwn(KEEP_SEGMENTS, keepSegments)) {
     throw new HullkitError(`${where}: keepSegments must be 'none', 'boundary' or 'all', got ${String(keepSegments)}`);
   }
-  return [minAngle, maxArea, conforming, maxSteinerPoints, KEEP_SEGMENTS[keepSegments]];
+  const test = userTest(options.unsuitable, where);
+  return { args: [minAngle, maxArea, conforming, maxSteinerPoints, KEEP_SEGMENTS[keepSegments], test.call], test };
 }
 
-/** Copies the core's result out (or throws its error naming the point or segment) and frees it. */
-function takeResult(result, where) {
+/**
+ * Triangle's -u: the caller's `unsuitable([ax, ay], [bx, by], [cx, cy], area)` as the core calls
+ * it (seven numbers). What it throws, or an answer that is not a boolean, is kept in `error` (the
+ * later calls answer false at once) and thrown once the core has returned: an exception must not
+ * unwind through the WebAssembly frames.
+ */
+function userTest(unsuitable, where) {
+  const test = { call: null, error: null };
+  if (unsuitable === undefined || unsuitable === null) return test;
+  if (typeof unsuitable !== 'function') {
+    throw new HullkitError(`${where}: unsuitable must be a function ([ax, ay], [bx, by], [cx, cy], area) => boolean, got ${typeof unsuitable}`);
+  }
+  test.call = (ax, ay, bx, by, cx, cy, area) => {
+    if (test.error !== null) return false;
+    try {
+      const answer = unsuitable([ax, ay], [bx, by], [cx, cy], area);
+      if (typeof answer !== 'boolean') throw new HullkitError(`${where}: unsuitable must return true or false, got ${String(answer)}`);
+      return answer;
+    } catch (error) {
+      test.error = error;
+      return false;
+    }
+  };
+  return test;
+}
+
+/**
+ * Copies the core's result out (or throws its error naming the point or segment, or what the
+ * caller's unsuitable test threw) and frees it.
+ */
+function takeResult(result, where, test) {
   try {
+    if (test.error !== null) throw test.error;
     if (!result.ok()) {
       const error = new HullkitError(`${where}: ${result.error}`, { pointIndex: result.errorPoint() });
       const segment = result.errorSegment();
@@ -135,7 +166,9 @@ export function triangulatePolygon(core, coords, holeIndices, options = {}) {
       throw new HullkitError(`${where}: holeIndices[${k}] = ${starts[k]} is ${starts[k] > count ? `past the ${count} vertices` : 'before the hole before it'}`);
     }
   }
-  return takeResult(withHeap(core, [xy, starts], where, (p, s) => core.triangulatePolygonFromHeap(p, count, s, starts.length, fill, ...quality)), where);
+  return takeResult(
+    withHeap(core, [xy, starts], where, (p, s) => core.triangulatePolygonFromHeap(p, count, s, starts.length, fill, ...quality.args)),
+    where, quality.test);
 }
 
 /**
@@ -155,8 +188,9 @@ export function constrainedDelaunay(core, coords, edges, options = {}) {
   const count = xy.length / 2;
   return takeResult(
     withHeap(core, [xy, segments, holes], where, (p, s, h) =>
-      core.constrainedDelaunayFromHeap(p, count, s, segments.length / 2, h, holes.length / 2, removeExterior, ...quality),
+      core.constrainedDelaunayFromHeap(p, count, s, segments.length / 2, h, holes.length / 2, removeExterior, ...quality.args),
     ),
     where,
+    quality.test,
   );
 }

@@ -15,14 +15,21 @@ using emscripten::val;
 using hullkit_wasm::heap_at;
 using hullkit_wasm::view_of;
 
+/// The refinement options; `unsuitable` null or the JS layer's wrapper of the caller's test (it
+/// never throws: see userTest in constrained.js).
 hullkit::QualityOptions quality_of(double min_angle, double max_area, bool conforming, double max_steiner_points,
-                                   unsigned keep_segments) {
+                                   unsigned keep_segments, val unsuitable) {
     hullkit::QualityOptions quality;
     quality.min_angle = min_angle;
     quality.max_area = max_area;
     quality.conforming = conforming;
     quality.max_steiner_points = static_cast<std::size_t>(max_steiner_points);
     quality.keep_segments = keep_segments;
+    if (!unsuitable.isNull() && !unsuitable.isUndefined()) {
+        quality.unsuitable = [unsuitable](const double* a, const double* b, const double* c, double area) {
+            return unsuitable(a[0], a[1], b[0], b[1], c[0], c[1], area).as<bool>();
+        };
+    }
     return quality;
 }
 
@@ -31,12 +38,12 @@ hullkit::QualityOptions quality_of(double min_angle, double max_area, bool confo
 hullkit::ConstrainedDelaunay graph_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t segments,
                                              std::uint32_t segment_count, std::uintptr_t holes, std::uint32_t hole_count,
                                              bool remove_exterior, double min_angle, double max_area, bool conforming,
-                                             double max_steiner_points, unsigned keep_segments) {
+                                             double max_steiner_points, unsigned keep_segments, val unsuitable) {
     hullkit::ConstrainedOptions options;
     options.threads = 1;  // no threads in the wasm build; the answer is the same
     options.remove_exterior = remove_exterior;
     options.holes.assign(heap_at<double>(holes), heap_at<double>(holes) + 2 * static_cast<std::size_t>(hole_count));
-    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points, keep_segments);
+    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points, keep_segments, unsuitable);
     return hullkit::constrained_delaunay(hullkit::PointSpan2(heap_at<double>(xy), count), heap_at<std::uint32_t>(segments),
                                          segment_count, options);
 }
@@ -44,10 +51,10 @@ hullkit::ConstrainedDelaunay graph_from_heap(std::uintptr_t xy, std::uint32_t co
 hullkit::ConstrainedDelaunay polygon_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t starts,
                                                std::uint32_t ring_count, const std::string& fill, double min_angle,
                                                double max_area, bool conforming, double max_steiner_points,
-                                               unsigned keep_segments) {
+                                               unsigned keep_segments, val unsuitable) {
     hullkit::PolygonOptions options;
     options.threads = 1;
-    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points, keep_segments);
+    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points, keep_segments, unsuitable);
     if (!hullkit::parse_fill_rule(fill, &options.fill)) {
         hullkit::ConstrainedDelaunay unknown;
         unknown.error = "unknown fill rule \"" + fill + "\"";

@@ -643,6 +643,13 @@ export interface QualityOptions {
    * and one with only a small angle is left (`unrefinedCount`).
    */
   keepSegments?: 'none' | 'boundary' | 'all';
+  /**
+   * Triangle's -u (its triunsuitable): also refine each triangle for which this returns true,
+   * given its corners (counter-clockwise, y up) and area. It must depend on the triangle alone;
+   * whether refinement ends is up to it (unless `maxSteinerPoints` is set, a cap of 16 points per
+   * input point plus 10⁶ applies). What it throws is thrown by the call, once the core has stopped.
+   */
+  unsuitable?: (a: [number, number], b: [number, number], c: [number, number], area: number) => boolean;
 }
 
 export interface PolygonOptions extends QualityOptions {

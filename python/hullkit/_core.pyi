@@ -78,6 +78,7 @@ def constrained(
     conforming: bool,
     max_steiner_points: int,
     keep_segments: int,
+    unsuitable: object,
     /,
 ) -> tuple[
     NDArray[np.float64],

@@ -12,10 +12,11 @@ __all__ = ["triangulate", "triangulate_polygon"]
 # Triangle's switches hullkit honours, and those it does not have yet (with what they are).
 _SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose",
              "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit",
-             "A": "regional attributes", "Y": "no Steiner points on the boundary (YY: on any segment)"}
+             "A": "regional attributes", "Y": "no Steiner points on the boundary (YY: on any segment)",
+             "u": "user refinement test (the unsuitable= function)"}
 _NUMBERED = ("q", "a", "S")  # switches that may carry a number
 _NOT_YET = {
-    "u": "user refinement test", "r": "refining a mesh",
+    "r": "refining a mesh",
     "o": "second-order triangles", "i": "incremental insertion", "F": "Fortune's sweep", "l": "vertical cuts only", "s": "segment splitting",
     "C": "consistency checks", "j": "jettisoning vertices", "B": "no boundary markers", "P": "no .poly output", "N": "no .node output",
     "E": "no .ele output", "I": "no iteration numbers", "O": "ignoring holes", "X": "no exact arithmetic",
@@ -41,14 +42,16 @@ def _quality(min_angle, max_area, conforming, max_steiner_points, keep_segments=
     return min_angle, max_area, bool(conforming), int(max_steiner_points), int(keep_segments)
 
 
-def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0, 0)):
+def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0, 0), unsuitable=None):
+    if unsuitable is not None and not callable(unsuitable):
+        raise HullkitError(f"unsuitable must be a function (a, b, c, area) -> bool, got {unsuitable!r}")
     with _translated():
         return _core.constrained(points, segments, starts, fill, convex, holes,
-                                 _np.zeros((0, 3)) if regions is None else regions, *quality)
+                                 _np.zeros((0, 3)) if regions is None else regions, *quality, unsuitable)
 
 
 def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=0, max_area=0, conforming=False,
-                        max_steiner_points=0, keep_segments=0):
+                        max_steiner_points=0, keep_segments=0, unsuitable=None):
     """The triangles inside polygons with holes, earcut's way: ``coords`` the vertices (shape (n, 2),
     or flat x y x y ...), ``hole_indices`` the vertex index at which each hole (each ring after the
     first) starts. Rings open or closed, any orientation, nesting, touching or crossing; ``fill``
@@ -60,7 +63,7 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=
     degrees (0 to 34; up to 28.6 refinement always finishes), ``max_area`` (largest triangle),
     ``conforming`` (every triangle Delaunay), ``max_steiner_points`` (an error past this many added
     points; 0 no cap), ``keep_segments`` (1 or 2: no point added on the rings, as Triangle's -Y;
-    see ``triangulate``). The points added follow the crossings in ``coords`` (``steiner_count``);
+    see ``triangulate``), ``unsuitable`` (Triangle's -u: see ``triangulate``). The points added follow the crossings in ``coords`` (``steiner_count``);
     ``unrefined_count`` triangles were left below the bound at input angles smaller than it."""
     array = _np.asarray(coords, dtype=_np.float64)
     if array.ndim == 1:
@@ -75,7 +78,7 @@ def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=
         raise HullkitError(f"fill must be 'evenodd' or 'nonzero', got {fill!r}")
     quality = _quality(min_angle, max_area, conforming, max_steiner_points, keep_segments)
     coords_out, triangles, halfedges, constrained, representative, crossings, steiner, unrefined, _ = _run(
-        points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _NO_POINTS, None, quality)
+        points, _np.zeros(0, _np.uint32), starts.astype(_np.uint32), fill, False, _NO_POINTS, None, quality, unsuitable)
     return {"coords": coords_out, "triangles": triangles, "halfedges": halfedges, "constrained": constrained,
             "representative": representative, "crossing_count": crossings, "steiner_count": steiner,
             "unrefined_count": unrefined}
@@ -130,8 +133,12 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     region given where several seeds share one, 0 outside every region), ``Y`` (no point added on
     the boundary's segments; ``YY`` on any segment: where a circumcentre lies beyond such a segment a
     triangle too large gets its centroid, one with only a small angle is left, counted as
-    unrefined). The keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``,
-    ``max_steiner_points``, ``keep_segments`` (0, 1 = Y, 2 = YY) do the same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
+    unrefined), ``u`` with ``unsuitable=f``: Triangle's triunsuitable, ``f((ax, ay), (bx, by), (cx,
+    cy), area)`` returning True for a triangle to refine (a function of the triangle alone; whether
+    refinement ends is up to it: unless ``S`` is given a cap of 16 points per vertex plus 10^6
+    applies). The keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``,
+    ``max_steiner_points``, ``keep_segments`` (0, 1 = Y, 2 = YY), ``unsuitable`` (with or without
+    ``u``) do the same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
     ``triangles`` (t, 3) counter-clockwise as Triangle's, ``segments`` (the edges on segments, each
     once), and ``neighbors``/``edges`` when asked."""
     if not isinstance(tri, dict):
@@ -141,7 +148,7 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
         raise HullkitError(f"tri key(s) {unknown} are not supported by hullkit yet (it takes {list(_KEYS)})")
     if "vertices" not in tri:
         raise HullkitError("tri needs 'vertices', shape (n, 2)")
-    known = {"convex", "min_angle", "max_area", "conforming", "max_steiner_points", "keep_segments"}
+    known = {"convex", "min_angle", "max_area", "conforming", "max_steiner_points", "keep_segments", "unsuitable"}
     extra = set(options) - known
     if extra:
         raise HullkitError(f"unknown keyword(s) {sorted(extra)} (known: {', '.join(sorted(known))})")
@@ -182,8 +189,11 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
             raise HullkitError(f"tri['regions'] row {int(_np.flatnonzero(~_np.isfinite(rows[:, 2]))[0])}: the attribute is not finite")
         # Without a bare 'a' the regions' areas are not bounds (as Triangle reads them).
         regions = _np.ascontiguousarray(rows[:, [0, 1, 3]] if "a" in switches else _np.c_[rows[:, :2], _np.zeros(len(rows))])
+    unsuitable = options.get("unsuitable")
+    if "u" in switches and unsuitable is None:
+        raise HullkitError("switch 'u' (Triangle's triunsuitable) needs the test as unsuitable=function(a, b, c, area) -> bool")
     vertices, triangles, halfedges, constrained, _, _, _, _, region = _run(
-        points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality)
+        points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality, unsuitable)
     out = {"vertices": vertices, "triangles": _np.ascontiguousarray(triangles[:, [0, 2, 1]])}
     flat = triangles.ravel()
     following = _np.arange(len(flat)).reshape(-1, 3)[:, [1, 2, 0]].ravel()

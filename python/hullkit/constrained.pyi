@@ -1,3 +1,4 @@
+from collections.abc import Callable
 from typing import Any, Literal, TypedDict
 
 import numpy as np
@@ -5,6 +6,8 @@ from numpy.typing import ArrayLike, NDArray
 from typing_extensions import NotRequired
 
 __all__ = ["triangulate", "triangulate_polygon"]
+
+_Unsuitable = Callable[[tuple[float, float], tuple[float, float], tuple[float, float], float], bool]
 
 class _PolygonResult(TypedDict):
     coords: NDArray[np.float64]
@@ -36,6 +39,7 @@ def triangulate_polygon(
     conforming: bool = False,
     max_steiner_points: int = 0,
     keep_segments: Literal[0, 1, 2] = 0,
+    unsuitable: _Unsuitable | None = None,
 ) -> _PolygonResult: ...
 def triangulate(
     tri: dict[str, Any],
@@ -47,4 +51,5 @@ def triangulate(
     conforming: bool = False,
     max_steiner_points: int = 0,
     keep_segments: Literal[0, 1, 2] = 0,
+    unsuitable: _Unsuitable | None = None,
 ) -> _TriangleResult: ...

@@ -245,13 +245,14 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// inside by `fill`; else the graph of `segments`, then without `convex` its exterior removed and
 /// the regions around `holes` (Triangle's .poly meaning), `regions` (k, 3: x, y, max_area) giving
 /// regional area bounds. `quality` is (min_angle, max_area, conforming, max_steiner_points,
-/// keep_segments): Delaunay refinement. Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
+/// keep_segments, unsuitable): Delaunay refinement (unsuitable: None or Triangle's -u test, called
+/// as unsuitable((ax, ay), (bx, by), (cx, cy), area) -> bool). Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
 /// representative, crossing_count, steiner_count, unrefined_count, triangle_region (t,) int32: each
 /// triangle's region row, -1 for none; empty without regions).
 py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
                       py::object ring_starts, const std::string& fill, bool convex, const Points& holes,
                       const Points& regions, double min_angle, double max_area, bool conforming,
-                      std::size_t max_steiner_points, unsigned keep_segments) {
+                      std::size_t max_steiner_points, unsigned keep_segments, py::object unsuitable) {
     const std::size_t n = rows(points, 2, "points");
     const hullkit::PointSpan2 span(points.data(), n);
     hullkit::QualityOptions quality;
@@ -260,6 +261,24 @@ py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py:
     quality.conforming = conforming;
     quality.max_steiner_points = max_steiner_points;
     quality.keep_segments = keep_segments;
+    // Triangle's -u: the callable, called with the GIL for each triangle tested; the first
+    // exception it raises stops further calls (they answer false) and is raised once the core returns.
+    std::unique_ptr<py::error_already_set> raised;
+    if (!unsuitable.is_none()) {
+        quality.unsuitable = [&unsuitable, &raised](const double* a, const double* b, const double* c, double area) {
+            if (raised) return false;
+            py::gil_scoped_acquire gil;
+            try {
+                return py::cast<bool>(unsuitable(py::make_tuple(a[0], a[1]), py::make_tuple(b[0], b[1]), py::make_tuple(c[0], c[1]), area));
+            } catch (py::error_already_set& error) {
+                raised = std::make_unique<py::error_already_set>(std::move(error));
+            } catch (const py::cast_error&) {
+                PyErr_SetString(PyExc_TypeError, "unsuitable must return True or False");
+                raised = std::make_unique<py::error_already_set>();
+            }
+            return false;
+        };
+    }
     hullkit::ConstrainedDelaunay d;
     if (!ring_starts.is_none()) {
         const auto starts = ring_starts.cast<py::array_t<std::uint32_t, py::array::c_style>>();
@@ -280,6 +299,7 @@ py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py:
         py::gil_scoped_release release;
         d = hullkit::constrained_delaunay(span, segments.data(), static_cast<std::size_t>(segments.size()) / 2, options);
     }
+    if (raised) throw std::move(*raised);
     if (!d.ok()) throw CoreError(d.error, d.error_point >= 0 ? d.error_point : -1);
     const auto triangles = static_cast<py::ssize_t>(d.triangle_count());
     const std::size_t crossings = d.crossing_count, steiner = d.steiner_count, unrefined = d.unrefined_count;

@@ -266,6 +266,39 @@ TEST_CASE("refine: keep_segments (Triangle's -Y, -YY) adds no point on the kept 
             std::string::npos);
 }
 
+TEST_CASE("refine: a user's test (Triangle's -u) sees the input's units and is met", "[refine]") {
+    // A square of side 2^-300: the core scales such points before its exact tests; the function
+    // must still see the input's coordinates.
+    const double side = std::ldexp(1.0, -300);
+    const std::vector<double> xy = {0, 0, side, 0, side, side, 0, side};
+    hullkit::PolygonOptions options;
+    std::size_t calls = 0, outside = 0;
+    options.quality.unsuitable = [&](const double* a, const double* b, const double* c, double area) {
+        ++calls;
+        for (const double* p : {a, b, c}) outside += p[0] < 0 || p[0] > side || p[1] < 0 || p[1] > side;
+        outside += !(area > 0);
+        const double cx = (a[0] + b[0] + c[0]) / 3;
+        return area > (cx < side / 2 ? side * side / 64 : side * side / 8);  // finer on the left
+    };
+    const ConstrainedDelaunay d = hullkit::triangulate_polygon(PointSpan2(xy), nullptr, 0, options);
+    verified(d, true);
+    REQUIRE(calls > 0);
+    REQUIRE(outside == 0);
+    REQUIRE(d.steiner_count > 8);
+    double left = 0, right = 0;
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        const double* a = &d.coords[2 * d.triangles[3 * t]];
+        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
+        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
+        const double area = std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+        double& largest = (a[0] + b[0] + c[0]) / 3 < side / 2 ? left : right;
+        largest = std::max(largest, area);
+    }
+    REQUIRE(left <= side * side / 64);
+    REQUIRE(right <= side * side / 8);
+    REQUIRE(right > side * side / 64);
+}
+
 TEST_CASE("refine: conforming meshes are Delaunay everywhere", "[refine]") {
     // A thin slanted segment inside a box and a polygon with a narrow notch.
     const std::vector<double> xy = {0, 0, 8, 0, 8, 5, 0, 5, 1, 1, 7, 1.3};

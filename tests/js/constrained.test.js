@@ -254,3 +254,33 @@ test('keepSegments (Triangle\'s -Y, -YY): no point added on the kept segments, t
   assert.ok(ring.steinerCount > 0);
   for (let e = 0; e < ring.triangles.length; e++) if (ring.constrained[e]) assert.ok(ring.triangles[e] < 4, 'the sides stay whole');
 });
+
+test('unsuitable (Triangle\'s -u): the caller\'s test is met; what it throws is thrown after the core stops', () => {
+  let calls = 0;
+  const unsuitable = (a, b, c, area) => {
+    calls++;
+    assert.ok(Array.isArray(a) && a.length === 2 && area > 0);
+    return area > ((a[0] + b[0] + c[0]) / 3 < 2 ? 0.02 : 0.5); // finer on the left
+  };
+  const mesh = hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { unsuitable });
+  checkValid(mesh, { boundaryConstrained: true });
+  assert.ok(calls > 0 && mesh.steinerCount > 0);
+  let left = 0, right = 0;
+  for (let t = 0; t < mesh.triangles.length; t += 3) {
+    const [a, b, c] = [0, 1, 2].map((k) => mesh.triangles[t + k]);
+    const area = Math.abs((mesh.coords[2 * b] - mesh.coords[2 * a]) * (mesh.coords[2 * c + 1] - mesh.coords[2 * a + 1]) -
+      (mesh.coords[2 * b + 1] - mesh.coords[2 * a + 1]) * (mesh.coords[2 * c] - mesh.coords[2 * a])) / 2;
+    if ((mesh.coords[2 * a] + mesh.coords[2 * b] + mesh.coords[2 * c]) / 3 < 2) left = Math.max(left, area);
+    else right = Math.max(right, area);
+  }
+  assert.ok(left <= 0.02 && right <= 0.5 && right > 0.02, `${left} ${right}`);
+  const graph = hullkit.constrainedDelaunay([0, 0, 4, 0, 4, 4, 0, 4], [0, 1, 1, 2, 2, 3, 3, 0], { unsuitable: (a, b, c, area) => area > 1 });
+  assert.ok(graph.steinerCount > 0);
+  // The caller's exception, a non-boolean answer and a test that is not a function.
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4], [], { unsuitable: () => { throw new RangeError('from the test'); } }),
+    (error) => error instanceof RangeError && error.message === 'from the test');
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4], [], { unsuitable: () => 1 }), /unsuitable must return true or false/);
+  assert.throws(() => hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4], [], { unsuitable: 3 }), /unsuitable must be a function/);
+  // The module still works afterwards.
+  assert.equal(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4], []).triangles.length, 3);
+});

@@ -190,6 +190,41 @@ def test_no_steiner_points_on_kept_segments_Y_switch():
     assert len(boundary) == 4 and all(a < 4 and b < 4 for a, b in boundary)  # the four sides, whole
 
 
+def test_user_refinement_test_u_switch():
+    # Triangle's triunsuitable: a size field, small triangles near (0, 0) only.
+    calls = []
+
+    def unsuitable(a, b, c, area):
+        calls.append(area)
+        cx, cy = (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3
+        return area > 0.01 + 0.05 * (cx * cx + cy * cy)
+
+    square = {"vertices": [[0, 0], [4, 0], [4, 4], [0, 4]], "segments": [[0, 1], [1, 2], [2, 3], [3, 0]]}
+    mesh = hullkit.triangulate(square, "pqu", unsuitable=unsuitable)
+    assert calls and all(area > 0 for area in calls)  # counter-clockwise corners, in the input's units
+    points = mesh["vertices"][mesh["triangles"]]
+    areas = np.array(twice_areas(mesh["vertices"], mesh["triangles"]), dtype=float) / 2
+    assert areas.sum() == 16 and smallest_angle(mesh["vertices"], mesh["triangles"]) >= 20
+    centre = points.mean(axis=1)
+    assert (areas <= 0.01 + 0.05 * (centre ** 2).sum(axis=1)).all()
+    assert areas[(centre ** 2).sum(axis=1) < 0.5].max() <= 0.04 < areas.max()
+    polygon = hullkit.triangulate_polygon([0, 0, 4, 0, 4, 4, 0, 4], unsuitable=unsuitable)
+    assert polygon["steiner_count"] == len(mesh["vertices"]) - 4 or polygon["steiner_count"] > 0
+    # Errors: 'u' without the function; the function's own exception; a result that is not a bool.
+    with pytest.raises(hullkit.HullkitError, match="switch 'u'.*needs the test as unsuitable="):
+        hullkit.triangulate(square, "pu")
+
+    def broken(a, b, c, area):
+        raise ZeroDivisionError("from the test")
+
+    with pytest.raises(ZeroDivisionError, match="from the test"):
+        hullkit.triangulate(square, "pu", unsuitable=broken)
+    with pytest.raises(hullkit.HullkitError, match="unsuitable must return True or False"):
+        hullkit.triangulate(square, "pu", unsuitable=lambda a, b, c, area: "yes")
+    with pytest.raises(hullkit.HullkitError, match="unsuitable must be a function"):
+        hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1], unsuitable=3)
+
+
 def test_triangulate_polygon_quality_keywords():
     r = hullkit.triangulate_polygon([0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3], [4], min_angle=28, max_area=0.3)
     assert r["steiner_count"] == len(r["coords"]) - 8 > 0

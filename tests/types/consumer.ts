@@ -98,6 +98,7 @@ const polygonOptions: PolygonOptions = { dim: 3, fill: 'nonzero' };
 check(hullkit.triangulatePolygon(new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), null, polygonOptions).triangles.length === 3, 'dim 3');
 check(hullkit.triangulatePolygon({ type: 'Polygon', coordinates: [[[0, 0], [1, 0], [0, 1]]] }).coords.length === 6, 'GeoJSON');
 check(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { maxArea: 1, keepSegments: 'boundary' }).steinerCount > 0, 'keepSegments');
+check(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { unsuitable: (a, b, c, area) => area > 1 + a[0] * 0 }).steinerCount > 0, 'unsuitable');
 const graph: ConstrainedResult = hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1, 1, 1], [0, 3]);
 check(graph.constrained.reduce((a, b) => a + b, 0) === 2 && hullkit.fillRules[0] === 'evenodd', 'constrainedDelaunay');
 // Point location in it: (0.5, 0.4) is the point 4 itself (a corner: weights 1, 0, 0), (0, 0.5) is on

@@ -49,5 +49,6 @@ checker.deleted = true; // error
 hullkit.RouteChecker(scene); // error
 hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { fill: 'winding' }); // error
 hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { keepSegments: 'inside' }); // error
+hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { unsuitable: (area: string) => area === '' }); // error
 hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { dim: '3' }); // error
 hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1], [0, 1], { threads: 2 }); // error

@@ -39,6 +39,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -94,7 +95,14 @@ struct QualityOptions {
     /// termination is not either: unless max_steiner_points is set, the cap of min_angle > 28.6
     /// applies.
     unsigned keep_segments = 0;
-    bool active() const { return min_angle > 0 || max_area > 0 || conforming; }
+    /// Triangle's -u (its triunsuitable()): also refine each triangle for which this returns true,
+    /// given its corners (x y each, in the input's units, counter-clockwise with y up) and its area.
+    /// It is called on the calling thread, for every triangle of the domain as it is made (so it
+    /// must depend on the triangle alone), and refinement treats its triangles as too large (see
+    /// keep_segments). Whether refinement ends is up to the function: unless max_steiner_points is
+    /// set, the cap of min_angle > 28.6 applies. Empty: none.
+    std::function<bool(const double* a, const double* b, const double* c, double area)> unsuitable;
+    bool active() const { return min_angle > 0 || max_area > 0 || conforming || static_cast<bool>(unsuitable); }
 };
 
 /// A region of a planar straight-line graph (Triangle's .poly regions): the triangles reachable from

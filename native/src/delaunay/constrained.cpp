@@ -214,7 +214,7 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     else refiner.mark_graph(domain.remove_exterior, domain.holes ? scaled(*domain.holes) : std::vector<double>(), scaled(region_xy));
     const bool regional_area = std::any_of(area2.begin(), area2.end(), [](double a) { return a > 0; });
     if (domain.quality.active() || regional_area) {
-        if (!refiner.refine(domain.quality, area2)) return failure(refiner.error);
+        if (!refiner.refine(domain.quality, area2, exponent)) return failure(refiner.error);
         out.steiner_count = refiner.steiner_count;
         out.unrefined_count = refiner.unrefined_count;
     }

@@ -152,6 +152,13 @@ int Refiner::flaw(std::uint32_t t, int* shortest) const {
         const double area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
         if (area2 > limit) return kTooLarge;
     }
+    if (unsuitable_) {
+        // In the input's units (exact: a power of two), as the caller gave the points.
+        const double ua[2] = {a[0] * unscale_, a[1] * unscale_}, ub[2] = {b[0] * unscale_, b[1] * unscale_},
+                     uc[2] = {c[0] * unscale_, c[1] * unscale_};
+        const double area = 0.5 * ((ub[0] - ua[0]) * (uc[1] - ua[1]) - (ub[1] - ua[1]) * (uc[0] - ua[0]));
+        if (unsuitable_(ua, ub, uc, area)) return kTooLarge;
+    }
     if (cos2_ >= 1.0) return kFine;
     // The smallest angle is opposite the shortest edge (edge k runs from corner k to k + 1).
     const double* p[3] = {a, b, c};
@@ -450,8 +457,10 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     return true;
 }
 
-bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
+bool Refiner::refine(const QualityOptions& options, std::vector<double> area2, int exponent) {
     area2_ = std::move(area2);
+    unsuitable_ = options.unsuitable;
+    unscale_ = std::ldexp(1.0, -exponent);
     conforming_ = options.conforming;
     keep_segments_ = options.keep_segments;
     const double pi = 3.14159265358979323846;
@@ -475,7 +484,7 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2) {
         const double tiny = std::ldexp(std::max(extent, magnitude), -40);
         tiny2_ = tiny * tiny;
     }
-    if (cap_ == 0 && (options.min_angle > 28.6 || keep_segments_ != 0)) cap_ = 16 * m_.input_count_ + 1000000;
+    if (cap_ == 0 && (options.min_angle > 28.6 || keep_segments_ != 0 || unsuitable_)) cap_ = 16 * m_.input_count_ + 1000000;
     // Every edge between the domain and the rest is kept as a segment; every segment is its own
     // parent (the whole segment, whose ends decide where its pieces are split).
     for (std::uint32_t e = 0; e < m_.vertex_.size(); ++e) {

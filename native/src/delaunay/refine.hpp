@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -31,7 +32,7 @@ public:
 
     /// Refines the domain. `area2` per region id: twice the largest area allowed (scaled units), 0
     /// for none. False with `error` set on failure (the cap, or an internal error).
-    bool refine(const QualityOptions& options, std::vector<double> area2);
+    bool refine(const QualityOptions& options, std::vector<double> area2, int exponent = 0);
 
     std::string error;
     std::size_t steiner_count = 0;
@@ -85,6 +86,8 @@ private:
     double tiny2_ = 0.0;       ///< the square of the smallest length refinement works at (refine())
     bool conforming_ = false;
     unsigned keep_segments_ = 0;
+    std::function<bool(const double*, const double*, const double*, double)> unsuitable_;
+    double unscale_ = 1.0;  ///< from the mesh's coordinates to the input's (a power of two)
     std::size_t cap_ = 0;
     std::vector<Parent> parents_;
     std::vector<std::uint32_t> on_segment_;  ///< per vertex: the parent segment it was added on, or kGhost
