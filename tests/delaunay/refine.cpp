@@ -65,6 +65,20 @@ double largest_area(const ConstrainedDelaunay& d) {
 }
 
 
+/// The largest triangle area left and right of the line x = split (by each triangle's centroid).
+std::pair<double, double> largest_areas_beside(const ConstrainedDelaunay& d, double split) {
+    double left = 0, right = 0;
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        const double* a = &d.coords[2 * d.triangles[3 * t]];
+        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
+        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
+        const double area = std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+        double& largest = (a[0] + b[0] + c[0]) / 3 < split ? left : right;
+        largest = std::max(largest, area);
+    }
+    return {left, right};
+}
+
 /// Every constrained edge of the output lies along an input segment: both ends within `slack`
 /// (relative to the segment's length) of one of them. Every input segment is covered: the
 /// constrained edges near it add up to its length.
@@ -181,14 +195,7 @@ TEST_CASE("refine: a maximum area, global and per region", "[refine]") {
     options.regions.push_back({3, 2, 0.05});
     d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
     verified(d, true);
-    double left = 0, right = 0;
-    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
-        const double* a = &d.coords[2 * d.triangles[3 * t]];
-        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
-        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
-        const double area = std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
-        ((a[0] + b[0] + c[0]) / 3 < 2 ? left : right) = std::max((a[0] + b[0] + c[0]) / 3 < 2 ? left : right, area);
-    }
+    const auto [left, right] = largest_areas_beside(d, 2);
     REQUIRE(left <= 0.5);
     REQUIRE(left > 0.05);
     REQUIRE(right <= 0.05);
@@ -285,15 +292,7 @@ TEST_CASE("refine: a user's test (Triangle's -u) sees the input's units and is m
     REQUIRE(calls > 0);
     REQUIRE(outside == 0);
     REQUIRE(d.steiner_count > 8);
-    double left = 0, right = 0;
-    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
-        const double* a = &d.coords[2 * d.triangles[3 * t]];
-        const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
-        const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
-        const double area = std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
-        double& largest = (a[0] + b[0] + c[0]) / 3 < side / 2 ? left : right;
-        largest = std::max(largest, area);
-    }
+    const auto [left, right] = largest_areas_beside(d, side / 2);
     REQUIRE(left <= side * side / 64);
     REQUIRE(right <= side * side / 8);
     REQUIRE(right > side * side / 64);
