@@ -143,6 +143,29 @@ inline void advise_huge_pages(const void* memory, std::size_t bytes) {
 #endif
 }
 
+/// Maps the pages of [memory, memory + bytes) in advance, in `parts` pieces that the caller may
+/// hand to its threads (prefault_part(k) for k < parts): the system zeroes a fresh page on its
+/// first touch, and an array first written on one thread (a vector's resize) would have all of
+/// that done there. Nothing is written (MADV_POPULATE_WRITE; where the system lacks it, nothing
+/// happens and the pages are mapped on first touch as before).
+struct Prefault {
+    const void* memory = nullptr;
+    std::size_t bytes = 0, parts = 0;
+    void part(std::size_t k) const {
+#if HULLKIT_HUGE_PAGES && defined(MADV_POPULATE_WRITE)
+        const auto first = reinterpret_cast<std::uintptr_t>(memory);  // whole 2 MiB pages inside it
+        const std::uintptr_t begin = (first + kHugePage - 1) / kHugePage * kHugePage;
+        const std::uintptr_t end = (first + bytes) / kHugePage * kHugePage;
+        if (end <= begin) return;
+        const std::size_t pages = (end - begin) / kHugePage;
+        const std::uintptr_t from = begin + pages * k / parts * kHugePage, to = begin + pages * (k + 1) / parts * kHugePage;
+        if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+#else
+        (void)k;
+#endif
+    }
+};
+
 /// Reserves room for n elements in a std::vector, advised onto huge pages when large.
 template <class T>
 void reserve_large(std::vector<T>& v, std::size_t n) {
