@@ -485,7 +485,7 @@ TEST_CASE("delaunay_voronoi_diagram: vertices per cocircular group, ridges, cell
     const Delaunay d = hullkit::delaunay(many);
     const hullkit::VoronoiDiagram one = hullkit::delaunay_voronoi_diagram(many, d, 1);
     check_voronoi_diagram(many, d, one);
-    for (unsigned threads : {2u, 3u, 0u}) {
+    for (unsigned threads : {2u, 3u, 8u, 0u}) {
         const hullkit::VoronoiDiagram other = hullkit::delaunay_voronoi_diagram(many, d, threads);
         REQUIRE(other.vertices == one.vertices);
         REQUIRE(other.triangle_vertex == one.triangle_vertex);

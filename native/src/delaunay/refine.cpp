@@ -218,7 +218,7 @@ void Refiner::retest() {
             int s = 0;
             const int kind = flaw(t, &s);
             if (kind != kFine) {
-                const BadTriangle item{t, v[0], v[1], v[2]};
+                const BadTriangle item{t, v[0], v[1], v[2], kind};
                 flawed_.push_back(item);
                 if (bad(t, kind, s)) bad_.push_back(item);
             }
@@ -394,8 +394,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
     if (at == kGhost && wall != kGhost && kept_whole(wall)) {
         // Beyond a segment kept whole (keep_segments): a triangle too large takes its centroid
         // (inside it, so the area bound is still met); one with only a small angle is left.
-        int shortest = 0;
-        if (flaw(t, &shortest) != kTooLarge) return true;
+        if (item.kind != kTooLarge) return true;
         centre[0] = (p[0][0] + p[1][0] + p[2][0]) / 3, centre[1] = (p[0][1] + p[1][1] + p[2][1]) / 3;
         at = walk(centre, t, &wall);
         if (at == kGhost) return true;  // (rounding put it across an edge onto a segment: left)

@@ -41,6 +41,7 @@ public:
 private:
     struct BadTriangle {
         std::uint32_t t, a, b, c;  ///< the triangle and its corners (stale once they change)
+        int kind;                  ///< its flaw (kTooLarge or kSmallAngle), found with those corners
     };
     struct SplitItem {
         std::uint32_t a, b;

@@ -25,7 +25,6 @@ namespace {
 
 constexpr std::size_t kChunk = std::size_t{1} << 14;  // triangles per task
 constexpr std::uint32_t kNone = ~std::uint32_t{0};
-constexpr std::uint8_t kFirst = 8;  // flag bit: the first triangle of its polygon
 
 constexpr std::size_t kAhead = 48;  // triangles between a prefetch and the use
 
@@ -177,11 +176,12 @@ VoronoiDiagram delaunay_voronoi_diagram(PointSpan2 p, const Delaunay& d, unsigne
     };
     const auto alone = [&](std::size_t t) { return !joined(3 * t) && !joined(3 * t + 1) && !joined(3 * t + 2); };
 
-    // 2. Polygons numbered by their first triangle (sequential: a flood over the merged ones), or
-    // when none is merged (points in general position) one per triangle.
+    // 2. Polygons numbered by their first triangle (sequential: a flood over the merged ones, whose
+    // triangles are kept in `members`, group g at member_start[g] ..), or when none is merged (points
+    // in general position) one per triangle.
     const bool merged = std::any_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
     out.triangle_vertex.assign(triangles, kNone);
-    std::vector<std::uint32_t> queue;
+    std::vector<std::uint32_t> members, member_start(1, 0), group_vertex;
     std::uint32_t polygons = 0;
     if (!merged) {
         polygons = static_cast<std::uint32_t>(triangles);
@@ -189,55 +189,45 @@ VoronoiDiagram delaunay_voronoi_diagram(PointSpan2 p, const Delaunay& d, unsigne
     }
     for (std::size_t t = merged ? 0 : triangles; t < triangles; ++t) {
         if (out.triangle_vertex[t] != kNone) continue;
-        flags[t] = static_cast<std::uint8_t>(flags[t] | kFirst);
         const std::uint32_t v = polygons++;
         out.triangle_vertex[t] = v;
         if (alone(t)) continue;
-        queue.assign(1, static_cast<std::uint32_t>(t));
-        for (std::size_t q = 0; q < queue.size(); ++q) {
-            const std::size_t u = queue[q];
+        const std::size_t begin = members.size();
+        members.push_back(static_cast<std::uint32_t>(t));
+        for (std::size_t q = begin; q < members.size(); ++q) {
+            const std::size_t u = members[q];
             for (std::size_t k = 0; k < 3; ++k) {
                 if (!joined(3 * u + k)) continue;
                 const std::uint32_t w = static_cast<std::uint32_t>(twin[3 * u + k]) / 3;
                 if (out.triangle_vertex[w] != kNone) continue;
                 out.triangle_vertex[w] = v;
-                queue.push_back(w);
+                members.push_back(w);
             }
         }
+        member_start.push_back(static_cast<std::uint32_t>(members.size()));
+        group_vertex.push_back(v);
     }
 
     // 3. Vertices: a lone triangle's circumcentre; a merged polygon's from its corners, chained
-    // from its lowest index along its boundary half-edges, by the task holding its first triangle.
+    // from its lowest index along its boundary half-edges.
     if (polygons == triangles) {
         out.vertices = std::move(centres);
     } else {
         out.vertices.assign(2 * static_cast<std::size_t>(polygons), 0.0);
-        std::vector<std::uint8_t> seen(triangles, 0);  // a merged polygon's triangles, met by its own task only
-        detail::parallel_for(threads, chunks, [&](std::size_t c) {
-            const auto [lo, hi] = chunk_range(c);
-            std::vector<std::uint32_t> members, ring;
+        for (std::size_t t = 0; t < triangles; ++t) {
+            if (!alone(t)) continue;
+            const std::size_t v = out.triangle_vertex[t];
+            out.vertices[2 * v] = centres[2 * t], out.vertices[2 * v + 1] = centres[2 * t + 1];
+        }
+        const std::size_t groups = group_vertex.size();
+        detail::parallel_for(threads, (groups + kChunk - 1) / kChunk, [&](std::size_t c) {
+            std::vector<std::uint32_t> ring;
             std::vector<std::pair<std::uint32_t, std::uint32_t>> sides;  // boundary from -> to
-            for (std::size_t t = lo; t < hi; ++t) {
-                if (!(flags[t] & kFirst)) continue;
-                double* centre = &out.vertices[2 * static_cast<std::size_t>(out.triangle_vertex[t])];
-                if (alone(t)) {
-                    centre[0] = centres[2 * t], centre[1] = centres[2 * t + 1];
-                    continue;
-                }
-                members.assign(1, static_cast<std::uint32_t>(t));
-                seen[t] = 1;
+            for (std::size_t g = c * kChunk; g < std::min(groups, (c + 1) * kChunk); ++g) {
                 sides.clear();
-                for (std::size_t q = 0; q < members.size(); ++q) {
-                    const std::size_t u = members[q];
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        const std::size_t e = 3 * u + k;
-                        if (joined(e)) {
-                            const std::uint32_t w = static_cast<std::uint32_t>(twin[e]) / 3;
-                            if (!seen[w]) seen[w] = 1, members.push_back(w);
-                        } else {
-                            sides.emplace_back(corner[e], corner[next_edge(e)]);
-                        }
-                    }
+                for (std::size_t q = member_start[g]; q < member_start[g + 1]; ++q) {
+                    for (std::size_t e = 3 * std::size_t{members[q]}; e < 3 * std::size_t{members[q]} + 3; ++e)
+                        if (!joined(e)) sides.emplace_back(corner[e], corner[next_edge(e)]);
                 }
                 std::sort(sides.begin(), sides.end());
                 const std::size_t m = sides.size();
@@ -245,7 +235,7 @@ VoronoiDiagram delaunay_voronoi_diagram(PointSpan2 p, const Delaunay& d, unsigne
                 ring[0] = sides[0].first;  // the lowest index
                 for (std::size_t k = 1; k < m; ++k)
                     ring[k] = std::lower_bound(sides.begin(), sides.end(), std::make_pair(ring[k - 1], std::uint32_t{0}))->second;
-                circumcentre(p[ring[0]], p[ring[m / 3]], p[ring[2 * m / 3]], centre);
+                circumcentre(p[ring[0]], p[ring[m / 3]], p[ring[2 * m / 3]], &out.vertices[2 * std::size_t{group_vertex[g]}]);
             }
         });
     }
