@@ -169,7 +169,7 @@ const body = [
   '## Whole commands',
   '',
   `\`hullkit delaunay3 FILE -o OUT.ele --stats\` reads the points as ${meta.hullkit_reads_node ? 'the `.node` file TetGen reads' : '`x y z` text (the same values as TetGen\'s `.node`: hullkit does not read `.node`)'}`,
-  'and writes `OUT.ele` and `OUT.node`; `tetgen -NEFQ FILE.node` reads the same points and writes nothing (-N, -E, -F:',
+  'and writes `OUT.ele` and `OUT.node` (new files each run: the last run\'s are removed before the clock starts); `tetgen -NEFQ FILE.node` reads the same points and writes nothing (-N, -E, -F:',
   'no .node, .ele, .face), `tetgen -NFQ` (one run) writes the `.ele` that is counted below. `qdelaunay Qt i < FILE`',
   `(Qhull's command, triangulated output, indices written to a file), stopped after ${meta.qdelaunay_timeout ?? '?'} s.`,
   '"its tetrahedralization" is the hullkit command\'s own `--stats` seconds (median).',

@@ -78,13 +78,14 @@ function count(input, file, format) {
  * Times a whole command `runs` times, each a fresh process, under /usr/bin/time (peak memory) and
  * `timeout`: wall seconds from spawn to exit. stdin/stdout: files or null. Stops at the first failure.
  */
-function timeCommand(argv, { runs, stdin = null, stdout = null, timeout = 1800, afterEach = () => {} }) {
+function timeCommand(argv, { runs, stdin = null, stdout = null, timeout = 1800, beforeEach = () => {}, afterEach = () => {} }) {
   const seconds = [];
   let peak = 0;
   const timeFile = join(out, 'command.time');
   for (let k = 0; k < runs; k++) {
     const input = stdin ? openSync(stdin, 'r') : 'ignore';
     const output = stdout ? openSync(stdout, 'w') : 'ignore';
+    beforeEach();
     const start = performance.now();
     const run = spawnSync('/usr/bin/time', ['-f', '%M', '-o', timeFile, 'timeout', String(timeout), ...argv],
       { stdio: [input, output, 'pipe'], encoding: 'utf8', maxBuffer: 1 << 26 });
@@ -169,6 +170,9 @@ for (const input of inputs) {
   const stats = [];
   const hullkitRow = timeCommand([hullkitCommand, 'delaunay3', fileOf(input, readsNode ? 'node' : 'xyz'), '-o', eleOut, '--stats', '--quiet'], {
     runs: runsFor(input.n, 'command'),
+    // every run writes new files, as the first does: replacing the last run's 240 MB .ele made the
+    // file system free it inside the timed command (0.1-0.2 s at 1e6 points)
+    beforeEach: () => { for (const f of [eleOut, eleOut.replace(/\.ele$/, '.node')]) rmSync(f, { force: true }); },
     afterEach: (run) => stats.push(JSON.parse(run.stderr.split('\n').filter((l) => l.startsWith('{')).pop() ?? '{}').seconds ?? null),
   });
   record('command', { impl: 'hullkit-command', input: input.name, n: input.n, ...hullkitRow, core_seconds: median(stats.filter((s) => s != null)),

@@ -203,6 +203,27 @@ void append(std::string& text, Number value) {
     text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
 }
 
+/// One row of at most eight numbers, formatted on the stack and appended to the text in one piece:
+/// a million points' tetrahedra are seven million rows, and growing the string number by number
+/// cost more than the digits.
+class Line {
+public:
+    template <class Number>
+    Line& operator<<(Number value) {
+        end_ = std::to_chars(end_, data_ + sizeof data_, value).ptr;
+        return *this;
+    }
+    Line& operator<<(char c) {
+        *end_++ = c;
+        return *this;
+    }
+    void append_to(std::string& text) const { text.append(data_, static_cast<std::size_t>(end_ - data_)); }
+
+private:
+    char data_[8 * 32];  // eight numbers (a double's shortest text is at most 24 characters) and separators
+    char* end_ = data_;
+};
+
 /// Text written straight to a file (or standard output for "" and "-") through a buffer of about
 /// a megabyte: a million points' tetrahedra are hundreds of megabytes of text, never held whole.
 /// Numbers by std::to_chars (doubles: the shortest text that reads back the same).
@@ -293,12 +314,14 @@ template <class Int>
 void json_tuples(TextOut& out, const std::vector<Int>& values, std::size_t arity, unsigned threads) {
     out.put('[');
     put_rows(out, values.size() / arity, threads, [&](std::size_t i, std::string& text) {
-        text += i ? ",[" : "[";
+        Line line;
+        if (i) line << ',';
+        line << '[';
         for (std::size_t k = 0; k < arity; ++k) {
-            if (k) text += ',';
-            append(text, static_cast<std::int64_t>(values[arity * i + k]));
+            if (k) line << ',';
+            line << static_cast<std::int64_t>(values[arity * i + k]);
         }
-        text += ']';
+        (line << ']').append_to(text);
     });
     out.put(']');
 }
@@ -344,13 +367,7 @@ void write_json(TextOut& out, const hullkit::Delaunay3& d, unsigned threads) {
 }
 
 /// One point's coordinates, space-separated, and a newline.
-void append_point(std::string& text, const double* p) {
-    for (int k = 0; k < 3; ++k) {
-        if (k) text += ' ';
-        append(text, p[k]);
-    }
-    text += '\n';
-}
+void put_point(Line& line, const double* p) { line << p[0] << ' ' << p[1] << ' ' << p[2] << '\n'; }
 
 /// TetGen's .node: "N 3 0 0" then "i x y z", numbered from 1.
 void write_node(TextOut& out, const std::vector<double>& xyz, unsigned threads) {
@@ -358,9 +375,10 @@ void write_node(TextOut& out, const std::vector<double>& xyz, unsigned threads) 
     out.number(static_cast<std::int64_t>(n));
     out.put(" 3 0 0\n");
     put_rows(out, n, threads, [&](std::size_t i, std::string& text) {
-        append(text, static_cast<std::int64_t>(i + 1));
-        text += ' ';
-        append_point(text, &xyz[3 * i]);
+        Line line;
+        line << static_cast<std::int64_t>(i + 1) << ' ';
+        put_point(line, &xyz[3 * i]);
+        line.append_to(text);
     });
 }
 
@@ -369,12 +387,11 @@ void write_ele(TextOut& out, const hullkit::Delaunay3& d, unsigned threads) {
     out.number(static_cast<std::int64_t>(d.tetrahedron_count()));
     out.put(" 4 0\n");
     put_rows(out, d.tetrahedron_count(), threads, [&](std::size_t t, std::string& text) {
-        append(text, static_cast<std::int64_t>(t + 1));
-        for (int k = 0; k < 4; ++k) {
-            text += ' ';
-            append(text, std::int64_t{d.tetrahedra[4 * t + k]} + 1);
-        }
-        text += '\n';
+        const std::uint32_t* corners = &d.tetrahedra[4 * t];
+        Line line;
+        line << static_cast<std::int64_t>(t + 1);
+        for (int k = 0; k < 4; ++k) line << ' ' << std::int64_t{corners[k]} + 1;
+        (line << '\n').append_to(text);
     });
 }
 
@@ -385,7 +402,11 @@ void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Dela
     out.put("# vtk DataFile Version 3.0\nhullkit delaunay3\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS ");
     out.number(static_cast<std::int64_t>(n));
     out.put(" double\n");
-    put_rows(out, n, threads, [&](std::size_t i, std::string& text) { append_point(text, &xyz[3 * i]); });
+    put_rows(out, n, threads, [&](std::size_t i, std::string& text) {
+        Line line;
+        put_point(line, &xyz[3 * i]);
+        line.append_to(text);
+    });
     const bool solid = d.dimension == 3;
     const std::vector<std::uint32_t>& cells = solid ? d.tetrahedra : d.triangles;
     const std::size_t arity = solid ? 4 : 3;
@@ -396,12 +417,10 @@ void write_vtk(TextOut& out, const std::vector<double>& xyz, const hullkit::Dela
     out.number(static_cast<std::int64_t>(count * (arity + 1)));
     out.put('\n');
     put_rows(out, count, threads, [&](std::size_t c, std::string& text) {
-        append(text, static_cast<std::int64_t>(arity));
-        for (std::size_t k = 0; k < arity; ++k) {
-            text += ' ';
-            append(text, static_cast<std::int64_t>(cells[arity * c + k]));
-        }
-        text += '\n';
+        Line line;
+        line << static_cast<std::int64_t>(arity);
+        for (std::size_t k = 0; k < arity; ++k) line << ' ' << static_cast<std::int64_t>(cells[arity * c + k]);
+        (line << '\n').append_to(text);
     });
     out.put("CELL_TYPES ");
     out.number(static_cast<std::int64_t>(count));
