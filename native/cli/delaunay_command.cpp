@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "cli_io.hpp"
@@ -55,7 +56,8 @@ Options:
                         order, and the triangles (indices = input indices);
                       json: {"dimension", "triangles": [[i,j,k],...],
                         "halfedges", "hull", "duplicates": [[i, first],...]}
-                        with --merge-cocircular also "polygons";
+                        with --merge-cocircular also "polygons", with
+                        --voronoi also "voronoi";
                       svg: a picture of the triangulation, its hull and the
                         points (with --voronoi, the Voronoi cells too);
                       without --format, an output FILE ending in .off, .json
@@ -63,7 +65,14 @@ Options:
   --algorithm NAME    {algorithms}
   --merge-cocircular  JSON: also the Delaunay polygons (the lifted hull's lower
                       faces before triangulation; a square grid gives squares)
-  --voronoi           SVG: also draw the Voronoi cells, clipped to the picture
+  --voronoi           JSON: also the whole Voronoi diagram, "voronoi":
+                        {"vertices": [[x,y],...] (cocircular triangles share
+                        one), "triangle_vertex", "ridge_points": [[p,q],...],
+                        "ridge_vertices": [[a,b],...] (a = -1: a ray),
+                        "cells": [[v,...],...] (per point, counter-clockwise;
+                        -1 last when unbounded; [] for a repeated point),
+                        "area": [...] (null when unbounded)};
+                      SVG: also draw the Voronoi cells, clipped to the picture
   --stats             print one JSON line to standard error: points,
                       triangles, hull, algorithm, seconds (the triangulation
                       alone)
@@ -184,8 +193,9 @@ bool parse_delaunay_args(const std::vector<std::string>& argv, DelaunayArgs* arg
     if (app.count("--algorithm") && !hullkit::parse_delaunay_algorithm(algorithm_name, &args->options.algorithm)) {
         throw UsageError("unknown algorithm \"" + algorithm_name + "\" (known: " + known_algorithms(false) + ")");
     }
-    if (args->voronoi && args->format != Format::Svg) {
-        throw UsageError("--voronoi draws the Voronoi cells in SVG output only (add --format svg)");
+    if (args->voronoi && args->format == Format::Off) {
+        throw UsageError("--voronoi adds the Voronoi diagram to JSON output or draws its cells in SVG, not in OFF "
+                         "(add --format json or --format svg)");
     }
     if (args->input.empty()) throw UsageError("INPUT is an empty file name");
     return true;
@@ -229,7 +239,66 @@ std::string write_delaunay_off(hullkit::PointSpan2 points, const hullkit::Delaun
     return out;
 }
 
-std::string write_delaunay_json(const hullkit::Delaunay& result) {
+/// JSON pairs [[a,b],...] from a flat array.
+template <typename Number>
+void append_json_pairs(std::string& out, const std::vector<Number>& values) {
+    out += '[';
+    for (std::size_t i = 0; i + 1 < values.size(); i += 2) {
+        if (i) out += ',';
+        out += '[';
+        if constexpr (std::is_floating_point_v<Number>) {
+            out += hullkit::format_double(values[i]);
+            out += ',';
+            out += hullkit::format_double(values[i + 1]);
+        } else {
+            out += std::to_string(values[i]);
+            out += ',';
+            out += std::to_string(values[i + 1]);
+        }
+        out += ']';
+    }
+    out += ']';
+}
+
+/// The whole Voronoi diagram as a JSON object, per input point like `hullkit delaunay3 --voronoi`:
+/// "cells" lists each point's vertices counter-clockwise (an unbounded cell ends with -1, the vertex
+/// at infinity), "area" is null for those; a repeated point has no cell of its own ([] and null).
+void append_voronoi_json(std::string& out, const hullkit::VoronoiDiagram& v, const hullkit::Delaunay& result) {
+    out += "{\"vertices\":";
+    append_json_pairs(out, v.vertices);
+    out += ",\"triangle_vertex\":";
+    append_json_array(out, v.triangle_vertex);
+    out += ",\"ridge_points\":";
+    append_json_pairs(out, v.ridge_points);
+    out += ",\"ridge_vertices\":";
+    append_json_pairs(out, v.ridge_vertices);
+    out += ",\"cells\":[";
+    std::string areas;
+    for (std::size_t i = 0; i < v.point_cell.size(); ++i) {
+        if (i) {
+            out += ',';
+            areas += ',';
+        }
+        const std::int32_t c = v.point_cell[i];
+        if (c < 0 || (!result.representative.empty() && result.representative[i] != i)) {
+            out += "[]";
+            areas += "null";
+            continue;
+        }
+        out += '[';
+        for (std::int64_t k = v.cell_offsets[c]; k < v.cell_offsets[c + 1]; ++k) {
+            if (k != v.cell_offsets[c]) out += ',';
+            out += std::to_string(v.cells[k]);
+        }
+        out += ']';
+        areas += std::isfinite(v.areas[c]) ? hullkit::format_double(v.areas[c]) : std::string("null");
+    }
+    out += "],\"area\":[";
+    out += areas;
+    out += "]}";
+}
+
+std::string write_delaunay_json(const hullkit::Delaunay& result, const hullkit::VoronoiDiagram* voronoi) {
     std::string out = "{\"dimension\":" + std::to_string(result.dimension) + ",\"triangles\":[";
     for (std::size_t t = 0; t < result.triangle_count(); ++t) {
         if (t) out += ',';
@@ -269,6 +338,10 @@ std::string write_delaunay_json(const hullkit::Delaunay& result) {
             out += ']';
         }
         out += ']';
+    }
+    if (voronoi) {
+        out += ",\"voronoi\":";
+        append_voronoi_json(out, *voronoi, result);
     }
     out += "}\n";
     return out;
@@ -390,7 +463,15 @@ int delaunay_main(const std::vector<std::string>& argv) {
     std::string out;
     switch (args.format) {
         case Format::Off: out = write_delaunay_off(span, result); break;
-        case Format::Json: out = write_delaunay_json(result); break;
+        case Format::Json:
+            if (args.voronoi) {
+                const hullkit::VoronoiDiagram diagram = hullkit::delaunay_voronoi_diagram(span, result, args.options.threads);
+                if (!diagram.ok()) throw UsageError(source_name(args.input) + ": " + diagram.error);
+                out = write_delaunay_json(result, &diagram);
+            } else {
+                out = write_delaunay_json(result, nullptr);
+            }
+            break;
         case Format::Svg: out = write_delaunay_svg(span, result, args.voronoi); break;
     }
     write_output(args.output, out);

@@ -359,6 +359,118 @@ TEST_CASE("delaunay cli: --merge-cocircular reports the grid's squares") {
     }
 }
 
+TEST_CASE("delaunay cli: --voronoi in JSON gives a grid's diagram exactly: a vertex per square, unit cells inside") {
+    TempDir dir("hullkit-delaunay-cli");
+    Points xy = grid_points(5);  // 16 unit squares; points 6-8, 11-13, 16-18 are inside
+    xy.insert(xy.end(), {2.0, 2.0});  // point 25 repeats point 12
+    write_text(dir.file("grid.txt"), xy_lines(xy));
+    const RunResult run = run_cli(dir, {"delaunay", dir.file("grid.txt"), "--format", "json", "--voronoi"});
+    REQUIRE(run.exit_code == 0);
+    const nlohmann::json v = nlohmann::json::parse(run.out).at("voronoi");
+    // One vertex per square, at its centre exactly.
+    std::set<std::pair<double, double>> centres;
+    for (const auto& vertex : v["vertices"]) centres.insert({vertex[0].get<double>(), vertex[1].get<double>()});
+    CHECK(v["vertices"].size() == 16);
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) CHECK(centres.count({j + 0.5, i + 0.5}) == 1);
+    }
+    CHECK(v["triangle_vertex"].size() == 32);
+    // A ridge per grid edge (the squares' diagonals are not Delaunay edges of the merged diagram).
+    REQUIRE(v["ridge_points"].size() == 40);
+    REQUIRE(v["ridge_vertices"].size() == 40);
+    for (std::size_t r = 0; r < 40; ++r) {
+        const std::size_t p = v["ridge_points"][r][0], q = v["ridge_points"][r][1];
+        CHECK(std::abs(xy[2 * p] - xy[2 * q]) + std::abs(xy[2 * p + 1] - xy[2 * q + 1]) == 1.0);
+        const int a = v["ridge_vertices"][r][0], b = v["ridge_vertices"][r][1];
+        CHECK(b >= 0);
+        CHECK(a >= -1);
+    }
+    REQUIRE(v["cells"].size() == 26);
+    REQUIRE(v["area"].size() == 26);
+    for (std::size_t i = 0; i < 25; ++i) {
+        INFO("point " << i);
+        const auto& cell = v["cells"][i];
+        const double x = xy[2 * i], y = xy[2 * i + 1];
+        const bool inside = x > 0 && x < 4 && y > 0 && y < 4;
+        if (inside) {
+            // The unit square around the point, counter-clockwise, from its lowest vertex.
+            REQUIRE(cell.size() == 4);
+            CHECK(v["area"][i].get<double>() == 1.0);
+            double twice_area = 0;
+            for (std::size_t k = 0; k < 4; ++k) {
+                const auto& a = v["vertices"][cell[k].get<std::size_t>()];
+                const auto& b = v["vertices"][cell[(k + 1) % 4].get<std::size_t>()];
+                CHECK(std::abs(a[0].get<double>() - x) == 0.5);
+                CHECK(std::abs(a[1].get<double>() - y) == 0.5);
+                twice_area += a[0].get<double>() * b[1].get<double>() - a[1].get<double>() * b[0].get<double>();
+            }
+            CHECK(twice_area == 2.0);
+        } else {
+            REQUIRE(!cell.empty());
+            CHECK(cell.back() == -1);
+            CHECK(v["area"][i].is_null());
+        }
+    }
+    CHECK(v["cells"][25].empty());
+    CHECK(v["area"][25].is_null());
+}
+
+TEST_CASE("delaunay cli: --voronoi in JSON on random points: nearest-point vertices, Delaunay ridges, areas that add up") {
+    TempDir dir("hullkit-delaunay-cli");
+    const Points xy = uniform_points(300, 41);
+    write_text(dir.file("points.txt"), xy_lines(xy));
+    const RunResult run = run_cli(dir, {"delaunay", dir.file("points.txt"), "--format", "json", "--voronoi", "--threads", "1"});
+    REQUIRE(run.exit_code == 0);
+    const nlohmann::json json = nlohmann::json::parse(run.out);
+    const nlohmann::json& v = json["voronoi"];
+    // The same diagram on two threads.
+    const RunResult two = run_cli(dir, {"delaunay", dir.file("points.txt"), "--format", "json", "--voronoi", "--threads", "2"});
+    CHECK(two.out == run.out);
+    // Ridges are exactly the triangulation's edges (general position: no cocircular merging).
+    std::set<std::pair<std::size_t, std::size_t>> edges, ridges;
+    for (const auto& t : json["triangles"]) {
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t a = t[k], b = t[(k + 1) % 3];
+            edges.insert({std::min(a, b), std::max(a, b)});
+        }
+    }
+    for (const auto& r : v["ridge_points"]) ridges.insert({r[0].get<std::size_t>(), r[1].get<std::size_t>()});
+    CHECK(ridges == edges);
+    CHECK(v["vertices"].size() == json["triangles"].size());
+    const std::size_t n = xy.size() / 2;
+    REQUIRE(v["cells"].size() == n);
+    const std::vector<std::uint32_t> hull = json["hull"].get<std::vector<std::uint32_t>>();
+    const std::set<std::uint32_t> on_hull(hull.begin(), hull.end());
+    std::size_t bounded = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        INFO("point " << i);
+        const auto& cell = v["cells"][i];
+        REQUIRE(cell.size() >= 3);
+        CHECK((cell.back() == -1) == (on_hull.count(static_cast<std::uint32_t>(i)) == 1));
+        double twice_area = 0;
+        const std::size_t corners = cell.back() == -1 ? cell.size() - 1 : cell.size();
+        for (std::size_t k = 0; k < corners; ++k) {
+            // Every corner of the cell is at least as near to this point as to any other (to rounding).
+            const auto& a = v["vertices"][cell[k].get<std::size_t>()];
+            const double ax = a[0], ay = a[1];
+            const double mine = std::hypot(ax - xy[2 * i], ay - xy[2 * i + 1]);
+            double nearest = mine;
+            for (std::size_t q = 0; q < n; ++q) nearest = std::min(nearest, std::hypot(ax - xy[2 * q], ay - xy[2 * q + 1]));
+            CHECK(mine <= nearest * (1 + 1e-9) + 1e-12);
+            const auto& b = v["vertices"][cell[(k + 1) % corners].get<std::size_t>()];
+            twice_area += ax * b[1].get<double>() - ay * b[0].get<double>();
+        }
+        if (cell.back() != -1) {
+            ++bounded;
+            CHECK(twice_area > 0);  // counter-clockwise
+            CHECK(v["area"][i].get<double>() == Approx(twice_area / 2).epsilon(1e-9));
+        } else {
+            CHECK(v["area"][i].is_null());
+        }
+    }
+    CHECK(bounded == n - hull.size());
+}
+
 TEST_CASE("delaunay cli: --algorithm giftwrap writes the same triangulation as the default") {
     TempDir dir("hullkit-delaunay-cli");
     Points xy = uniform_points(30, 3);
@@ -466,6 +578,12 @@ TEST_CASE("delaunay cli: collinear and tiny inputs give no triangles, not an err
         const RunResult svg = run_cli(dir, {"delaunay", dir.file("points.txt"), "--format", "svg", "--voronoi"});
         REQUIRE(svg.exit_code == 0);
         CHECK(xml_problem(svg.out).empty());
+        // The diagram of collinear points: a ray-only ridge between neighbours, every cell unbounded.
+        const nlohmann::json v = nlohmann::json::parse(run_cli(dir, {"delaunay", dir.file("points.txt"), "--format", "json", "--voronoi"}).out)["voronoi"];
+        CHECK(v["vertices"].empty());
+        for (const auto& r : v["ridge_vertices"]) CHECK(r == nlohmann::json::parse("[-1,-1]"));
+        CHECK(v["ridge_points"].size() == (dimension == 1 ? v["cells"].size() - 1 : 0));
+        for (const auto& a : v["area"]) CHECK(a.is_null());
     }
     // Collinear points: the hull lists them in order along the line.
     write_text(dir.file("points.txt"), "2 2\n0 0\n3 3\n1 1\n");
@@ -486,7 +604,7 @@ TEST_CASE("delaunay cli: usage and input errors are one line with exit status 2"
                         "unknown algorithm \"quickhull\" (known: incremental, giftwrap)");
     require_usage_error(run_cli(dir, {"delaunay", points, "-o"}), "needs a value");
     require_usage_error(run_cli(dir, {"delaunay", points, "-o", ""}), "needs a file name");
-    require_usage_error(run_cli(dir, {"delaunay", points, "--voronoi"}), "--voronoi");
+    require_usage_error(run_cli(dir, {"delaunay", points, "--voronoi"}), "--voronoi adds the Voronoi diagram to JSON output or draws its cells in SVG, not in OFF");
     require_usage_error(run_cli(dir, {"delaunay", dir.file("missing.txt")}), "missing.txt: cannot open");
     require_usage_error(run_cli(dir, {"delaunay", points, "-o", dir.file("no/such/dir/out.off")}), "cannot open for writing");
 
