@@ -11,6 +11,7 @@ const QUALITY_OPTIONS = ['minAngle', 'maxArea', 'conforming', 'maxSteinerPoints'
 const KEEP_SEGMENTS = { none: 0, boundary: 1, all: 2 };
 const POLYGON_OPTIONS = ['dim', 'fill', ...QUALITY_OPTIONS];
 const GRAPH_OPTIONS = ['holes', 'removeExterior', ...QUALITY_OPTIONS];
+const MESH_OPTIONS = ['edges', 'triangleMaxArea', ...QUALITY_OPTIONS];
 
 /** The refinement options checked (the core checks the ranges again and names them). */
 function qualityOf(options, where) {
@@ -62,13 +63,15 @@ function userTest(unsuitable, where) {
  * Copies the core's result out (or throws its error naming the point or segment, or what the
  * caller's unsuitable test threw) and frees it.
  */
-function takeResult(result, where, test) {
+function takeResult(result, where, test, extra = () => ({})) {
   try {
     if (test.error !== null) throw test.error;
     if (!result.ok()) {
       const error = new HullkitError(`${where}: ${result.error}`, { pointIndex: result.errorPoint() });
       const segment = result.errorSegment();
       if (segment >= 0) error.segmentIndex = segment;
+      const triangle = result.errorTriangle();
+      if (triangle >= 0) error.triangleIndex = triangle;
       throw error;
     }
     const coords = result.coordsView().slice();
@@ -86,6 +89,7 @@ function takeResult(result, where, test) {
       crossingCount: result.crossingCount(),
       steinerCount: result.steinerCount(),
       unrefinedCount: result.unrefinedCount(),
+      ...extra(result),
     };
   } finally {
     result.delete();
@@ -192,5 +196,40 @@ export function constrainedDelaunay(core, coords, edges, options = {}) {
     ),
     where,
     quality.test,
+  );
+}
+
+/**
+ * Triangle's -r: a triangulation refined (see hullkit.d.ts).
+ * @param core the loaded WebAssembly module
+ */
+export function refineMesh(core, coords, triangles, options = {}) {
+  const where = 'refineMesh';
+  const checked = checkOptions(options, MESH_OPTIONS, where);
+  const quality = qualityOf(checked, where);
+  const xy = flatCoordinates(coords, where, 2);
+  const corners = toUint32(triangles ?? [], `${where}: triangles`);
+  if (corners.length % 3 !== 0) throw new HullkitError(`${where}: ${corners.length} triangle indices is not a whole number of triples`);
+  const segments = toUint32(checked.edges ?? [], `${where}: edges`);
+  if (segments.length % 2 !== 0) throw new HullkitError(`${where}: ${segments.length} edge indices is not a whole number of pairs`);
+  const perTriangle = checked.triangleMaxArea !== undefined;
+  let areas = new Float64Array(0);
+  if (perTriangle) {
+    if (checked.triangleMaxArea === null || typeof checked.triangleMaxArea !== 'object' || typeof checked.triangleMaxArea.length !== 'number') {
+      throw new HullkitError(`${where}: triangleMaxArea must be an array of numbers, one per triangle`);
+    }
+    areas = Float64Array.from(checked.triangleMaxArea);
+    if (areas.length !== corners.length / 3) {
+      throw new HullkitError(`${where}: triangleMaxArea holds ${areas.length} numbers for ${corners.length / 3} triangles`);
+    }
+  }
+  const count = xy.length / 2;
+  return takeResult(
+    withHeap(core, [xy, corners, segments, areas], where, (p, t, s, a) =>
+      core.refineMeshFromHeap(p, count, t, corners.length / 3, s, segments.length / 2, perTriangle ? a : 0, ...quality.args),
+    ),
+    where,
+    quality.test,
+    (result) => (perTriangle ? { sourceTriangle: result.triangleRegionView().slice() } : {}),
   );
 }

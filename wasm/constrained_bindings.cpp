@@ -64,7 +64,26 @@ hullkit::ConstrainedDelaunay polygon_from_heap(std::uintptr_t xy, std::uint32_t 
                                         ring_count, options);
 }
 
+/// Triangle's -r: the mesh's triangles (3 * triangle_count uint32), optional kept segments and, when
+/// areas is not 0, one area bound per triangle (doubles).
+hullkit::ConstrainedDelaunay mesh_from_heap(std::uintptr_t xy, std::uint32_t count, std::uintptr_t triangles,
+                                            std::uint32_t triangle_count, std::uintptr_t segments,
+                                            std::uint32_t segment_count, std::uintptr_t areas, double min_angle,
+                                            double max_area, bool conforming, double max_steiner_points,
+                                            unsigned keep_segments, val unsuitable) {
+    hullkit::RefineMeshOptions options;
+    options.threads = 1;
+    options.quality = quality_of(min_angle, max_area, conforming, max_steiner_points, keep_segments, unsuitable);
+    if (areas != 0) {
+        options.triangle_max_area.assign(heap_at<double>(areas), heap_at<double>(areas) + triangle_count);
+    }
+    return hullkit::refine_mesh(hullkit::PointSpan2(heap_at<double>(xy), count), heap_at<std::uint32_t>(triangles),
+                                triangle_count, heap_at<std::uint32_t>(segments), segment_count, options);
+}
+
 val triangles_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.triangles); }
+val triangle_region_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.triangle_region); }
+double error_triangle(const hullkit::ConstrainedDelaunay& d) { return static_cast<double>(d.error_triangle); }
 val halfedges_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.halfedges); }
 val constrained_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.constrained); }
 val coords_view(const hullkit::ConstrainedDelaunay& d) { return view_of(d.coords); }
@@ -86,6 +105,8 @@ EMSCRIPTEN_BINDINGS(hullkit_constrained) {
         .function("ok", &result_ok)
         .function("errorPoint", &error_point)
         .function("errorSegment", &error_segment)
+        .function("errorTriangle", &error_triangle)
+        .function("triangleRegionView", &triangle_region_view)
         .function("duplicateCount", &duplicate_count)
         .function("crossingCount", &crossing_count)
         .function("steinerCount", &steiner_count)
@@ -97,4 +118,5 @@ EMSCRIPTEN_BINDINGS(hullkit_constrained) {
         .function("representativeView", &representative_view);
     emscripten::function("constrainedDelaunayFromHeap", &graph_from_heap);
     emscripten::function("triangulatePolygonFromHeap", &polygon_from_heap);
+    emscripten::function("refineMeshFromHeap", &mesh_from_heap);
 }

@@ -264,6 +264,28 @@ export interface Hullkit {
    */
   constrainedDelaunay(coords: Float64Array | ArrayLike<number>, edges: Uint32Array | ArrayLike<number>, options?: GraphOptions): ConstrainedResult;
   /**
+   * Triangle's -r: refines a triangulation, `triangles` (index triples into `coords`, either
+   * orientation: an earlier result's `triangles` will do). The domain is their union: its boundary
+   * (edges of one triangle only) and `edges` (index pairs) are kept, the inside is triangulated anew
+   * (constrained Delaunay) and refined by `minAngle`, `maxArea`, `conforming`, `unsuitable`. With
+   * `triangleMaxArea` (one bound per triangle, 0 or less: none) every edge of the mesh is kept so
+   * that each bound holds over its own triangle, and `sourceTriangle` says which input triangle each
+   * output triangle lies in. Vertices no triangle or edge uses stay in `coords`, in no triangle.
+   *
+   * @example
+   * const first = hullkit.triangulatePolygon(coords, holeIndices);
+   * const finer = hullkit.refineMesh(first.coords, first.triangles, { minAngle: 30, maxArea: 0.5 });
+   *
+   * @throws {HullkitError} for a triangle with an index past the points, no area, or an edge on the
+   *   same side as another's (overlap) (`triangleIndex`), a non-finite coordinate (`pointIndex`), a
+   *   triangleMaxArea of the wrong length, a bad option.
+   */
+  refineMesh(
+    coords: Float64Array | ArrayLike<number>,
+    triangles: Uint32Array | ArrayLike<number>,
+    options?: MeshRefineOptions,
+  ): ConstrainedResult & { sourceTriangle?: Int32Array };
+  /**
    * The index of the input point nearest to (x, y) (exact ties: the lowest index; a duplicate is
    * never returned, its representative is), found by walking `triangulation` from point `start`
    * (default 0; the previous answer is a good start for a moving query). -1 when there are no points.
@@ -666,7 +688,14 @@ export interface GraphOptions extends QualityOptions {
   holes?: Float64Array | ArrayLike<number>;
 }
 
-/** What triangulatePolygon and constrainedDelaunay return. */
+export interface MeshRefineOptions extends QualityOptions {
+  /** Edges to keep inside the mesh, index pairs (flat). */
+  edges?: Uint32Array | ArrayLike<number>;
+  /** One area bound per triangle (0 or less: none); every edge of the mesh is then kept. */
+  triangleMaxArea?: Float64Array | ArrayLike<number>;
+}
+
+/** What triangulatePolygon, constrainedDelaunay and refineMesh return. */
 export interface ConstrainedResult {
   /** 2 when the points span the plane; 1, 0, -1 for collinear, one, no distinct points (no triangles). */
   dimension: 2 | 1 | 0 | -1;
@@ -1119,6 +1148,8 @@ export class HullkitError extends Error {
   queryIndex?: number;
   /** constrainedDelaunay: index of the segment to blame (an index past the points). */
   segmentIndex?: number;
+  /** refineMesh: index of the triangle to blame. */
+  triangleIndex?: number;
   /** readPoints / readPoints2d / readMesh: the 1-based line the reader names, when it names one. */
   line?: number;
 }

@@ -4,7 +4,7 @@ import createHullkitCore from '../build/wasm/hullkit_core.mjs';
 import { HullkitError, bytesOf, checkOptions, copyIn, isBytes, takeTrace, toFloat64, toUint32 } from './internal.js';
 import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayVoronoiDiagram, delaunayGiftwrapTrace, DELAUNAY_ALGORITHMS, DELAUNAY_TRACE_MAX_POINTS } from './delaunay.js';
 import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
-import { constrainedDelaunay, triangulatePolygon, FILL_RULES } from './constrained.js';
+import { constrainedDelaunay, refineMesh, triangulatePolygon, FILL_RULES } from './constrained.js';
 import { checkRoute, RouteChecker } from './route.js';
 
 export { HullkitError };
@@ -48,6 +48,7 @@ export default async function createHullkit() {
     delaunayGiftwrapTrace: (xy) => delaunayGiftwrapTrace(core, xy),
     triangulatePolygon: (coords, holeIndices, options) => triangulatePolygon(core, coords, holeIndices, options),
     constrainedDelaunay: (coords, edges, options) => constrainedDelaunay(core, coords, edges, options),
+    refineMesh: (coords, triangles, options) => refineMesh(core, coords, triangles, options),
     delaunay3: (xyz, options) => delaunay3(core, xyz, options),
     verifyDelaunay3: (xyz, tetrahedra, options) => verifyDelaunay3(core, xyz, tetrahedra, options),
     locate3: (xyz, triangulation, queries, options) => locate3(core, xyz, triangulation, queries, options),

@@ -27,7 +27,7 @@ const char* const kUsage =
                            [--fill evenodd|nonzero] [--convex] [--stats]
                            [--min-angle DEG] [--max-area A] [--conforming]
                            [--max-steiner N] [--keep-segments boundary|all]
-                           [--region-attributes]
+                           [--region-attributes] [--triangle-areas FILE]
 
 Triangulates polygons with holes, or a planar straight-line graph, exactly: a
 constrained Delaunay triangulation in which every ring edge or segment is an
@@ -49,6 +49,11 @@ Input (the format from the file name, else the content):
                   with --convex the exterior is kept (Triangle's -c); its
                   regions' area bounds apply, and their attributes with
                   --region-attributes
+  Triangle .node  vertices: their Delaunay triangulation (Triangle without -p)
+  Triangle .ele   a mesh to refine (Triangle's -r), its vertices read from the
+                  .node file beside it: the domain is its triangles, their
+                  boundary is kept and the inside triangulated anew, then
+                  refined by --min-angle, --max-area, --triangle-areas
 Rings are filled by --fill: evenodd (default; holes whatever their orientation)
 or nonzero (GeoJSON's and SVG's nonzero rule: holes wound the other way).
 
@@ -89,6 +94,11 @@ Options:
                       -A): an attribute column in the .ele file, "attributes"
                       (one per triangle) in JSON; the last of several region
                       points in one region wins
+  --triangle-areas FILE
+                      .ele input: each triangle's own area bound from
+                      Triangle's .area file ("index area" lines; 0 or less:
+                      none; Triangle's -ra); every edge of the mesh is then
+                      kept (default: none)
   --max-steiner N     a whole number from 0 to 4000000000: fail once
                       refinement has added N points (Triangle's -S; default
                       0: no cap)
@@ -134,6 +144,11 @@ struct Input {
     std::vector<double> holes;
     std::vector<hullkit::RegionSeed> regions;  ///< a .poly's regional area bounds
     std::vector<double> region_attributes;     ///< and their attributes
+    bool mesh = false;                          ///< a .ele (and .node) to refine
+    std::vector<std::uint32_t> triangles;       ///< its triangles, 0-based
+    std::vector<std::size_t> triangle_line;     ///< per triangle, its line of the .ele
+    std::string node_source;                    ///< the .node file beside it
+    bool whole_hull = false;                    ///< a .node alone: no segments, the whole hull
 };
 
 /// The numbers on a line, before any '#'; commas count as spaces. False if a word is not a number.
@@ -185,88 +200,174 @@ void read_rings(const std::string& text, const std::string& source, Input* in) {
     }
 }
 
+/// Triangle's files (.poly, .node, .ele, .area): lines of numbers, '#' comments, read one after
+/// another; errors name the file and line.
+class TriangleFile {
+public:
+    TriangleFile(const std::string& text, std::string source) : lines_(lines_of(text)), source_(std::move(source)) {}
+    /// The next line with numbers on it (they are in v), its 1-based number.
+    std::size_t next(const char* what) {
+        for (; i_ < lines_.size(); ++i_) {
+            if (!numbers_of(lines_[i_], &v))
+                throw UsageError(at(i_ + 1) + ": not numbers in the " + what + ": \"" + lines_[i_] + "\"");
+            if (!v.empty()) return ++i_;
+        }
+        throw UsageError(source_ + ": the file ends before the " + std::string(what));
+    }
+    std::uint64_t whole(double value, std::size_t line, const char* what) const {
+        if (!(value >= 0 && value < 4294967296.0 && value == static_cast<double>(static_cast<std::uint64_t>(value))))
+            throw UsageError(at(line) + ": " + what + " must be a whole number, got " + hullkit::format_double(value));
+        return static_cast<std::uint64_t>(value);
+    }
+    /// Whether a line from here on holds numbers (an optional section follows).
+    bool more() {
+        std::vector<double> w;
+        for (std::size_t j = i_; j < lines_.size(); ++j)
+            if (numbers_of(lines_[j], &w) && !w.empty()) return true;
+        return false;
+    }
+    /// No numbers after the last section.
+    void end(const char* after) {
+        std::vector<double> w;
+        for (std::size_t j = i_; j < lines_.size(); ++j) {
+            if (numbers_of(lines_[j], &w) && !w.empty()) throw UsageError(at(j + 1) + ": unexpected numbers after the " + after);
+        }
+    }
+    /// `count` lines "index x y ...", numbered one after another from the first's index (returned).
+    std::uint64_t vertices(std::uint64_t count, Input* in) {
+        std::int64_t first_index = -1;
+        for (std::uint64_t k = 0; k < count; ++k) {
+            const std::size_t line = next("vertices");
+            if (v.size() < 3) throw UsageError(at(line) + ": expected \"index x y\"");
+            const std::uint64_t index = whole(v[0], line, "a vertex index");
+            if (first_index < 0) first_index = static_cast<std::int64_t>(index);
+            if (index != static_cast<std::uint64_t>(first_index) + k)
+                throw UsageError(at(line) + ": vertex index " + std::to_string(index) + ", expected " +
+                                 std::to_string(first_index + static_cast<std::int64_t>(k)));
+            in->xy.push_back(v[1]), in->xy.push_back(v[2]);
+            in->line.push_back(line);
+        }
+        return first_index < 0 ? 0 : static_cast<std::uint64_t>(first_index);
+    }
+    /// `arity` vertex numbers from v[1] on (numbered from `first`, `count` of them), made 0-based.
+    void corners(std::size_t line, int arity, std::uint64_t first, std::uint64_t count, const char* what,
+                 std::vector<std::uint32_t>* out) const {
+        if (v.size() < static_cast<std::size_t>(arity) + 1)
+            throw UsageError(at(line) + ": expected an index and " + std::to_string(arity) + " vertex numbers");
+        for (int k = 1; k <= arity; ++k) {
+            const std::uint64_t vertex = whole(v[k], line, what);
+            if (vertex < first || vertex - first >= count)
+                throw UsageError(at(line) + ": " + what + " " + std::to_string(vertex) + " is not one of the " +
+                                 std::to_string(count) + " vertices (numbered from " + std::to_string(first) + ")");
+            out->push_back(static_cast<std::uint32_t>(vertex - first));
+        }
+    }
+    std::string at(std::size_t line) const { return source_ + " line " + std::to_string(line); }
+    std::vector<double> v;
+
+private:
+    std::vector<std::string> lines_;
+    std::string source_;
+    std::size_t i_ = 0;
+};
+
 void read_poly(const std::string& text, const std::string& source, Input* in) {
     in->poly = true;
-    const std::vector<std::string> lines = lines_of(text);
-    std::size_t i = 0;
-    std::vector<double> v;
-    // The next line with numbers on it.
-    auto next = [&](const char* what) -> std::size_t {
-        for (; i < lines.size(); ++i) {
-            if (!numbers_of(lines[i], &v))
-                throw UsageError(source + " line " + std::to_string(i + 1) + ": not numbers in the " + what + ": \"" + lines[i] + "\"");
-            if (!v.empty()) return ++i;
-        }
-        throw UsageError(source + ": the file ends before the " + std::string(what));
-    };
-    auto whole = [&](double value, std::size_t line, const char* what) {
-        if (!(value >= 0 && value < 4294967296.0 && value == static_cast<double>(static_cast<std::uint64_t>(value))))
-            throw UsageError(source + " line " + std::to_string(line) + ": " + what + " must be a whole number, got " + hullkit::format_double(value));
-        return static_cast<std::uint64_t>(value);
-    };
-    std::size_t line = next("header (vertex count, dimension, attributes, markers)");
-    const std::uint64_t count = whole(v[0], line, "the vertex count");
-    if (count == 0) throw UsageError(source + " line " + std::to_string(line) + ": vertices in a separate .node file are not supported; list them in the .poly file");
-    if (v.size() > 1 && v[1] != 2) throw UsageError(source + " line " + std::to_string(line) + ": the dimension must be 2");
+    TriangleFile file(text, source);
+    const std::vector<double>& v = file.v;
+    std::size_t line = file.next("header (vertex count, dimension, attributes, markers)");
+    const std::uint64_t count = file.whole(v[0], line, "the vertex count");
+    if (count == 0) throw UsageError(file.at(line) + ": vertices in a separate .node file are not supported; list them in the .poly file");
+    if (v.size() > 1 && v[1] != 2) throw UsageError(file.at(line) + ": the dimension must be 2");
     // Attribute and marker counts: checked to be whole numbers; the values after x y are not used.
-    if (v.size() > 2) whole(v[2], line, "the attribute count");
-    if (v.size() > 3) whole(v[3], line, "the marker count");
-    std::int64_t first_index = -1;
-    for (std::uint64_t k = 0; k < count; ++k) {
-        line = next("vertices");
-        if (v.size() < 3)
-            throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
-        const std::uint64_t index = whole(v[0], line, "a vertex index");
-        if (first_index < 0) first_index = static_cast<std::int64_t>(index);
-        if (index != static_cast<std::uint64_t>(first_index) + k)
-            throw UsageError(source + " line " + std::to_string(line) + ": vertex index " + std::to_string(index) + ", expected " +
-                             std::to_string(first_index + static_cast<std::int64_t>(k)));
-        in->xy.push_back(v[1]), in->xy.push_back(v[2]);
-        in->line.push_back(line);
-    }
-    line = next("segment header");
-    const std::uint64_t segments = whole(v[0], line, "the segment count");
+    if (v.size() > 2) file.whole(v[2], line, "the attribute count");
+    if (v.size() > 3) file.whole(v[3], line, "the marker count");
+    const std::uint64_t first_index = file.vertices(count, in);
+    line = file.next("segment header");
+    const std::uint64_t segments = file.whole(v[0], line, "the segment count");
     for (std::uint64_t k = 0; k < segments; ++k) {
-        line = next("segments");
-        if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index a b\"");
-        for (int end = 1; end <= 2; ++end) {
-            const std::uint64_t vertex = whole(v[end], line, "a segment's vertex");
-            if (vertex < static_cast<std::uint64_t>(first_index) || vertex - first_index >= count)
-                throw UsageError(source + " line " + std::to_string(line) + ": segment vertex " + std::to_string(vertex) + " is not one of the " +
-                                 std::to_string(count) + " vertices (numbered from " + std::to_string(first_index) + ")");
-            in->segments.push_back(static_cast<std::uint32_t>(vertex - first_index));
-        }
+        line = file.next("segments");
+        file.corners(line, 2, first_index, count, "segment vertex", &in->segments);
         in->segment_line.push_back(line);
     }
-    // Whether a line from i on holds numbers (an optional section follows).
-    auto more = [&]() {
-        for (std::size_t j = i; j < lines.size(); ++j)
-            if (numbers_of(lines[j], &v) && !v.empty()) return true;
-        return false;
-    };
-    if (!more()) return;  // no hole section: none
-    line = next("hole header");
-    const std::uint64_t holes = whole(v[0], line, "the hole count");
+    if (!file.more()) return;  // no hole section: none
+    line = file.next("hole header");
+    const std::uint64_t holes = file.whole(v[0], line, "the hole count");
     for (std::uint64_t k = 0; k < holes; ++k) {
-        line = next("holes");
-        if (v.size() < 3) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y\"");
+        line = file.next("holes");
+        if (v.size() < 3) throw UsageError(file.at(line) + ": expected \"index x y\"");
         in->holes.push_back(v[1]), in->holes.push_back(v[2]);
     }
-    if (!more()) return;
+    if (!file.more()) return;
     // Regions: "index x y attribute max_area" (a max_area <= 0 is no bound, as Triangle reads it).
-    line = next("region header");
-    const std::uint64_t regions = whole(v[0], line, "the region count");
+    line = file.next("region header");
+    const std::uint64_t regions = file.whole(v[0], line, "the region count");
     for (std::uint64_t k = 0; k < regions; ++k) {
-        line = next("regions");
-        if (v.size() < 4) throw UsageError(source + " line " + std::to_string(line) + ": expected \"index x y attribute [max_area]\"");
+        line = file.next("regions");
+        if (v.size() < 4) throw UsageError(file.at(line) + ": expected \"index x y attribute [max_area]\"");
         const double area = v.size() >= 5 && v[4] > 0 ? v[4] : 0.0;
         in->regions.push_back({v[1], v[2], area});
         in->region_attributes.push_back(v[3]);
     }
-    for (std::size_t j = i; j < lines.size(); ++j) {
-        if (numbers_of(lines[j], &v) && !v.empty())
-            throw UsageError(source + " line " + std::to_string(j + 1) + ": unexpected numbers after the regions");
+    file.end("regions");
+}
+
+/// Triangle's .node: "count 2 [attributes [markers]]", then "index x y ..." lines. Returns the
+/// vertex count and sets *first to the first index.
+std::uint64_t read_node_vertices(const std::string& text, const std::string& source, Input* in, std::uint64_t* first) {
+    TriangleFile node(text, source);
+    const std::size_t line = node.next("header (vertex count, dimension, attributes, markers)");
+    const std::uint64_t count = node.whole(node.v[0], line, "the vertex count");
+    if (node.v.size() > 1 && node.v[1] != 2) throw UsageError(node.at(line) + ": the dimension must be 2");
+    *first = node.vertices(count, in);
+    node.end("vertices");
+    return count;
+}
+
+/// A .node alone: the Delaunay triangulation of its vertices (Triangle without -p).
+void read_node(const std::string& text, const std::string& source, Input* in) {
+    in->poly = true;
+    in->whole_hull = true;
+    std::uint64_t first = 0;
+    read_node_vertices(text, source, in, &first);
+}
+
+/// A mesh to refine (Triangle's -r): BASE.ele's triangles over BASE.node's vertices.
+void read_node_ele(const std::string& ele_text, const std::string& ele_source, const std::string& node_path, Input* in) {
+    in->mesh = true;
+    in->node_source = node_path;
+    std::uint64_t first = 0;
+    const std::uint64_t count = read_node_vertices(read_input(node_path), node_path, in, &first);
+    TriangleFile ele(ele_text, ele_source);
+    std::size_t line = 0;
+    line = ele.next("header (triangle count, corners per triangle, attributes)");
+    const std::uint64_t triangles = ele.whole(ele.v[0], line, "the triangle count");
+    if (ele.v.size() > 1 && ele.v[1] != 3)
+        throw UsageError(ele.at(line) + ": only 3-corner triangles can be refined, the header says " + hullkit::format_double(ele.v[1]));
+    for (std::uint64_t k = 0; k < triangles; ++k) {
+        line = ele.next("triangles");
+        ele.corners(line, 3, first, count, "corner", &in->triangles);
+        in->triangle_line.push_back(line);
     }
+    ele.end("triangles");
+}
+
+/// Triangle's .area file: per triangle of the mesh, its own area bound (<= 0: none).
+std::vector<double> read_area(const std::string& path, std::size_t triangles) {
+    TriangleFile file(read_input(path), path);
+    std::size_t line = file.next("header (triangle count)");
+    const std::uint64_t count = file.whole(file.v[0], line, "the triangle count");
+    if (count != triangles)
+        throw UsageError(file.at(line) + ": " + std::to_string(count) + " areas for a mesh of " + std::to_string(triangles) + " triangles");
+    std::vector<double> areas;
+    for (std::uint64_t k = 0; k < count; ++k) {
+        line = file.next("areas");
+        if (file.v.size() < 2) throw UsageError(file.at(line) + ": expected \"index area\"");
+        if (!std::isfinite(file.v[1])) throw UsageError(file.at(line) + ": the area is not a finite number");
+        areas.push_back(file.v[1]);
+    }
+    file.end("areas");
+    return areas;
 }
 
 void add_geojson_polygon(const nlohmann::json& rings, const std::string& where, Input* in) {
@@ -312,6 +413,10 @@ Input read_input_file(const std::string& path) {
     const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     if (ext == "poly") {
         read_poly(text, source, &in);
+    } else if (ext == "node") {
+        read_node(text, source, &in);
+    } else if (ext == "ele") {
+        read_node_ele(text, source, path.substr(0, path.size() - 3) + "node", &in);
     } else if (ext == "json" || ext == "geojson" || (first != std::string::npos && text[first] == '{')) {
         nlohmann::json value;
         try {
@@ -331,6 +436,7 @@ struct Args {
     Format format = Format::Off;
     hullkit::FillRule fill = hullkit::FillRule::EvenOdd;
     bool convex = false, stats = false, region_attributes = false;
+    std::string triangle_areas;  ///< a .area file for a .ele input
     hullkit::QualityOptions quality;
 };
 
@@ -351,6 +457,7 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     app.add_option("--max-area", args->quality.max_area)->multi_option_policy(last);
     app.add_flag("--conforming", args->quality.conforming);
     app.add_flag("--region-attributes", args->region_attributes);
+    app.add_option("--triangle-areas", args->triangle_areas)->multi_option_policy(last);
     std::string keep_name;
     app.add_option("--keep-segments", keep_name)->multi_option_policy(last);
     unsigned max_steiner = 0;
@@ -377,6 +484,11 @@ bool parse_args(const std::vector<std::string>& argv, Args* args) {
     if (args->format == Format::Node && (args->output.empty() || args->output == "-"))
         throw UsageError("--format node writes two files (BASE.node and BASE.ele): give -o BASE.node");
     if (args->input.empty()) throw UsageError("INPUT is an empty file name");
+    if (app.count("--triangle-areas") && args->triangle_areas.empty()) throw UsageError("option --triangle-areas needs a file name");
+    if (!args->triangle_areas.empty() && extension_of(args->input) != "ele")
+        throw UsageError("--triangle-areas bounds the triangles of a mesh to refine: the input must be a Triangle .ele file");
+    if (args->convex && extension_of(args->input) == "ele")
+        throw UsageError("--convex applies to .poly input; a .ele mesh's domain is its triangles");
     if (!(args->quality.min_angle >= 0 && args->quality.min_angle <= 34))
         throw UsageError("--min-angle must be from 0 to 34 degrees, got " + hullkit::format_double(args->quality.min_angle));
     if (!(args->quality.max_area >= 0 && std::isfinite(args->quality.max_area)))
@@ -510,10 +622,13 @@ void write_node_ele(const std::string& output, const hullkit::ConstrainedDelauna
 /// The core's error with the input's line (and ring) for the point or segment it names.
 std::string located(const std::string& source, const Input& in, const hullkit::ConstrainedDelaunay& d) {
     std::string where = source;
-    if (d.error_point >= 0 && static_cast<std::size_t>(d.error_point) < in.line.size()) {
+    if (d.error_triangle >= 0 && static_cast<std::size_t>(d.error_triangle) < in.triangle_line.size()) {
+        where += " line " + std::to_string(in.triangle_line[static_cast<std::size_t>(d.error_triangle)]);
+    } else if (d.error_point >= 0 && static_cast<std::size_t>(d.error_point) < in.line.size()) {
         const std::size_t p = static_cast<std::size_t>(d.error_point);
+        if (in.mesh) where = in.node_source;
         if (in.line[p] > 0) where += " line " + std::to_string(in.line[p]);
-        if (!in.poly) {
+        if (!in.poly && !in.mesh) {
             std::size_t ring = 0;
             while (ring < in.ring_starts.size() && in.ring_starts[ring] <= p) ++ring;
             const std::size_t start = ring == 0 ? 0 : in.ring_starts[ring - 1];
@@ -539,9 +654,14 @@ int run_triangulate(const std::vector<std::string>& argv) {
     const auto started = std::chrono::steady_clock::now();
     const hullkit::PointSpan2 points(in.xy);
     hullkit::ConstrainedDelaunay d;
-    if (in.poly) {
+    if (in.mesh) {
+        hullkit::RefineMeshOptions options;
+        options.quality = args.quality;
+        if (!args.triangle_areas.empty()) options.triangle_max_area = read_area(args.triangle_areas, in.triangles.size() / 3);
+        d = hullkit::refine_mesh(points, in.triangles.data(), in.triangles.size() / 3, nullptr, 0, options);
+    } else if (in.poly) {
         hullkit::ConstrainedOptions options;
-        options.remove_exterior = !args.convex;
+        options.remove_exterior = !args.convex && !in.whole_hull;
         options.holes = in.holes;
         options.regions = in.regions;
         options.quality = args.quality;
@@ -564,7 +684,7 @@ int run_triangulate(const std::vector<std::string>& argv) {
         case Format::Node: write_node_ele(args.output, d, with); break;
     }
     if (args.stats) {
-        const std::size_t segments = in.poly ? in.segments.size() / 2 : in.xy.size() / 2;
+        const std::size_t segments = in.poly ? in.segments.size() / 2 : in.mesh ? 0 : in.xy.size() / 2;
         std::fprintf(stderr,
                      "{\"points\":%zu,\"added\":%zu,\"segments\":%zu,\"crossings\":%zu,\"steiner\":%zu,\"unrefined\":%zu,"
                      "\"triangles\":%zu,\"seconds\":%.6f}\n",

@@ -79,6 +79,8 @@ def constrained(
     max_steiner_points: int,
     keep_segments: int,
     unsuitable: object,
+    mesh: object,
+    mesh_areas: object,
     /,
 ) -> tuple[
     NDArray[np.float64],

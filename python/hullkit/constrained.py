@@ -13,15 +13,15 @@ __all__ = ["triangulate", "triangulate_polygon"]
 _SWITCHES = {"p": "segments", "c": "convex", "z": "zero-based", "n": "neighbors", "e": "edges", "Q": "quiet", "V": "verbose",
              "q": "minimum angle", "a": "maximum area", "D": "conforming Delaunay", "S": "Steiner point limit",
              "A": "regional attributes", "Y": "no Steiner points on the boundary (YY: on any segment)",
-             "u": "user refinement test (the unsuitable= function)"}
+             "u": "user refinement test (the unsuitable= function)", "r": "refine tri['triangles']"}
 _NUMBERED = ("q", "a", "S")  # switches that may carry a number
 _NOT_YET = {
-    "r": "refining a mesh",
     "o": "second-order triangles", "i": "incremental insertion", "F": "Fortune's sweep", "l": "vertical cuts only", "s": "segment splitting",
     "C": "consistency checks", "j": "jettisoning vertices", "B": "no boundary markers", "P": "no .poly output", "N": "no .node output",
     "E": "no .ele output", "I": "no iteration numbers", "O": "ignoring holes", "X": "no exact arithmetic",
 }
-_KEYS = ("vertices", "segments", "holes", "regions")
+_KEYS = ("vertices", "segments", "holes", "regions", "triangles", "triangle_max_area")
+_OUTPUT_KEYS = ("edges", "neighbors", "triangle_attributes")  # an earlier output's: ignored
 _NO_POINTS = _np.zeros((0, 2))
 
 
@@ -42,12 +42,13 @@ def _quality(min_angle, max_area, conforming, max_steiner_points, keep_segments=
     return min_angle, max_area, bool(conforming), int(max_steiner_points), int(keep_segments)
 
 
-def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0, 0), unsuitable=None):
+def _run(points, segments, starts, fill, convex, holes, regions=None, quality=(0.0, 0.0, False, 0, 0), unsuitable=None,
+         mesh=None, mesh_areas=None):
     if unsuitable is not None and not callable(unsuitable):
         raise HullkitError(f"unsuitable must be a function (a, b, c, area) -> bool, got {unsuitable!r}")
     with _translated():
         return _core.constrained(points, segments, starts, fill, convex, holes,
-                                 _np.zeros((0, 3)) if regions is None else regions, *quality, unsuitable)
+                                 _np.zeros((0, 3)) if regions is None else regions, *quality, unsuitable, mesh, mesh_areas)
 
 
 def triangulate_polygon(coords, hole_indices=None, fill="evenodd", *, min_angle=0, max_area=0, conforming=False,
@@ -138,12 +139,18 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     refinement ends is up to it: unless ``S`` is given a cap of 16 points per vertex plus 10^6
     applies). The keywords ``convex``, ``min_angle``, ``max_area``, ``conforming``,
     ``max_steiner_points``, ``keep_segments`` (0, 1 = Y, 2 = YY), ``unsuitable`` (with or without
-    ``u``) do the same. Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
+    ``u``) do the same. ``r`` refines a mesh, ``tri['triangles']`` (t, 3) (an earlier output, say): the
+    domain is their union, its boundary kept (with ``p`` ``tri['segments']`` too), the inside
+    triangulated anew and refined as asked; vertices no triangle or segment uses stay in
+    ``vertices`` in no triangle; with bare ``a`` each triangle's own bound from
+    ``tri['triangle_max_area']`` (t,) (0 or negative: none; every edge of the mesh is then kept).
+    ``holes`` and ``regions`` do not apply with ``r`` (an earlier output's keys are ignored, as its
+    ``edges``, ``neighbors`` and ``triangle_attributes``). Returns a dict: ``vertices`` (input vertices then the crossing and refinement points),
     ``triangles`` (t, 3) counter-clockwise as Triangle's, ``segments`` (the edges on segments, each
     once), and ``neighbors``/``edges`` when asked."""
     if not isinstance(tri, dict):
         raise HullkitError(f"tri must be a dict with 'vertices' (and 'segments', 'holes'), got {type(tri).__name__}")
-    unknown = sorted(set(tri) - set(_KEYS))
+    unknown = sorted(set(tri) - set(_KEYS) - set(_OUTPUT_KEYS))
     if unknown:
         raise HullkitError(f"tri key(s) {unknown} are not supported by hullkit yet (it takes {list(_KEYS)})")
     if "vertices" not in tri:
@@ -177,6 +184,10 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
             holes = as_points(tri["holes"], 2, "tri['holes']")
     else:
         convex = True  # Triangle without p: the Delaunay triangulation of the vertices
+    if "r" in switches:
+        return _refine(tri, switches, points, segments, quality, options.get("unsuitable"))
+    if "triangles" in tri or "triangle_max_area" in tri:
+        raise HullkitError("tri['triangles'] and tri['triangle_max_area'] are a mesh to refine: add switch 'r'")
     regions = None
     rows = _np.zeros((0, 4))
     if "A" in switches and "p" not in switches:
@@ -192,8 +203,26 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     unsuitable = options.get("unsuitable")
     if "u" in switches and unsuitable is None:
         raise HullkitError("switch 'u' (Triangle's triunsuitable) needs the test as unsuitable=function(a, b, c, area) -> bool")
-    vertices, triangles, halfedges, constrained, _, _, _, _, region = _run(
-        points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality, unsuitable)
+    result = _run(points, segments.astype(_np.uint32).ravel(), None, "evenodd", convex, holes, regions, quality, unsuitable)
+    out = _triangle_dict(result, switches)
+    if "p" in switches and "holes" in tri:
+        out["holes"] = holes
+    if "p" in switches and "regions" in tri:
+        out["regions"] = _np.asarray(tri["regions"], dtype=_np.float64)
+    if "A" in switches:  # each triangle's region's attribute, 0 outside every region (Triangle's)
+        region = result[8]
+        attributes = _np.zeros(len(out["triangles"]))
+        if len(region):
+            inside = region >= 0
+            attributes[inside] = rows[region[inside], 2]
+        out["triangle_attributes"] = attributes.reshape(-1, 1)
+    return out
+
+
+def _triangle_dict(result, switches):
+    """Triangle's output dict from the core's arrays: counter-clockwise triangles, the segments'
+    edges, and the edges and neighbours when asked ('e', 'n')."""
+    vertices, triangles, halfedges, constrained = result[:4]
     out = {"vertices": vertices, "triangles": _np.ascontiguousarray(triangles[:, [0, 2, 1]])}
     flat = triangles.ravel()
     following = _np.arange(len(flat)).reshape(-1, 3)[:, [1, 2, 0]].ravel()
@@ -205,14 +234,28 @@ def triangulate(tri, opts="", **options):  # noqa: C901 - one switch after the o
     if "n" in switches:
         across = _np.where(halfedges < 0, -1, halfedges // 3).reshape(-1, 3)
         out["neighbors"] = _np.ascontiguousarray(across[:, [1, 0, 2]]).astype(_np.int32)
-    if "p" in switches and "holes" in tri:
-        out["holes"] = holes
-    if "p" in switches and "regions" in tri:
-        out["regions"] = _np.asarray(tri["regions"], dtype=_np.float64)
-    if "A" in switches:  # each triangle's region's attribute, 0 outside every region (Triangle's)
-        attributes = _np.zeros(len(triangles))
-        if len(region):
-            inside = region >= 0
-            attributes[inside] = rows[region[inside], 2]
-        out["triangle_attributes"] = attributes.reshape(-1, 1)
     return out
+
+
+def _refine(tri, switches, points, segments, quality, unsuitable):
+    """Triangle's -r: the mesh tri['triangles'] refined (hullkit::refine_mesh)."""
+    if "triangles" not in tri:
+        raise HullkitError("switch 'r' refines a mesh: tri needs 'triangles', shape (t, 3)")
+    if "A" in switches:
+        raise HullkitError("switch 'A' (regional attributes) does not apply with 'r': the mesh has no regions")
+    triangles = _np.asarray(tri["triangles"])
+    if triangles.ndim != 2 or triangles.shape[1] != 3 or not (_np.issubdtype(triangles.dtype, _np.integer) or triangles.size == 0):
+        raise HullkitError(f"tri['triangles'] must be whole numbers of shape (t, 3), got {triangles.dtype} {triangles.shape}")
+    if triangles.size and (triangles.min() < 0 or triangles.max() >= len(points)):
+        raise HullkitError(f"tri['triangles'] must index the {len(points)} vertices")
+    areas = None
+    if "a" in switches:
+        if "triangle_max_area" not in tri:
+            raise HullkitError("bare switch 'a' with 'r' reads each triangle's bound from tri['triangle_max_area'], shape (t,)")
+        areas = _np.ascontiguousarray(tri["triangle_max_area"], dtype=_np.float64).ravel()
+        if len(areas) != len(triangles):
+            raise HullkitError(f"tri['triangle_max_area'] holds {len(areas)} numbers for {len(triangles)} triangles")
+    mesh = _np.ascontiguousarray(triangles, dtype=_np.uint32)
+    result = _run(points, segments.astype(_np.uint32).ravel(), None, "evenodd", False, _NO_POINTS, None, quality, unsuitable,
+                  mesh, areas)
+    return _triangle_dict(result, switches)

@@ -248,11 +248,15 @@ py::dict verify_hull(const Points& points, const py::dict& result) {
 /// keep_segments, unsuitable): Delaunay refinement (unsuitable: None or Triangle's -u test, called
 /// as unsuitable((ax, ay), (bx, by), (cx, cy), area) -> bool). Returns (coords (m, 2), triangles (t, 3) clockwise, halfedges, constrained,
 /// representative, crossing_count, steiner_count, unrefined_count, triangle_region (t,) int32: each
-/// triangle's region row, -1 for none; empty without regions).
+/// triangle's region row, -1 for none; empty without regions). With `mesh` ((t, 3) uint32 corner
+/// triples, not None) the triangulation is refined instead (Triangle's -r: refine_mesh, `segments`
+/// kept inside, ring_starts, holes and regions unused), `mesh_areas` None or (t,) float64 bounds per
+/// triangle (then triangle_region is each output triangle's input triangle).
 py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
                       py::object ring_starts, const std::string& fill, bool convex, const Points& holes,
                       const Points& regions, double min_angle, double max_area, bool conforming,
-                      std::size_t max_steiner_points, unsigned keep_segments, py::object unsuitable) {
+                      std::size_t max_steiner_points, unsigned keep_segments, py::object unsuitable,
+                      py::object mesh, py::object mesh_areas) {
     const std::size_t n = rows(points, 2, "points");
     const hullkit::PointSpan2 span(points.data(), n);
     hullkit::QualityOptions quality;
@@ -280,7 +284,18 @@ py::tuple constrained(const Points& points, const py::array_t<std::uint32_t, py:
         };
     }
     hullkit::ConstrainedDelaunay d;
-    if (!ring_starts.is_none()) {
+    if (!mesh.is_none()) {
+        const auto corners = mesh.cast<py::array_t<std::uint32_t, py::array::c_style>>();
+        hullkit::RefineMeshOptions options;
+        options.quality = quality;
+        if (!mesh_areas.is_none()) {
+            const auto areas = mesh_areas.cast<py::array_t<double, py::array::c_style>>();
+            options.triangle_max_area.assign(areas.data(), areas.data() + areas.size());
+        }
+        py::gil_scoped_release release;
+        d = hullkit::refine_mesh(span, corners.data(), static_cast<std::size_t>(corners.size()) / 3, segments.data(),
+                                 static_cast<std::size_t>(segments.size()) / 2, options);
+    } else if (!ring_starts.is_none()) {
         const auto starts = ring_starts.cast<py::array_t<std::uint32_t, py::array::c_style>>();
         hullkit::PolygonOptions options;
         options.quality = quality;

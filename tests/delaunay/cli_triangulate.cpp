@@ -278,3 +278,75 @@ TEST_CASE("hullkit triangulate: --keep-segments boundary|all (Triangle's -Y, -YY
     CHECK(bad.exit_code == 2);
     CHECK(bad.err.find("--keep-segments must be boundary or all") != std::string::npos);
 }
+
+TEST_CASE("hullkit triangulate: a .ele mesh refined (Triangle's -r), --triangle-areas (-ra), a .node alone", "[cli][constrained]") {
+    TempDir dir("hullkit-triangulate");
+    write_text(dir.file("rings.txt"), kSquareWithHole);
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("rings.txt"), "-o", dir.file("a.ele")}).exit_code == 0);
+    // The 8 triangles of the annulus, refined: its hole stays, the bounds hold, the area is exact.
+    const nlohmann::json fine = json_of(run_cli(dir, {"triangulate", dir.file("a.ele"), "--min-angle", "30", "--max-area", "0.1", "--format", "json"}));
+    CHECK(checked_area(fine) == 12);
+    for (std::size_t i = 0; i < 8; ++i) CHECK(fine["points"][i] == nlohmann::json::parse(std::vector<const char*>{"[0,0]", "[4,0]", "[4,4]", "[0,4]", "[1,1]", "[3,1]", "[3,3]", "[1,3]"}[i]));
+    for (const auto& t : fine["triangles"]) {
+        double cx = 0, cy = 0;
+        for (const auto& i : t) cx += fine["points"][i.get<std::size_t>()][0].get<double>(), cy += fine["points"][i.get<std::size_t>()][1].get<double>();
+        CHECK(!(cx / 3 > 1 && cx / 3 < 3 && cy / 3 > 1 && cy / 3 < 3));
+    }
+    CHECK(fine["triangles"].size() > 8 * 12);
+    // Refined into .node/.ele again, then once more: the files chain as Triangle's do.
+    REQUIRE(run_cli(dir, {"triangulate", dir.file("a.ele"), "--max-area", "0.5", "-o", dir.file("b.ele")}).exit_code == 0);
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("b.ele"), "--format", "json", "--max-area", "0.2"}))) == 12);
+    // Triangle 1 of the .ele gets a bound of its own; the others none (0 and -1).
+    std::string area = "8\n1 0.01\n";
+    for (int t = 2; t <= 8; ++t) area += std::to_string(t) + (t % 2 ? " 0\n" : " -1\n");
+    write_text(dir.file("a.area"), area);
+    const nlohmann::json own = json_of(run_cli(dir, {"triangulate", dir.file("a.ele"), "--triangle-areas", dir.file("a.area"), "--format", "json"}));
+    CHECK(checked_area(own) == 12);
+    std::istringstream ele(read_text(dir.file("a.ele")));
+    std::size_t count, corners, attributes, index, a, b, c;
+    ele >> count >> corners >> attributes >> index >> a >> b >> c;  // triangle 1, 1-based corners
+    const auto xy = [&](std::size_t i) { return std::make_pair(own["points"][i][0].get<double>(), own["points"][i][1].get<double>()); };
+    const auto in_first = [&](std::pair<double, double> p) {
+        // Inside or on triangle 1 (a, b, c counter-clockwise), exactly.
+        const std::size_t v[3] = {a - 1, b - 1, c - 1};
+        for (int k = 0; k < 3; ++k) {
+            const auto u = xy(v[k]), w = xy(v[(k + 1) % 3]);
+            if ((mpq_class(w.first) - u.first) * (mpq_class(p.second) - u.second) - (mpq_class(w.second) - u.second) * (mpq_class(p.first) - u.first) < 0) return false;
+        }
+        return true;
+    };
+    std::size_t small = 0;
+    double largest_elsewhere = 0;
+    for (const auto& t : own["triangles"]) {
+        const auto p = xy(t[0]), q = xy(t[1]), r = xy(t[2]);
+        const double area = std::fabs((q.first - p.first) * (r.second - p.second) - (q.second - p.second) * (r.first - p.first)) / 2;
+        if (!(in_first(p) && in_first(q) && in_first(r))) {
+            largest_elsewhere = std::max(largest_elsewhere, area);
+            continue;
+        }
+        ++small;
+        CHECK(area <= 0.01);
+    }
+    CHECK(small >= 100);  // triangle 1 has area 1.5
+    CHECK(largest_elsewhere > 0.2);  // the bound is triangle 1's alone
+    // A .node alone: the Delaunay triangulation of its vertices, the whole hull.
+    CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("a.node"), "--format", "json"}))) == 16);
+    // Errors name the file and line.
+    write_text(dir.file("bad.node"), read_text(dir.file("a.node")));
+    write_text(dir.file("bad.ele"), "2 3 0\n1 1 2 9\n2 1 3 4\n");
+    const RunResult range = run_cli(dir, {"triangulate", dir.file("bad.ele")});
+    CHECK(range.exit_code == 2);
+    CHECK(range.err.find("bad.ele line 2: corner 9 is not one of the 8 vertices (numbered from 1)") != std::string::npos);
+    write_text(dir.file("bad.ele"), "2 3 0\n1 1 2 6\n2 6 2 1\n");
+    const RunResult overlap = run_cli(dir, {"triangulate", dir.file("bad.ele")});
+    CHECK(overlap.exit_code == 2);
+    CHECK(overlap.err.find("bad.ele line 3: triangles 0 and 1 overlap") != std::string::npos);
+    write_text(dir.file("bad.ele"), "1 3 0\n1 1 5 7\n");  // (0,0), (1,1), (3,3): collinear
+    CHECK(run_cli(dir, {"triangulate", dir.file("bad.ele")}).err.find("bad.ele line 2: triangle 0 (points 0, 4, 6) has no area") != std::string::npos);
+    write_text(dir.file("short.area"), "2\n1 0.5\n2 0.5\n");
+    CHECK(run_cli(dir, {"triangulate", dir.file("a.ele"), "--triangle-areas", dir.file("short.area")}).err.find("2 areas for a mesh of 8 triangles") != std::string::npos);
+    CHECK(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--triangle-areas", dir.file("a.area")}).err.find("the input must be a Triangle .ele file") != std::string::npos);
+    CHECK(run_cli(dir, {"triangulate", dir.file("a.ele"), "--convex"}).err.find("--convex applies to .poly input") != std::string::npos);
+    write_text(dir.file("lonely.ele"), "1 3 0\n1 1 2 3\n");
+    CHECK(run_cli(dir, {"triangulate", dir.file("lonely.ele")}).err.find("lonely.node") != std::string::npos);
+}

@@ -4,6 +4,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include <catch2/catch.hpp>
@@ -34,6 +36,23 @@ inline void verified(const hullkit::ConstrainedDelaunay& d, bool boundary_constr
                                                     d.halfedges.data(), d.constrained.data(), boundary_constrained);
     for (const auto& p : report.problems) UNSCOPED_INFO(p);
     REQUIRE(report.ok);
+}
+
+/// The smallest angle of the output, in degrees (long double; measured, not decided).
+inline double smallest_angle(const hullkit::ConstrainedDelaunay& d) {
+    long double best = 180;
+    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const double* w = &d.coords[2 * d.triangles[3 * t + k]];
+            const double* u = &d.coords[2 * d.triangles[3 * t + (k + 1) % 3]];
+            const double* x = &d.coords[2 * d.triangles[3 * t + (k + 2) % 3]];
+            const long double ux = u[0] - (long double)w[0], uy = u[1] - (long double)w[1];
+            const long double xx = x[0] - (long double)w[0], xy = x[1] - (long double)w[1];
+            const long double angle = std::atan2(std::fabs(ux * xy - uy * xx), ux * xx + uy * xy);
+            best = std::min(best, angle * 180 / 3.14159265358979323846L);
+        }
+    }
+    return static_cast<double>(best);
 }
 
 }  // namespace constrained_test

@@ -22,6 +22,7 @@ using hullkit::PointSpan2;
 using hullkit::QualityOptions;
 
 using constrained_test::q;
+using constrained_test::smallest_angle;
 using constrained_test::twice_area;
 using constrained_test::verified;
 
@@ -34,23 +35,6 @@ mpq_class twice_ring_area(const std::vector<double>& xy, std::size_t begin, std:
         sum += q(xy[2 * i]) * q(xy[2 * j + 1]) - q(xy[2 * j]) * q(xy[2 * i + 1]);
     }
     return abs(sum);
-}
-
-/// The smallest angle of the output, in degrees (long double; measured, not decided).
-double smallest_angle(const ConstrainedDelaunay& d) {
-    long double best = 180;
-    for (std::size_t t = 0; t < d.triangle_count(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const double* w = &d.coords[2 * d.triangles[3 * t + k]];
-            const double* u = &d.coords[2 * d.triangles[3 * t + (k + 1) % 3]];
-            const double* x = &d.coords[2 * d.triangles[3 * t + (k + 2) % 3]];
-            const long double ux = u[0] - (long double)w[0], uy = u[1] - (long double)w[1];
-            const long double xx = x[0] - (long double)w[0], xy = x[1] - (long double)w[1];
-            const long double angle = std::atan2(std::fabs(ux * xy - uy * xx), ux * xx + uy * xy);
-            best = std::min(best, angle * 180 / 3.14159265358979323846L);
-        }
-    }
-    return static_cast<double>(best);
 }
 
 double largest_area(const ConstrainedDelaunay& d) {

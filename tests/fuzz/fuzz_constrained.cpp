@@ -11,8 +11,13 @@
 //    covers the hull);
 //  - graphs: the ends of every segment are joined by a chain of flagged edges (one component);
 //  - representatives are the lowest index with the same coordinates; triangles name only them or
-//    added points; an error is one line and leaves no triangles.
+//    added points; an error is one line and leaves no triangles;
+//  - refine_mesh (Triangle's -r) on a result of up to 2000 triangles: with a zero bound per
+//    triangle and nothing else it gives back exactly those triangles, each naming its source;
+//    refined (bit 0 of the second byte: a 20 degree angle and an area bound) it passes the
+//    verifier with every boundary edge flagged, or stops at the point cap.
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -105,6 +110,42 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         Components components(d);
         for (std::size_t k = 0; k < segments.size(); k += 2)
             check(components.find(d.representative[segments[k]]) == components.find(d.representative[segments[k + 1]]));
+    }
+    const std::size_t t_count = d.triangle_count();
+    if (t_count == 0 || t_count > 2000) return 0;
+    const hullkit::PointSpan2 mesh_points(d.coords);
+    hullkit::RefineMeshOptions same;
+    same.threads = 1;
+    same.triangle_max_area.assign(t_count, 0.0);
+    const hullkit::ConstrainedDelaunay again = hullkit::refine_mesh(mesh_points, d.triangles.data(), t_count, nullptr, 0, same);
+    check(again.ok() && again.triangle_count() == t_count && again.triangle_region.size() == t_count);
+    for (std::size_t t = 0; t < t_count; ++t) {
+        const std::uint32_t* got = &again.triangles[3 * t];
+        const std::uint32_t* want = &d.triangles[3 * static_cast<std::size_t>(again.triangle_region[t])];
+        check((got[0] == want[0] && got[1] == want[1] && got[2] == want[2]) || (got[0] == want[1] && got[1] == want[2] && got[2] == want[0]) ||
+              (got[0] == want[2] && got[1] == want[0] && got[2] == want[1]));
+    }
+    if (pick & 1) {
+        hullkit::RefineMeshOptions finer;
+        finer.threads = 1;
+        finer.quality.min_angle = 20;
+        finer.quality.max_steiner_points = 3000;
+        double largest = 0;
+        for (std::size_t t = 0; t < t_count; ++t) {
+            const double* a = &d.coords[2 * d.triangles[3 * t]];
+            const double* b = &d.coords[2 * d.triangles[3 * t + 1]];
+            const double* c = &d.coords[2 * d.triangles[3 * t + 2]];
+            largest = std::max(largest, std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2);
+        }
+        if (std::isfinite(largest)) finer.quality.max_area = largest / 4;
+        const hullkit::ConstrainedDelaunay m = hullkit::refine_mesh(mesh_points, d.triangles.data(), t_count, nullptr, 0, finer);
+        if (!m.ok()) {
+            check(m.error.find("quality refinement added") == 0 && m.triangles.empty());
+            return 0;
+        }
+        const hullkit::ConstrainedVerifyReport refined = hullkit::verify_constrained(
+            hullkit::PointSpan2(m.coords), m.triangles.data(), m.triangle_count(), m.halfedges.data(), m.constrained.data(), true);
+        check(refined.ok);
     }
     return 0;
 }

@@ -284,3 +284,48 @@ test('unsuitable (Triangle\'s -u): the caller\'s test is met; what it throws is 
   // The module still works afterwards.
   assert.equal(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4], []).triangles.length, 3);
 });
+
+test('refineMesh (Triangle\'s -r): an earlier result refined keeps its hole and area; bounds per triangle; errors', () => {
+  const coords = [0, 0, 10, 0, 10, 10, 0, 10, 3, 3, 7, 3, 7, 6, 3, 6];
+  const plain = hullkit.triangulatePolygon(coords, [4]);
+  const fine = hullkit.refineMesh(plain.coords, plain.triangles, { minAngle: 30, maxArea: 0.5 });
+  checkValid(fine, { boundaryConstrained: true });
+  assert.equal(twiceArea(fine.coords, fine.triangles), twiceArea(fine.coords, plain.triangles));  // the hole stays a hole
+  assert.ok(smallestAngle(fine.coords, fine.triangles) >= 30);
+  assert.ok(fine.steinerCount > 50);
+  assert.deepEqual(fine.coords.slice(0, 16), Float64Array.from(coords));
+  assert.equal(fine.sourceTriangle, undefined);
+  // A bound on the first triangle alone: every output triangle lies in one input triangle (its
+  // centroid strictly inside, exactly: points split off a slanted edge are within rounding of it),
+  // and only the first's are small.
+  const bounds = Array.from({ length: plain.triangles.length / 3 }, (_, t) => (t === 0 ? 0.05 : 0));
+  const own = hullkit.refineMesh(plain.coords, plain.triangles, { triangleMaxArea: bounds });
+  checkValid(own, { boundaryConstrained: true });
+  assert.equal(own.sourceTriangle.length, own.triangles.length / 3);
+  assert.equal(twiceArea(own.coords, own.triangles), twiceArea(own.coords, plain.triangles));
+  let small = 0;
+  for (let t = 0; t < own.triangles.length; t += 3) {
+    const s = own.sourceTriangle[t / 3];
+    const xy = [0, 1, 2].flatMap((k) => [coords[2 * plain.triangles[3 * s + k]], coords[2 * plain.triangles[3 * s + k] + 1]]);
+    let cx = 0;
+    let cy = 0;
+    for (let k = 0; k < 3; k++) cx += own.coords[2 * own.triangles[t + k]] / 3, cy += own.coords[2 * own.triangles[t + k] + 1] / 3;
+    const q = exactPoints([...xy, cx, cy], 2);
+    for (let e = 0; e < 3; e++) assert.equal(orient2d(q[e], q[(e + 1) % 3], q[3]), -1, `triangle ${t / 3} lies in input triangle ${s}`);
+    if (s === 0) {
+      small++;
+      const [a, b, c] = [0, 1, 2].map((k) => own.triangles[t + k]);
+      const area = Math.abs((own.coords[2 * b] - own.coords[2 * a]) * (own.coords[2 * c + 1] - own.coords[2 * a + 1]) -
+        (own.coords[2 * b + 1] - own.coords[2 * a + 1]) * (own.coords[2 * c] - own.coords[2 * a])) / 2;
+      assert.ok(area <= 0.05);
+    }
+  }
+  assert.ok(small > 20);
+  // Errors name the triangle.
+  assert.throws(() => hullkit.refineMesh(coords, [0, 1, 2, 0, 1, 2]), (e) => e instanceof HullkitError && e.triangleIndex === 1 && /overlap/.test(e.message));
+  assert.throws(() => hullkit.refineMesh(coords, [0, 1, 9]), (e) => e instanceof HullkitError && e.triangleIndex === 0 && /has corner 9/.test(e.message));
+  assert.throws(() => hullkit.refineMesh(coords, [0, 1, 2], { triangleMaxArea: [1, 2] }), /triangleMaxArea holds 2 numbers for 1 triangles/);
+  assert.throws(() => hullkit.refineMesh(coords, [0, 1]), /not a whole number of triples/);
+  assert.throws(() => hullkit.refineMesh(coords, []), /there are no triangles to refine/);
+  assert.throws(() => hullkit.refineMesh(coords, [0, 1, 2], { holes: [1, 1] }), /holes/);
+});

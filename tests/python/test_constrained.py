@@ -74,8 +74,8 @@ def test_triangulate_pslg_exterior_and_convex():
 
 
 def test_clear_errors():
-    with pytest.raises(hullkit.HullkitError, match="switch 'r' \\(refining a mesh"):
-        hullkit.triangulate(SQUARE_WITH_HOLE, "pr")
+    with pytest.raises(hullkit.HullkitError, match="switch 'o' \\(second-order triangles"):
+        hullkit.triangulate(SQUARE_WITH_HOLE, "po2")
     with pytest.raises(hullkit.HullkitError, match="keep_segments must be 0"):
         hullkit.triangulate_polygon([0, 0, 1, 0, 0, 1], keep_segments=3)
     with pytest.raises(hullkit.HullkitError, match="switch 'A' \\(regional attributes\\) needs 'p'"):
@@ -231,3 +231,68 @@ def test_triangulate_polygon_quality_keywords():
     assert r["unrefined_count"] == 0
     assert smallest_angle(r["coords"], r["triangles"]) >= 28
     assert -sum(twice_areas(r["coords"], r["triangles"])) == 24
+
+
+def smallest_angle(points, triangles):
+    """Degrees, measured (not decided) in floating point."""
+    p = np.asarray(points, dtype=float)[np.asarray(triangles)]
+    best = 180.0
+    for k in range(3):
+        u = p[:, (k + 1) % 3] - p[:, k]
+        w = p[:, (k + 2) % 3] - p[:, k]
+        angle = np.degrees(np.arctan2(np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]), (u * w).sum(axis=1)))
+        best = min(best, angle.min())
+    return best
+
+
+def test_refine_an_earlier_output_r_switch():
+    mesh = hullkit.triangulate(SQUARE_WITH_HOLE, "p")
+    assert len(mesh["triangles"]) == 8
+    refined = hullkit.triangulate(mesh, "rq30a0.1")  # the earlier output's 'holes' and 'segments' do not apply
+    areas = twice_areas(refined["vertices"], refined["triangles"])
+    assert all(a > 0 for a in areas) and sum(areas) == 24  # the annulus, its hole kept, counter-clockwise
+    assert max(areas) <= Fraction(2 * 0.1)
+    assert smallest_angle(refined["vertices"], refined["triangles"]) >= 30 - 1e-9
+    assert np.array_equal(refined["vertices"][:8], np.asarray(SQUARE_WITH_HOLE["vertices"], dtype=float))
+    centroids = refined["vertices"][refined["triangles"]].mean(axis=1)
+    assert not ((centroids > 1) & (centroids < 3)).all(axis=1).any()
+    # Segments: the boundary's edges, each once, add up to the two squares' perimeters.
+    seg = refined["vertices"][refined["segments"]]
+    assert np.isclose(np.linalg.norm(seg[:, 1] - seg[:, 0], axis=1).sum(), 16 + 8)
+    # Refining again changes nothing that is already fine, and gives the same arrays every time.
+    again = hullkit.triangulate(mesh, "rq30a0.1")
+    assert np.array_equal(again["triangles"], refined["triangles"]) and np.array_equal(again["vertices"], refined["vertices"])
+
+
+def test_refine_with_a_bound_per_triangle_ra():
+    square = {"vertices": [[0, 0], [2, 0], [2, 2], [0, 2]], "triangles": [[0, 1, 2], [0, 2, 3]],
+              "triangle_max_area": [0.01, -1]}
+    out = hullkit.triangulate(square, "ra", max_area=0.5)
+    tri, v = out["triangles"], out["vertices"]
+    areas = [float(a) / 2 for a in twice_areas(v, tri)]
+    assert sum(twice_areas(v, tri)) == 8
+    below = [a for t, a in zip(tri, areas) if (v[t][:, 0] >= v[t][:, 1]).all()]  # in triangle 0 (x >= y)
+    above = [a for t, a in zip(tri, areas) if (v[t][:, 0] <= v[t][:, 1]).all()]
+    assert len(below) + len(above) == len(tri)  # the diagonal is kept: no triangle crosses it
+    assert max(below) <= 0.01 and len(below) >= 200
+    assert max(above) <= 0.5 and len(above) < len(below) / 4
+
+
+def test_refine_errors():
+    mesh = {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "triangles": [[0, 1, 2], [0, 2, 3]]}
+    with pytest.raises(hullkit.HullkitError, match="add switch 'r'"):
+        hullkit.triangulate(mesh, "q")
+    with pytest.raises(hullkit.HullkitError, match="tri needs 'triangles'"):
+        hullkit.triangulate({"vertices": mesh["vertices"]}, "r")
+    with pytest.raises(hullkit.HullkitError, match=r"tri\['triangle_max_area'\], shape"):
+        hullkit.triangulate(mesh, "ra")
+    with pytest.raises(hullkit.HullkitError, match="holds 1 numbers for 2 triangles"):
+        hullkit.triangulate({**mesh, "triangle_max_area": [0.1]}, "ra")
+    with pytest.raises(hullkit.HullkitError, match="must index the 4 vertices"):
+        hullkit.triangulate({**mesh, "triangles": [[0, 1, 4]]}, "r")
+    with pytest.raises(hullkit.HullkitError, match="triangles 0 and 1 overlap"):
+        hullkit.triangulate({**mesh, "triangles": [[0, 1, 2], [0, 1, 2]]}, "r")
+    with pytest.raises(hullkit.HullkitError, match="triangle 1 .* has no area"):
+        hullkit.triangulate({**mesh, "triangles": [[0, 1, 2], [0, 2, 0]]}, "r")
+    with pytest.raises(hullkit.HullkitError, match="'A' .* does not apply with 'r'"):
+        hullkit.triangulate(mesh, "rA")

@@ -4,7 +4,7 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  ConstrainedResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions,
+  ConstrainedResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions, MeshRefineOptions,
   LocateResult, MeshData, PolygonOptions,
   RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells, VoronoiDiagram,
 } from 'hullkit';
@@ -101,6 +101,9 @@ check(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { maxArea: 1, kee
 check(hullkit.triangulatePolygon([0, 0, 4, 0, 4, 4, 0, 4], [], { unsuitable: (a, b, c, area) => area > 1 + a[0] * 0 }).steinerCount > 0, 'unsuitable');
 const graph: ConstrainedResult = hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1, 1, 1], [0, 3]);
 check(graph.constrained.reduce((a, b) => a + b, 0) === 2 && hullkit.fillRules[0] === 'evenodd', 'constrainedDelaunay');
+const meshOptions: MeshRefineOptions = { maxArea: 0.25, triangleMaxArea: [0.1, 0] };
+const refined = hullkit.refineMesh(graph.coords, graph.triangles, meshOptions);
+check(refined.steinerCount > 0 && refined.sourceTriangle instanceof Int32Array && refined.sourceTriangle.length === refined.triangles.length / 3, 'refineMesh');
 // Point location in it: (0.5, 0.4) is the point 4 itself (a corner: weights 1, 0, 0), (0, 0.5) is on
 // the hull edge from 0 to 2 (as near to 0 as to 2), (2, 2) is outside.
 const locateOptions: LocateOptions = { barycentric: true, nearest: true };

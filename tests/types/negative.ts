@@ -52,3 +52,5 @@ hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { keepSegments: 'inside' }); 
 hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { unsuitable: (area: string) => area === '' }); // error
 hullkit.triangulatePolygon([0, 0, 1, 0, 0, 1], [], { dim: '3' }); // error
 hullkit.constrainedDelaunay([0, 0, 1, 0, 0, 1], [0, 1], { threads: 2 }); // error
+hullkit.refineMesh([0, 0, 1, 0, 0, 1], [0, 1, 2], { holes: [0.5, 0.5] }); // error
+hullkit.refineMesh([0, 0, 1, 0, 0, 1], [0, 1, 2], { triangleMaxArea: 0.5 }); // error

@@ -170,6 +170,7 @@ struct ConstrainedDelaunay {
     std::string error;
     std::int64_t error_point = -1;
     std::int64_t error_segment = -1;
+    std::int64_t error_triangle = -1;  ///< refine_mesh: the input triangle to blame, if one is
 
     bool ok() const { return error.empty(); }
     std::size_t triangle_count() const { return triangles.size() / 3; }
@@ -192,6 +193,34 @@ ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t*
 /// ring_starts must be increasing and at most the point count (else an error naming the ring).
 ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
                                         const PolygonOptions& options = {});
+
+struct RefineMeshOptions {
+    unsigned threads = 0;                ///< as ConstrainedOptions::threads
+    std::size_t max_added_points = 0;    ///< as ConstrainedOptions::max_added_points (segments' crossings)
+    /// Empty, or per triangle its own area bound (in the input's units squared; 0 or negative: only
+    /// the global one, as in Triangle's .area files). When given, every edge of the triangulation is
+    /// kept as a segment, so that each triangle's bound holds over exactly its area, and each output
+    /// triangle's `triangle_region` is the input triangle it lies in.
+    std::vector<double> triangle_max_area;
+    QualityOptions quality;
+};
+
+/// Triangle's -r: refines a triangulation given as triangles (corner index triples into `points`,
+/// either orientation), e.g. read from Triangle's .node and .ele files. The domain is the union of
+/// the triangles: its boundary edges (those of one triangle only) and the optional `segments` (kept
+/// edges inside, index pairs) become the segments of a constrained Delaunay triangulation of the
+/// triangles' corners and the segments' ends, which `options.quality` then refines; points that no
+/// triangle or segment uses are left out (they stay in `coords`, in no triangle). Without
+/// triangle_max_area the inside is triangulated anew (constrained Delaunay) before refining, as
+/// Triangle flips the edges of a mesh it refines. Errors name the triangle: no triangles, an index
+/// past the points, a triangle with no area (exactly collinear corners), two triangles with an
+/// edge on the same side (overlapping), a bad area; with triangle_max_area, a triangle that is not a
+/// face of the mesh its edges make (a corner of another lying on its edge or inside it). Triangles
+/// that overlap without sharing an edge are not detected: the domain is then the points covered an
+/// odd number of times (even-odd), which is the triangles' union when they do not overlap.
+ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangles, std::size_t triangle_count,
+                                const std::uint32_t* segments, std::size_t segment_count,
+                                const RefineMeshOptions& options = {});
 
 /// An exact check of a constrained triangulation, independent of how it was built: every triangle
 /// clockwise with nonzero area (orient2d); no directed edge used twice; `halfedges` (when given,

@@ -119,6 +119,10 @@ struct Domain {
     bool remove_exterior = false;
     const std::vector<double>* holes = nullptr;
     const std::vector<RegionSeed>* regions = nullptr;
+    /// refine_mesh with areas per triangle: the triangles' corners (3 each) and their bounds; the
+    /// domain is then the even-odd inside, each triangle its own region.
+    const std::vector<std::uint32_t>* mesh_corners = nullptr;
+    const std::vector<double>* triangle_areas = nullptr;
     QualityOptions quality;
 };
 
@@ -210,15 +214,37 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
             area2.push_back(own > 0 && (global == 0 || own < global) ? own : global);
         }
     }
-    if (domain.polygon) refiner.mark_polygon(domain.fill);
-    else refiner.mark_graph(domain.remove_exterior, domain.holes ? scaled(*domain.holes) : std::vector<double>(), scaled(region_xy));
+    if (domain.mesh_corners) {
+        for (double a : *domain.triangle_areas) {
+            const double own = a > 0 ? std::ldexp(2 * a, 2 * exponent) : 0.0;
+            area2.push_back(own > 0 && (global == 0 || own < global) ? own : global);
+        }
+        std::vector<std::uint32_t> corners(*domain.mesh_corners);
+        for (std::uint32_t& c : corners) c = out.representative[c];
+        const std::int64_t missing = refiner.mark_triangles(corners);
+        if (missing >= 0 && static_cast<std::size_t>(missing) < corners.size() / 3) {
+            ConstrainedDelaunay bad = failure("triangle " + std::to_string(missing) +
+                                              " is not a face of the mesh its edges make: a corner of another triangle "
+                                              "lies on one of its edges or inside it, or triangles overlap");
+            bad.error_triangle = missing;
+            return bad;
+        }
+        if (missing >= 0) {
+            return failure("the triangles leave a hole that their edges enclose, or overlap: the mesh is not a "
+                           "triangulation of its region");
+        }
+    } else if (domain.polygon) {
+        refiner.mark_polygon(domain.fill);
+    } else {
+        refiner.mark_graph(domain.remove_exterior, domain.holes ? scaled(*domain.holes) : std::vector<double>(), scaled(region_xy));
+    }
     const bool regional_area = std::any_of(area2.begin(), area2.end(), [](double a) { return a > 0; });
     if (domain.quality.active() || regional_area) {
         if (!refiner.refine(domain.quality, area2, exponent)) return failure(refiner.error);
         out.steiner_count = refiner.steiner_count;
         out.unrefined_count = refiner.unrefined_count;
     }
-    const bool regions = !domain.polygon && domain.regions && !domain.regions->empty();
+    const bool regions = domain.mesh_corners || (!domain.polygon && domain.regions && !domain.regions->empty());
     cdt.write(refiner.keep(), exponent, out, regions, Refiner::kDomain + 1);
     return out;
 }
@@ -278,6 +304,166 @@ ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* 
     domain.fill = options.fill;
     domain.quality = options.quality;
     return build(points, list, domain, options.max_added_points);
+}
+
+ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangles, std::size_t triangle_count,
+                                const std::uint32_t* segments, std::size_t segment_count,
+                                const RefineMeshOptions& options) {
+    const std::size_t n = points.count;
+    if (n > std::numeric_limits<std::uint32_t>::max() / 8) return failure("too many points: " + std::to_string(n));
+    if (triangle_count == 0) return failure("there are no triangles to refine");
+    auto blame = [](ConstrainedDelaunay out, std::size_t t) {
+        out.error_triangle = static_cast<std::int64_t>(t);
+        return out;
+    };
+    if (!options.triangle_max_area.empty() && options.triangle_max_area.size() != triangle_count) {
+        return failure("triangle_max_area holds " + std::to_string(options.triangle_max_area.size()) +
+                       " numbers for " + std::to_string(triangle_count) + " triangles");
+    }
+    for (std::size_t t = 0; t < options.triangle_max_area.size(); ++t) {
+        if (std::isnan(options.triangle_max_area[t]) || std::isinf(options.triangle_max_area[t])) {
+            return blame(failure("triangle " + std::to_string(t) + ": its max_area is not a finite number"), t);
+        }
+    }
+    // Indices first; then only the points the triangles and segments use go on (in input order).
+    std::vector<std::uint32_t> local(n, std::numeric_limits<std::uint32_t>::max());
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = triangles[3 * t + k];
+            if (v >= n) {
+                return blame(failure("triangle " + std::to_string(t) + " has corner " + std::to_string(v) +
+                                     ", but there are " + std::to_string(n) + " points"), t);
+            }
+            local[v] = 0;
+        }
+    }
+    for (std::size_t k = 0; k < 2 * segment_count; ++k) {
+        if (segments[k] >= n) {
+            return failure("segment " + std::to_string(k / 2) + " joins points " + std::to_string(segments[k - k % 2]) + " and " +
+                               std::to_string(segments[k - k % 2 + 1]) + ", but there are " + std::to_string(n) + " points",
+                           -1, static_cast<std::int64_t>(k / 2));
+        }
+        local[segments[k]] = 0;
+    }
+    std::vector<std::uint32_t> used;
+    std::vector<double> xy;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (local[i] != 0) continue;
+        local[i] = static_cast<std::uint32_t>(used.size());
+        used.push_back(i);
+        xy.push_back(points[i][0]), xy.push_back(points[i][1]);
+    }
+    const std::size_t m = used.size();
+    // Back to the input's numbering: used point k is used[k], added point m + j is n + j.
+    auto renumbered = [&](ConstrainedDelaunay sub) {
+        if (!sub.ok()) {
+            if (sub.error_point >= 0 && static_cast<std::size_t>(sub.error_point) < m) sub.error_point = used[sub.error_point];
+            if (sub.error_segment >= static_cast<std::int64_t>(segment_count)) sub.error_segment = -1;
+            return sub;
+        }
+        std::vector<double> coords(points.xy, points.xy + 2 * n);
+        coords.insert(coords.end(), sub.coords.begin() + 2 * m, sub.coords.end());
+        sub.coords = std::move(coords);
+        sub.input_count = n;
+        for (std::uint32_t& v : sub.triangles) v = v < m ? used[v] : static_cast<std::uint32_t>(n + (v - m));
+        std::vector<std::uint32_t> representative(n);
+        for (std::uint32_t i = 0; i < n; ++i) representative[i] = i;
+        for (std::size_t k = 0; k < m; ++k) representative[used[k]] = used[sub.representative[k]];
+        sub.representative = std::move(representative);
+        return sub;
+    };
+    Domain domain;
+    domain.polygon = true;
+    domain.fill = FillRule::EvenOdd;
+    domain.quality = options.quality;
+    // Points the triangulation refuses (not finite, too spread for exact tests) fail there, named;
+    // otherwise the checks below decide on the points scaled as it scales them (a power of two:
+    // no product underflows).
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    bool finite = true;
+    for (double c : xy) {
+        const double magnitude = std::fabs(c);
+        if (!(magnitude <= std::numeric_limits<double>::max())) finite = false;
+        else largest = std::max(largest, magnitude), smallest = magnitude != 0 ? std::min(smallest, magnitude) : smallest;
+    }
+    int exponent = 0;
+    if (!finite || (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent))) {
+        return renumbered(build(PointSpan2(xy.data(), m), {}, domain, options.max_added_points));
+    }
+    auto scaled = [&](std::uint32_t i, int axis) { return std::ldexp(points[i][axis], exponent); };
+    // Areas (exact orient2d) and each directed edge (counter-clockwise, by coordinates: copies of a
+    // point are one point) in at most one triangle.
+    std::vector<std::uint32_t> id(n);  // per used point: the lowest index with its coordinates
+    {
+        std::vector<std::uint32_t> order(used);
+        auto less = [&](std::uint32_t i, std::uint32_t j) {
+            return points[i][0] != points[j][0] ? points[i][0] < points[j][0]
+                   : points[i][1] != points[j][1] ? points[i][1] < points[j][1] : i < j;
+        };
+        std::sort(order.begin(), order.end(), less);
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const std::uint32_t i = order[k];
+            const bool same = k > 0 && points[i][0] == points[order[k - 1]][0] && points[i][1] == points[order[k - 1]][1];
+            id[i] = same ? id[order[k - 1]] : i;
+        }
+    }
+    std::vector<std::uint32_t> corners(3 * triangle_count);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> directed;  // (from << 32 | to, triangle)
+    directed.reserve(3 * triangle_count);
+    for (std::size_t t = 0; t < triangle_count; ++t) {
+        std::uint32_t v[3] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
+        const int o = orient2d(scaled(v[0], 0), scaled(v[0], 1), scaled(v[1], 0), scaled(v[1], 1), scaled(v[2], 0), scaled(v[2], 1));
+        if (o == 0) {
+            return blame(failure("triangle " + std::to_string(t) + " (points " + std::to_string(v[0]) + ", " + std::to_string(v[1]) +
+                                 ", " + std::to_string(v[2]) + ") has no area: its corners are collinear or repeated"), t);
+        }
+        if (o < 0) std::swap(v[1], v[2]);
+        for (int k = 0; k < 3; ++k) {
+            corners[3 * t + k] = v[k];
+            directed.push_back({(std::uint64_t{id[v[k]]} << 32) | id[v[(k + 1) % 3]], static_cast<std::uint32_t>(t)});
+        }
+    }
+    std::sort(directed.begin(), directed.end());
+    for (std::size_t k = 1; k < directed.size(); ++k) {
+        if (directed[k].first == directed[k - 1].first) {
+            const std::uint32_t a = static_cast<std::uint32_t>(directed[k].first >> 32), b = static_cast<std::uint32_t>(directed[k].first);
+            return blame(failure("triangles " + std::to_string(directed[k - 1].second) + " and " + std::to_string(directed[k].second) +
+                                 " overlap: both have the edge from point " + std::to_string(a) + " to point " + std::to_string(b) +
+                                 " on the same side"), directed[k].second);
+        }
+    }
+    // The boundary: directed edges whose reverse no triangle has (counted once, so that even-odd
+    // takes the inside); every edge instead when each triangle has its own bound (an inner edge
+    // then comes twice: even, no change of side). Given segments count twice (kept, no change of side).
+    const bool per_triangle = !options.triangle_max_area.empty();
+    std::vector<Segment> list;
+    std::uint32_t position = 0;
+    for (std::size_t k = 0; k < segment_count; ++k)
+        list.push_back({local[segments[2 * k]], local[segments[2 * k + 1]], 0, 2, position++});
+    for (std::size_t e = 0; e < directed.size(); ++e) {
+        const std::uint64_t key = directed[e].first;
+        const std::uint64_t reverse = (key << 32) | (key >> 32);
+        const bool inner = std::binary_search(directed.begin(), directed.end(), std::make_pair(reverse, std::uint32_t{0}),
+                                              [](const auto& x, const auto& y) { return x.first < y.first; });
+        if (inner && !per_triangle) continue;
+        const std::uint32_t t = directed[e].second;
+        // The triangle's own corners (not the lowest copies), found again by their ids.
+        std::uint32_t a = 0, b = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (id[corners[3 * t + k]] == (key >> 32) && id[corners[3 * t + (k + 1) % 3]] == (key & 0xffffffffu)) {
+                a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3];
+            }
+        }
+        list.push_back({local[a], local[b], 1, 1, position++});
+    }
+    std::vector<std::uint32_t> mesh_corners;
+    if (per_triangle) {
+        mesh_corners.resize(corners.size());
+        for (std::size_t k = 0; k < corners.size(); ++k) mesh_corners[k] = local[corners[k]];
+        domain.mesh_corners = &mesh_corners;
+        domain.triangle_areas = &options.triangle_max_area;
+    }
+    return renumbered(build(PointSpan2(xy.data(), m), list, domain, options.max_added_points));
 }
 
 const char* fill_rule_name(FillRule fill) { return fill == FillRule::EvenOdd ? "evenodd" : "nonzero"; }

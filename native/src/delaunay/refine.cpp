@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "../exact/expansion.hpp"
 
@@ -91,6 +92,41 @@ void Refiner::seed_at(const double* p, std::uint32_t start, std::vector<std::uin
         if (m_.orient_at(m_.vertex_[e], m_.vertex_[next_edge(e)], p) == 0 && !m_.is_ghost(m_.twin_[e] / 3))
             seeds.push_back(m_.twin_[e] / 3);
     }
+}
+
+std::int64_t Refiner::mark_triangles(const std::vector<std::uint32_t>& corners) {
+    mark_polygon(FillRule::EvenOdd);
+    auto key = [](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (a > b) std::swap(a, b);
+        if (b > c) std::swap(b, c);
+        if (a > b) std::swap(a, b);
+        return std::make_tuple(a, b, c);
+    };
+    using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+    std::vector<std::pair<Key, std::uint32_t>> wanted;
+    wanted.reserve(corners.size() / 3);
+    for (std::size_t k = 0; 3 * k + 2 < corners.size(); ++k)
+        wanted.push_back({key(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]), static_cast<std::uint32_t>(k)});
+    std::sort(wanted.begin(), wanted.end());
+    std::vector<std::uint8_t> found(wanted.size(), 0);
+    bool left_over = false;
+    for (std::uint32_t t = 0; t < m_.region_.size(); ++t) {
+        if (m_.region_[t] == 0) continue;
+        const std::uint32_t* v = &m_.vertex_[3 * t];
+        const Key own = key(v[0], v[1], v[2]);
+        const auto at = std::lower_bound(wanted.begin(), wanted.end(), std::make_pair(own, std::uint32_t{0}));
+        if (at == wanted.end() || at->first != own) {
+            left_over = true;
+            continue;
+        }
+        m_.region_[t] = kDomain + 1 + at->second;
+        found[at->second] = 1;
+    }
+    std::int64_t first_missing = -1;
+    for (std::size_t k = 0; k < wanted.size(); ++k)
+        if (!found[k] && (first_missing < 0 || wanted[k].second < first_missing)) first_missing = wanted[k].second;
+    if (first_missing >= 0) return first_missing;
+    return left_over ? static_cast<std::int64_t>(wanted.size()) : -1;
 }
 
 std::uint32_t Refiner::alive_triangle() const {

@@ -27,6 +27,11 @@ public:
     /// The domain is the hull, less the exterior (when asked) and the regions around the hole
     /// points; the regions around `regions` points get their own ids (x y pairs, scaled).
     void mark_graph(bool exterior, const std::vector<double>& holes, const std::vector<double>& regions);
+    /// The domain is the inside by even-odd (mark_polygon), and each domain triangle whose corners
+    /// are a triple of `corners` (3 per input triangle, any order) gets region kDomain + 1 + k for
+    /// triple k. Returns the first triple that is no domain triangle, or -1 when every one is and
+    /// every domain triangle is one (else the count of triples, for a domain triangle left over).
+    std::int64_t mark_triangles(const std::vector<std::uint32_t>& corners);
     /// Per triangle of the mesh: 1 when in the domain.
     std::vector<std::uint8_t> keep() const;
 
