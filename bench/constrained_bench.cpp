@@ -25,6 +25,12 @@
 //               shape bound B = 0.125 (smallest angle about 20.7 degrees), no size bound — init(true)
 //               (the marks as the domain) and refine_mesh(). Timed whole; the line reports the mesh's
 //               triangles inside, vertices and smallest angle (the quality-mesh comparison).
+//   cgal-refine a polygon only: Triangle's -r, refining a mesh that exists: the CDT and marks of
+//               cgal-mesh built before the clock starts, then the same Delaunay_mesher_2 timed.
+//   hullkit-refine a polygon only: the same for hullkit: hullkit::triangulate_polygon untimed, then
+//               hullkit::refine_mesh on its coordinates and triangles with hullkit-mesh's angle bound
+//               timed (the refined mesh is dumped and checked as hullkit-mesh's). Only in
+//               hullkit_constrained_bench.
 //   hullkit-mesh a polygon only: hullkit::triangulate_polygon with PolygonOptions.quality.min_angle =
 //               asin(sqrt(0.125)) in degrees (CGAL's bound above; no area bound). Timed whole; the line
 //               adds the smallest angle, the bound ("min_angle_bound_deg": what the check of the dump
@@ -99,7 +105,7 @@ struct Args {
 Args parse_args(int argc, char** argv) {
     Args args;
     CLI::App app{"times one constrained Delaunay implementation on one input", "hullkit_constrained_bench"};
-    app.add_option("--impl", args.impl, "hullkit, hullkit-mesh, cgal-cdt or cgal-mesh")->required();
+    app.add_option("--impl", args.impl, "hullkit, hullkit-mesh, hullkit-refine, cgal-cdt, cgal-mesh or cgal-refine")->required();
     app.add_option("--input", args.input, "an input JSON of bench/constrained_inputs.mjs")->required();
     app.add_option("--runs", args.runs, "timed runs, the first reported on its own")->check(CLI::PositiveNumber);
     app.add_option("--budget", args.budget, "no further run once the runs add up to this many seconds");
@@ -388,7 +394,7 @@ int main(int argc, char** argv) {
     std::vector<Point> points;
     std::function<Run(Dump*)> run;
     std::string detail;
-    if (args.impl == "cgal-cdt" || args.impl == "cgal-mesh") {
+    if (args.impl == "cgal-cdt" || args.impl == "cgal-mesh" || args.impl == "cgal-refine") {
         points.reserve(n);
         for (std::size_t i = 0; i < n; ++i) points.emplace_back(input.xy[2 * i], input.xy[2 * i + 1]);
     }
@@ -415,17 +421,21 @@ int main(int argc, char** argv) {
             if (dump) cgal_dump(cdt, input, input.polygon(), dump);
             return result;  // the CDT is destroyed here, untimed
         };
-    } else if (args.impl == "cgal-mesh") {
-        if (!input.polygon()) return fail("cgal-mesh meshes polygons only");
-        if (!args.dump.empty()) return fail("--dump is not for cgal-mesh (its points are not the input's)");
-        detail = "CGAL 5.5 CDT + mark domains, then Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2(0.125, 0): "
-                 "shape bound B = 0.125 (about 20.7 degrees), no size bound";
-        run = [&](Dump*) {
-            const auto start = std::chrono::steady_clock::now();
+    } else if (args.impl == "cgal-mesh" || args.impl == "cgal-refine") {
+        const bool refine = args.impl == "cgal-refine";
+        if (!input.polygon()) return fail(args.impl + " meshes polygons only");
+        if (!args.dump.empty()) return fail("--dump is not for " + args.impl + " (its points are not the input's)");
+        detail = refine ? "CGAL 5.5 CDT + mark domains untimed, then Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2(0.125, 0) "
+                          "timed (refining an existing mesh)"
+                        : "CGAL 5.5 CDT + mark domains, then Delaunay_mesher_2 with Delaunay_mesh_size_criteria_2(0.125, 0): "
+                          "shape bound B = 0.125 (about 20.7 degrees), no size bound";
+        run = [&, refine](Dump*) {
+            auto start = std::chrono::steady_clock::now();
             MeshCdt cdt;
             cgal_insert(cdt, points, pairs);
             mark_domains(cdt);
             for (auto f : cdt.all_face_handles()) f->set_in_domain(f->info().in_domain());
+            if (refine) start = std::chrono::steady_clock::now();
             CGAL::Delaunay_mesher_2<MeshCdt, MeshCriteria> mesher(cdt, MeshCriteria(0.125, 0));
             mesher.init(true);
             mesher.refine_mesh();
@@ -474,8 +484,38 @@ int main(int argc, char** argv) {
 #else
         return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");
 #endif
+    } else if (args.impl == "hullkit-refine") {
+#if HULLKIT_CONSTRAINED_BENCH_HULLKIT
+        if (!input.polygon()) return fail("hullkit-refine refines polygons' meshes only (as cgal-refine)");
+        hullkit::RefineMeshOptions options;
+        options.threads = args.threads;
+        options.quality.min_angle = std::asin(std::sqrt(0.125)) * 180 / M_PI;
+        detail = "hullkit::triangulate_polygon untimed, then hullkit::refine_mesh(coords, triangles, ..., quality.min_angle " +
+                 std::to_string(options.quality.min_angle) + " (CGAL's B = 0.125)) timed";
+        run = [&input, options](Dump* dump) {
+            hullkit::PolygonOptions polygon;
+            polygon.threads = options.threads;
+            const hullkit::ConstrainedDelaunay mesh = hullkit::triangulate_polygon(
+                hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), polygon);
+            if (!mesh.ok()) throw std::runtime_error(mesh.error);
+            const auto start = std::chrono::steady_clock::now();
+            hullkit::ConstrainedDelaunay result =
+                hullkit::refine_mesh(hullkit::PointSpan2(mesh.coords), mesh.triangles.data(), mesh.triangle_count(), nullptr, 0, options);
+            const double seconds = seconds_since(start);
+            if (!result.ok()) throw std::runtime_error(result.error);
+            // The mesh's own added points (crossings) count as added, as in hullkit-mesh's line.
+            if (dump) *dump = Dump{result.triangles, result.coords};
+            Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.coords.size() / 2 - input.count()};
+            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
+            out.min_angle_bound_deg = options.quality.min_angle;
+            out.unrefined = static_cast<long long>(result.unrefined_count);
+            return out;
+        };
+#else
+        return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");
+#endif
     } else {
-        return fail("unknown implementation (known: hullkit, hullkit-mesh, cgal-cdt, cgal-mesh)");
+        return fail("unknown implementation (known: hullkit, hullkit-mesh, hullkit-refine, cgal-cdt, cgal-mesh, cgal-refine)");
     }
 
     const double input_rss = peak_rss_mb();

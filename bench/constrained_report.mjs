@@ -95,9 +95,10 @@ function meshCheck(r) {
   const parts = [r.excused_input_angle ? `${r.excused_input_angle} at input angles` : '', r.excused_shells ? `${r.excused_shells} between shells` : ''].filter(Boolean);
   return `ok (${r.below_bound} below the bound: ${parts.join(', ')}${own})`;
 }
-const meshRows = polygons.map((input) => {
-  const h = find('native', 'hullkit-mesh', input);
-  const c = find('native', 'cgal-mesh', input);
+/** Rows of hullkit's `hullkitImpl` against CGAL's `cgalImpl` per polygon (quality meshes, refining). */
+const meshRowsOf = (hullkitImpl, cgalImpl) => polygons.map((input) => {
+  const h = find('native', hullkitImpl, input);
+  const c = find('native', cgalImpl, input);
   if (h?.verdict === 'skipped' || c?.verdict === 'skipped') {
     const why = (h?.verdict === 'skipped' ? h : c).error ?? '';
     return `| ${input} | ${size(input) ?? '–'} | not run: ${why} | not run | – | – | – | – | – | – | – |`;
@@ -106,6 +107,9 @@ const meshRows = polygons.map((input) => {
   return `| ${input} | ${size(input) ?? '–'} | ${cell(h)} | ${cell(c)} | ${ratioText(ratio(h, c))} | ${ratioText(warm)} | ` +
     `${meshRan(h) ? h.triangles : '–'} | ${meshRan(c) ? c.triangles : '–'} | ${angle(h)} | ${angle(c)} | ${meshCheck(h)} |`;
 });
+const meshRows = meshRowsOf('hullkit-mesh', 'cgal-mesh');
+const refineRows = meshRowsOf('hullkit-refine', 'cgal-refine');
+const refineRan = polygons.some((input) => find('native', 'hullkit-refine', input) || find('native', 'cgal-refine', input));
 const graphRows = graphs.map((input) => {
   const hullkit = find('native', 'hullkit', input);
   const single = find('native-1thread', 'hullkit', input);
@@ -122,6 +126,7 @@ const implementations = [
   ['hullkit wasm', 'js', 'hullkit'], ['hullkit native', 'native', 'hullkit'], ['earcut', 'js', 'earcut'],
   ['delaunator + constrainautor', 'js', 'constrainautor'], ['cdt2d', 'js', 'cdt2d'], ['poly2tri', 'js', 'poly2tri'],
   ['CGAL CDT', 'native', 'cgal-cdt'], ['hullkit quality mesh', 'native', 'hullkit-mesh'],
+  ['hullkit refined mesh (-r)', 'native', 'hullkit-refine'],
 ];
 const problems = [];
 const correctnessRows = implementations.map(([label, kind, impl]) => {
@@ -266,6 +271,20 @@ const lines = [
   '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|',
   ...meshRows,
   '',
+  ...(refineRan ? [
+    '## Refining a mesh (Triangle\'s -r), native',
+    '',
+    'The same bound applied to a mesh that exists: the time of the refinement alone, the polygon\'s triangulation made',
+    'before the clock starts. hullkit: `triangulate_polygon`, then `refine_mesh(coords, triangles, ...)` timed (it',
+    'checks the triangles, takes their union as the domain and triangulates it anew before refining, as Triangle',
+    'flips the edges of a mesh it refines). CGAL: the CDT and marks, then `Delaunay_mesher_2` timed. hullkit\'s',
+    'refined mesh gets the check of the quality meshes.',
+    '',
+    '| polygon | vertices | hullkit | CGAL | hullkit / CGAL | warm ratio | triangles hullkit | triangles CGAL | min angle hullkit | min angle CGAL | hullkit check |',
+    '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|',
+    ...refineRows,
+    '',
+  ] : []),
   '## Planar straight-line graph',
   '',
   `${graphInfo}. Native: hullkit \`constrained_delaunay\` (default threads; "1 thread": \`threads = 1\`) and CGAL's CDT`,

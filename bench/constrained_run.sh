@@ -14,13 +14,15 @@
 #                levels); on the graph also hullkit with --threads 1 (kind native-1thread); on the
 #                polygons the quality meshes with CGAL's angle bound (B = 0.125, about 20.7 degrees):
 #                cgal-mesh (Delaunay_mesher_2: time, triangles, smallest angle; not checked) and
-#                hullkit-mesh (triangulate_polygon with quality.min_angle), side by side; not on
-#                star-1e4 (its 4968 needle spikes need about 3.8e7 triangles at that bound)
+#                hullkit-mesh (triangulate_polygon with quality.min_angle), side by side, and the
+#                same refinement of a mesh that exists (Triangle's -r): cgal-refine and
+#                hullkit-refine (refine_mesh), the triangulation untimed; not on star-1e4 (its 4968
+#                needle spikes need about 3.8e7 triangles at that bound)
 #        js      hullkit (wasm triangulatePolygon / constrainedDelaunay), earcut, constrainautor
 #                (delaunator + @kninnug/constrainautor), cdt2d, poly2tri (bench/constrained_js_bench.mjs)
 #      Every triangulation is checked after its timed runs (bench/constrained_common.mjs: exactly the
 #      polygon covered once, or the graph's hull with every segment): the JS processes check their
-#      own first result; the native ones dump it (--dump) for bench/constrained_check.mjs (hullkit-mesh's
+#      own first result; the native ones dump it (--dump) for bench/constrained_check.mjs (hullkit-mesh's and -refine's
 #      with --mesh: clockwise, boundary on the rings, area, angles but at small input angles). Each row
 #      gets a verdict: ok, wrong (with the reason), exception (a call threw / returned an error),
 #      timeout, crash, not available (hullkit's binding or core is not there yet), skipped (a mesh not
@@ -176,7 +178,7 @@ mesh_line() {
   local impl=$1 input=$2 line check='{}'
   local dump=$out/dump-$impl-$input
   rm -f "$dump.tri" "$dump.xy"
-  if [ "$impl" = cgal-mesh ]; then
+  if [ "$impl" = cgal-mesh ] || [ "$impl" = cgal-refine ]; then
     line=$(run_line "$impl" "$input" "$mesh_timeout_s" "$cgal_bench" --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30)
   else
     line=$(run_line "$impl" "$input" "$mesh_timeout_s" "$hullkit_bench" --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" mesh)" --budget 30 --dump "$dump")
@@ -190,7 +192,7 @@ mesh_line() {
   node -e '
     const r = JSON.parse(process.argv[1]), c = JSON.parse(process.argv[2]);
     if (r.error && !r.verdict) r.verdict = r.error.startsWith("not available") ? "not available" : "exception";
-    if (!r.error && r.impl === "cgal-mesh") r.verdict = "unchecked";
+    if (!r.error && r.impl.startsWith("cgal-")) r.verdict = "unchecked";
     else if (!r.error) {
       Object.assign(r, { verdict: c.verdict ?? "wrong", reason: c.verdict ? c.reason : "no dump to check", area_error: c.area_error,
         length_error: c.length_error, below_bound: c.below_bound, excused_input_angle: c.excused_input_angle, excused_shells: c.excused_shells });
@@ -215,15 +217,19 @@ for input in "${polygons[@]}" "${graphs[@]}"; do
       fi ;;
     *)
       if [ -n "${mesh_skip[$input]:-}" ]; then
-        record native "$(failure_line cgal-mesh "$input" skipped "${mesh_skip[$input]}")"
-        record native "$(failure_line hullkit-mesh "$input" skipped "${mesh_skip[$input]}")"
+        for impl in cgal-mesh hullkit-mesh cgal-refine hullkit-refine; do
+          record native "$(failure_line "$impl" "$input" skipped "${mesh_skip[$input]}")"
+        done
       else
-        record native "$(mesh_line cgal-mesh "$input")"
-        if [ -n "$hullkit_native_missing" ]; then
-          record native "$(failure_line hullkit-mesh "$input" "not available" "$hullkit_native_missing")"
-        else
-          record native "$(mesh_line hullkit-mesh "$input")"
-        fi
+        for pair in "cgal-mesh hullkit-mesh" "cgal-refine hullkit-refine"; do
+          read -r cgal_impl hullkit_impl <<<"$pair"
+          record native "$(mesh_line "$cgal_impl" "$input")"
+          if [ -n "$hullkit_native_missing" ]; then
+            record native "$(failure_line "$hullkit_impl" "$input" "not available" "$hullkit_native_missing")"
+          else
+            record native "$(mesh_line "$hullkit_impl" "$input")"
+          fi
+        done
       fi ;;
   esac
 done
