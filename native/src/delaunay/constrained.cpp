@@ -390,7 +390,7 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
     if (!finite || (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent))) {
         return renumbered(build(PointSpan2(xy.data(), m), {}, domain, options.max_added_points));
     }
-    auto scaled = [&](std::uint32_t i, int axis) { return std::ldexp(points[i][axis], exponent); };
+    auto scaled = [&](std::uint32_t i, int axis) { return exponent == 0 ? points[i][axis] : std::ldexp(points[i][axis], exponent); };
     // Areas (exact orient2d) and each directed edge (counter-clockwise, by coordinates: copies of a
     // point are one point) in at most one triangle.
     std::vector<std::uint32_t> id(n);  // per used point: the lowest index with its coordinates
@@ -440,11 +440,18 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
     std::uint32_t position = 0;
     for (std::size_t k = 0; k < segment_count; ++k)
         list.push_back({local[segments[2 * k]], local[segments[2 * k + 1]], 0, 2, position++});
+    // The sorted edges leaving each point (by id) are a run: where each run starts.
+    std::vector<std::uint32_t> run_start(n + 1, 0);
+    for (const auto& edge : directed) ++run_start[(edge.first >> 32) + 1];
+    for (std::size_t i = 0; i < n; ++i) run_start[i + 1] += run_start[i];
+    auto has_edge = [&](std::uint64_t from, std::uint64_t to) {
+        for (std::uint32_t k = run_start[from]; k < run_start[from + 1]; ++k)
+            if ((directed[k].first & 0xffffffffu) == to) return true;
+        return false;
+    };
     for (std::size_t e = 0; e < directed.size(); ++e) {
         const std::uint64_t key = directed[e].first;
-        const std::uint64_t reverse = (key << 32) | (key >> 32);
-        const bool inner = std::binary_search(directed.begin(), directed.end(), std::make_pair(reverse, std::uint32_t{0}),
-                                              [](const auto& x, const auto& y) { return x.first < y.first; });
+        const bool inner = has_edge(key & 0xffffffffu, key >> 32);
         if (inner && !per_triangle) continue;
         const std::uint32_t t = directed[e].second;
         // The triangle's own corners (not the lowest copies), found again by their ids.
