@@ -379,34 +379,15 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
     // Points the triangulation refuses (not finite, too spread for exact tests) fail there, named;
     // otherwise the checks below decide on the points scaled as it scales them (a power of two:
     // no product underflows).
-    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-    bool finite = true;
-    for (double c : xy) {
-        const double magnitude = std::fabs(c);
-        if (!(magnitude <= std::numeric_limits<double>::max())) finite = false;
-        else largest = std::max(largest, magnitude), smallest = magnitude != 0 ? std::min(smallest, magnitude) : smallest;
-    }
     int exponent = 0;
-    if (!finite || (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent))) {
+    if (!delaunay_detail::scale_exponent(PointSpan2(xy.data(), m), &exponent)) {
         return renumbered(build(PointSpan2(xy.data(), m), {}, domain, options.max_added_points));
     }
     auto scaled = [&](std::uint32_t i, int axis) { return exponent == 0 ? points[i][axis] : std::ldexp(points[i][axis], exponent); };
     // Areas (exact orient2d) and each directed edge (counter-clockwise, by coordinates: copies of a
     // point are one point) in at most one triangle.
     std::vector<std::uint32_t> id(n);  // per used point: the lowest index with its coordinates
-    {
-        std::vector<std::uint32_t> order(used);
-        auto less = [&](std::uint32_t i, std::uint32_t j) {
-            return points[i][0] != points[j][0] ? points[i][0] < points[j][0]
-                   : points[i][1] != points[j][1] ? points[i][1] < points[j][1] : i < j;
-        };
-        std::sort(order.begin(), order.end(), less);
-        for (std::size_t k = 0; k < order.size(); ++k) {
-            const std::uint32_t i = order[k];
-            const bool same = k > 0 && points[i][0] == points[order[k - 1]][0] && points[i][1] == points[order[k - 1]][1];
-            id[i] = same ? id[order[k - 1]] : i;
-        }
-    }
+    delaunay_detail::lowest_copies(points, used, id);
     std::vector<std::uint32_t> corners(3 * triangle_count);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> directed;  // (from << 32 | to, triangle)
     directed.reserve(3 * triangle_count);

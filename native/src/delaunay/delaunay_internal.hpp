@@ -49,19 +49,45 @@ inline double coordinate_span(PointSpan2 p) {
     return std::max(xmax - xmin, ymax - ymin);
 }
 
-/// The power of two delaunay() scales these points by before its exact tests (0 when they are in
-/// incircle's range, and for points delaunay() refuses: non-finite, or spanning too much).
-inline int incircle_exponent(PointSpan2 p) {
+/// The power of two delaunay() scales these points by before its exact tests, in *exponent (0 when
+/// they are in incircle's range); false for points delaunay() refuses: non-finite, or spanning too
+/// much.
+inline bool scale_exponent(PointSpan2 p, int* exponent) {
     double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < 2 * p.count; ++i) {
         const double m = std::fabs(p.xy[i]);
-        if (!(m <= std::numeric_limits<double>::max())) return 0;
+        if (!(m <= std::numeric_limits<double>::max())) return false;
         largest = std::max(largest, m);
         if (m != 0.0) smallest = std::min(smallest, m);
     }
+    *exponent = 0;
+    return incircle_range_ok(largest, smallest) || incircle_scale_exponent(largest, smallest, exponent);
+}
+
+/// scale_exponent's power of two, and 0 for points delaunay() refuses.
+inline int incircle_exponent(PointSpan2 p) {
     int exponent = 0;
-    if (!incircle_range_ok(largest, smallest) && !incircle_scale_exponent(largest, smallest, &exponent)) return 0;
-    return exponent;
+    return scale_exponent(p, &exponent) ? exponent : 0;
+}
+
+/// For the points `indices` (finite coordinates; sorted here by x, y, index): lowest[i] = the
+/// lowest of them with exactly point i's coordinates. Returns the distinct ones, in that order.
+/// `lowest` must have room for every index.
+inline std::vector<std::uint32_t> lowest_copies(PointSpan2 p, std::vector<std::uint32_t> indices,
+                                                std::vector<std::uint32_t>& lowest) {
+    std::sort(indices.begin(), indices.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return p[a][0] < p[b][0] || (p[a][0] == p[b][0] && (p[a][1] < p[b][1] || (p[a][1] == p[b][1] && a < b)));
+    });
+    std::vector<std::uint32_t> distinct;
+    for (const std::uint32_t i : indices) {
+        if (!distinct.empty() && p[i][0] == p[distinct.back()][0] && p[i][1] == p[distinct.back()][1]) {
+            lowest[i] = distinct.back();
+        } else {
+            lowest[i] = i;
+            distinct.push_back(i);
+        }
+    }
+    return distinct;
 }
 
 /// The incremental algorithm's working mesh: counter-clockwise triangles (3 vertices each) with

@@ -108,7 +108,7 @@ std::int64_t Refiner::mark_triangles(const std::vector<std::uint32_t>& corners) 
     for (std::size_t k = 0; 3 * k + 2 < corners.size(); ++k)
         wanted.push_back({key(corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]), static_cast<std::uint32_t>(k)});
     std::sort(wanted.begin(), wanted.end());
-    std::vector<std::uint8_t> found(wanted.size(), 0);
+    std::vector<std::uint8_t> found(wanted.size(), 0);  // per triple k
     bool left_over = false;
     for (std::uint32_t t = 0; t < m_.region_.size(); ++t) {
         if (m_.region_[t] == 0) continue;
@@ -122,10 +122,8 @@ std::int64_t Refiner::mark_triangles(const std::vector<std::uint32_t>& corners) 
         m_.region_[t] = kDomain + 1 + at->second;
         found[at->second] = 1;
     }
-    std::int64_t first_missing = -1;
-    for (std::size_t k = 0; k < wanted.size(); ++k)
-        if (!found[k] && (first_missing < 0 || wanted[k].second < first_missing)) first_missing = wanted[k].second;
-    if (first_missing >= 0) return first_missing;
+    const auto missing = std::find(found.begin(), found.end(), 0);
+    if (missing != found.end()) return missing - found.begin();
     return left_over ? static_cast<std::int64_t>(wanted.size()) : -1;
 }
 

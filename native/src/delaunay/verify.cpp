@@ -12,6 +12,7 @@
 #include <limits>
 #include <numeric>
 
+#include "delaunay_internal.hpp"
 #include "hullkit/delaunay.hpp"
 #include "hullkit/predicates.hpp"
 
@@ -75,20 +76,8 @@ DelaunayVerifyReport verify_delaunay(PointSpan2 points, const std::uint32_t* inp
     // Distinct points: each index stands for the lowest index with the same coordinates.
     std::vector<std::uint32_t> order(n_points);
     std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return p[a][0] < p[b][0] || (p[a][0] == p[b][0] && (p[a][1] < p[b][1] || (p[a][1] == p[b][1] && a < b)));
-    });
     std::vector<std::uint32_t> rep(n_points);
-    std::vector<std::uint32_t> distinct;
-    for (std::size_t k = 0; k < n_points; ++k) {
-        const std::uint32_t i = order[k];
-        if (k > 0 && p[i][0] == p[distinct.back()][0] && p[i][1] == p[distinct.back()][1]) {
-            rep[i] = distinct.back();
-        } else {
-            rep[i] = i;
-            distinct.push_back(i);
-        }
-    }
+    const std::vector<std::uint32_t> distinct = delaunay_detail::lowest_copies(p, std::move(order), rep);
     report.distinct_points = distinct.size();
     std::vector<std::uint32_t> tri(3 * triangle_count);
     for (std::size_t e = 0; e < tri.size(); ++e) tri[e] = rep[input_triangles[e]];
