@@ -211,6 +211,11 @@ TEST_CASE("refine_mesh: errors name the triangle", "[refine_mesh]") {
     RefineMeshOptions per;
     per.triangle_max_area = {0, 0, 0, 0};
     CHECK(error_of(t_xy, t_tris, per).find("triangle 3 is not a face of the mesh its edges make") == 0);
+    // The same triangles with the split one first: the error names it by its own index.
+    const std::vector<std::uint32_t> first = {1, 5, 2, 0, 1, 4, 0, 4, 2, 0, 2, 3};
+    const ConstrainedDelaunay named = hullkit::refine_mesh(PointSpan2(t_xy), first.data(), 4, nullptr, 0, per);
+    CHECK(named.error.find("triangle 0 is not a face of the mesh its edges make") == 0);
+    CHECK(named.error_triangle == 0);
     RefineMeshOptions bad;
     bad.quality.min_angle = 40;
     CHECK(error_of(xy, tris, bad).find("min_angle must be between 0 and 34") == 0);
