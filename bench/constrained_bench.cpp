@@ -349,21 +349,30 @@ double smallest_angle(const MeshCdt& cdt) {
 #if HULLKIT_CONSTRAINED_BENCH_HULLKIT
 /// hullkit::triangulate_polygon timed on the input; with quality options (hullkit-mesh) the line
 /// also gets the mesh's smallest angle, the bound and hullkit's count of triangles left below it.
+/// CGAL's default shape bound B = 0.125 is sin^2 of the smallest angle: asin(sqrt(0.125)) degrees.
+double cgal_default_angle_deg() { return std::asin(std::sqrt(0.125)) * 180 / M_PI; }
+
+/// A hullkit result's line (and dump); with quality options, the mesh's fields too.
+Run hullkit_run(double seconds, const hullkit::ConstrainedDelaunay& result, std::size_t input_count,
+                const hullkit::QualityOptions& quality, Dump* dump) {
+    if (!result.ok()) throw std::runtime_error(result.error);
+    if (dump) *dump = Dump{result.triangles, result.coords};
+    // Added points: every point past the input's (refine_mesh's input holds the crossings too).
+    Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.coords.size() / 2 - input_count};
+    if (quality.active()) {
+        out.min_angle_deg = smallest_angle(result.triangles, result.coords);
+        out.min_angle_bound_deg = quality.min_angle;
+        out.unrefined = static_cast<long long>(result.unrefined_count);
+    }
+    return out;
+}
+
 std::function<Run(Dump*)> hullkit_polygon_run(const Input& input, const hullkit::PolygonOptions& options) {
     return [&input, options](Dump* dump) {
         const auto start = std::chrono::steady_clock::now();
         hullkit::ConstrainedDelaunay result = hullkit::triangulate_polygon(
             hullkit::PointSpan2(input.xy), input.hole_indices.data(), input.hole_indices.size(), options);
-        const double seconds = seconds_since(start);
-        if (!result.ok()) throw std::runtime_error(result.error);
-        if (dump) *dump = Dump{result.triangles, result.coords};
-        Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
-        if (options.quality.active()) {
-            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
-            out.min_angle_bound_deg = options.quality.min_angle;
-            out.unrefined = static_cast<long long>(result.unrefined_count);
-        }
-        return out;
+        return hullkit_run(seconds_since(start), result, input.count(), options.quality, dump);
     };
 }
 #endif
@@ -462,10 +471,7 @@ int main(int argc, char** argv) {
                 const auto start = std::chrono::steady_clock::now();
                 hullkit::ConstrainedDelaunay result = hullkit::constrained_delaunay(
                     hullkit::PointSpan2(input.xy), input.segments.data(), input.segments.size() / 2, options);
-                const double seconds = seconds_since(start);
-                if (!result.ok()) throw std::runtime_error(result.error);
-                if (dump) *dump = Dump{result.triangles, result.coords};
-                return Run{seconds, result.triangle_count(), result.coords.size() / 2, result.added_count()};
+                return hullkit_run(seconds_since(start), result, input.count(), options.quality, dump);
             };
         }
 #else
@@ -476,8 +482,7 @@ int main(int argc, char** argv) {
         if (!input.polygon()) return fail("hullkit-mesh meshes polygons only (as cgal-mesh)");
         hullkit::PolygonOptions options;
         options.threads = args.threads;
-        // CGAL's shape bound B = 0.125 is sin^2 of the smallest angle: asin(sqrt(0.125)) degrees.
-        options.quality.min_angle = std::asin(std::sqrt(0.125)) * 180 / M_PI;
+        options.quality.min_angle = cgal_default_angle_deg();
         detail = "hullkit::triangulate_polygon(..., PolygonOptions{evenodd, quality.min_angle " +
                  std::to_string(options.quality.min_angle) + " (CGAL's B = 0.125)})";
         run = hullkit_polygon_run(input, options);
@@ -489,7 +494,7 @@ int main(int argc, char** argv) {
         if (!input.polygon()) return fail("hullkit-refine refines polygons' meshes only (as cgal-refine)");
         hullkit::RefineMeshOptions options;
         options.threads = args.threads;
-        options.quality.min_angle = std::asin(std::sqrt(0.125)) * 180 / M_PI;
+        options.quality.min_angle = cgal_default_angle_deg();
         detail = "hullkit::triangulate_polygon untimed, then hullkit::refine_mesh(coords, triangles, ..., quality.min_angle " +
                  std::to_string(options.quality.min_angle) + " (CGAL's B = 0.125)) timed";
         run = [&input, options](Dump* dump) {
@@ -501,15 +506,7 @@ int main(int argc, char** argv) {
             const auto start = std::chrono::steady_clock::now();
             hullkit::ConstrainedDelaunay result =
                 hullkit::refine_mesh(hullkit::PointSpan2(mesh.coords), mesh.triangles.data(), mesh.triangle_count(), nullptr, 0, options);
-            const double seconds = seconds_since(start);
-            if (!result.ok()) throw std::runtime_error(result.error);
-            // The mesh's own added points (crossings) count as added, as in hullkit-mesh's line.
-            if (dump) *dump = Dump{result.triangles, result.coords};
-            Run out{seconds, result.triangle_count(), result.coords.size() / 2, result.coords.size() / 2 - input.count()};
-            out.min_angle_deg = smallest_angle(result.triangles, result.coords);
-            out.min_angle_bound_deg = options.quality.min_angle;
-            out.unrefined = static_cast<long long>(result.unrefined_count);
-            return out;
+            return hullkit_run(seconds_since(start), result, input.count(), options.quality, dump);
         };
 #else
         return fail("not available: this binary is the CGAL-only build (hullkit_constrained_cgal_bench)");

@@ -96,6 +96,15 @@ function takeResult(result, where, test, extra = () => ({})) {
   }
 }
 
+/** Flat index tuples (pairs, triples) as a Uint32Array; `what` names them in the errors. */
+function indexTuples(values, arity, what, where) {
+  const flat = toUint32(values ?? [], `${where}: ${what}`);
+  if (flat.length % arity !== 0) {
+    throw new HullkitError(`${where}: ${flat.length} ${what.replace(/s$/, '')} indices is not a whole number of ${arity === 2 ? 'pairs' : 'triples'}`);
+  }
+  return flat;
+}
+
 /** Runs `call(addresses...)` with each typed array copied into the heap, freeing them afterwards. */
 function withHeap(core, arrays, where, call) {
   const addresses = [];
@@ -187,8 +196,7 @@ export function constrainedDelaunay(core, coords, edges, options = {}) {
   if (typeof removeExterior !== 'boolean') throw new HullkitError(`${where}: removeExterior must be true or false, got ${String(removeExterior)}`);
   const holes = checked.holes === undefined ? new Float64Array(0) : flatCoordinates(checked.holes, `${where}: holes`, 2);
   const xy = flatCoordinates(coords, where, 2);
-  const segments = toUint32(edges ?? [], `${where}: edges`);
-  if (segments.length % 2 !== 0) throw new HullkitError(`${where}: ${segments.length} edge indices is not a whole number of pairs`);
+  const segments = indexTuples(edges, 2, 'edges', where);
   const count = xy.length / 2;
   return takeResult(
     withHeap(core, [xy, segments, holes], where, (p, s, h) =>
@@ -208,10 +216,8 @@ export function refineMesh(core, coords, triangles, options = {}) {
   const checked = checkOptions(options, MESH_OPTIONS, where);
   const quality = qualityOf(checked, where);
   const xy = flatCoordinates(coords, where, 2);
-  const corners = toUint32(triangles ?? [], `${where}: triangles`);
-  if (corners.length % 3 !== 0) throw new HullkitError(`${where}: ${corners.length} triangle indices is not a whole number of triples`);
-  const segments = toUint32(checked.edges ?? [], `${where}: edges`);
-  if (segments.length % 2 !== 0) throw new HullkitError(`${where}: ${segments.length} edge indices is not a whole number of pairs`);
+  const corners = indexTuples(triangles, 3, 'triangles', where);
+  const segments = indexTuples(checked.edges, 2, 'edges', where);
   const perTriangle = checked.triangleMaxArea !== undefined;
   let areas = new Float64Array(0);
   if (perTriangle) {
