@@ -389,7 +389,7 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
     std::vector<std::uint32_t> id(n);  // per used point: the lowest index with its coordinates
     delaunay_detail::lowest_copies(points, used, id);
     std::vector<std::uint32_t> corners(3 * triangle_count);
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> directed;  // (from << 32 | to, triangle)
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> directed;  // (from << 32 | to, half-edge 3t + k)
     directed.reserve(3 * triangle_count);
     for (std::size_t t = 0; t < triangle_count; ++t) {
         std::uint32_t v[3] = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
@@ -401,16 +401,16 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
         if (o < 0) std::swap(v[1], v[2]);
         for (int k = 0; k < 3; ++k) {
             corners[3 * t + k] = v[k];
-            directed.push_back({(std::uint64_t{id[v[k]]} << 32) | id[v[(k + 1) % 3]], static_cast<std::uint32_t>(t)});
+            directed.push_back({(std::uint64_t{id[v[k]]} << 32) | id[v[(k + 1) % 3]], static_cast<std::uint32_t>(3 * t + k)});
         }
     }
     std::sort(directed.begin(), directed.end());
     for (std::size_t k = 1; k < directed.size(); ++k) {
         if (directed[k].first == directed[k - 1].first) {
             const std::uint32_t a = static_cast<std::uint32_t>(directed[k].first >> 32), b = static_cast<std::uint32_t>(directed[k].first);
-            return blame(failure("triangles " + std::to_string(directed[k - 1].second) + " and " + std::to_string(directed[k].second) +
+            return blame(failure("triangles " + std::to_string(directed[k - 1].second / 3) + " and " + std::to_string(directed[k].second / 3) +
                                  " overlap: both have the edge from point " + std::to_string(a) + " to point " + std::to_string(b) +
-                                 " on the same side"), directed[k].second);
+                                 " on the same side"), directed[k].second / 3);
         }
     }
     // The boundary: directed edges whose reverse no triangle has (counted once, so that even-odd
@@ -434,15 +434,9 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
         const std::uint64_t key = directed[e].first;
         const bool inner = has_edge(key & 0xffffffffu, key >> 32);
         if (inner && !per_triangle) continue;
-        const std::uint32_t t = directed[e].second;
-        // The triangle's own corners (not the lowest copies), found again by their ids.
-        std::uint32_t a = 0, b = 0;
-        for (int k = 0; k < 3; ++k) {
-            if (id[corners[3 * t + k]] == (key >> 32) && id[corners[3 * t + (k + 1) % 3]] == (key & 0xffffffffu)) {
-                a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3];
-            }
-        }
-        list.push_back({local[a], local[b], 1, 1, position++});
+        // The triangle's own corners (not the lowest copies).
+        const std::uint32_t h = directed[e].second, next = h % 3 == 2 ? h - 2 : h + 1;
+        list.push_back({local[corners[h]], local[corners[next]], 1, 1, position++});
     }
     std::vector<std::uint32_t> mesh_corners;
     if (per_triangle) {
