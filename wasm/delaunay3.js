@@ -7,7 +7,7 @@ import {
   HullkitError, checkCorners, checkOptions, checkRepresentative, copyIn, flatCoordinates, locateInHeap, locateOptions, toInt32, toUint32,
 } from './internal.js';
 
-const DELAUNAY3_OPTIONS = ['progress'];
+const DELAUNAY3_OPTIONS = ['progress', 'furthestSite'];
 const VERIFY_OPTIONS = ['perturbed'];
 
 /** The points as a Float64Array, x y z per point (see flatCoordinates: a flat layout only). */
@@ -41,11 +41,14 @@ function guardedProgress(progress) {
  */
 export function delaunay3(core, xyz, options = {}) {
   const points = points3(xyz, 'delaunay3');
-  const progress = guardedProgress(checkOptions(options, DELAUNAY3_OPTIONS, 'delaunay3').progress);
+  const checked = checkOptions(options, DELAUNAY3_OPTIONS, 'delaunay3');
+  const progress = guardedProgress(checked.progress);
+  const furthestSite = checked.furthestSite ?? false;
+  if (typeof furthestSite !== 'boolean') throw new HullkitError(`delaunay3: furthestSite must be true or false, got ${String(furthestSite)}`);
   const address = copyIn(core, points, 'delaunay3');
   let result;
   try {
-    result = core.delaunay3FromHeap(address, points.length / 3, progress.call);
+    result = core.delaunay3FromHeap(address, points.length / 3, progress.call, furthestSite);
   } finally {
     core._free(address);
   }
@@ -63,6 +66,7 @@ export function delaunay3(core, xyz, options = {}) {
       normal: result.normalView().slice(),
       representative: result.representativeView().slice(),
       duplicateCount: result.duplicateCount(),
+      furthestSite: result.furthestSite,
     };
   } finally {
     result.delete();
@@ -111,7 +115,9 @@ function checkTetrahedralization(triangulation, count, where) {
   }
   const representative = checkRepresentative(triangulation.representative ?? [], count, where);
   const empty = new Uint32Array(0);
-  const out = { dimension, tetrahedra: empty, neighbors: new Int32Array(0), triangles: empty, vertices: empty, representative };
+  const furthestSite = triangulation.furthestSite ?? false;
+  if (typeof furthestSite !== 'boolean') throw new HullkitError(`${where}: furthestSite must be true or false, got ${String(furthestSite)}`);
+  const out = { dimension, tetrahedra: empty, neighbors: new Int32Array(0), triangles: empty, vertices: empty, representative, furthestSite };
   const corners = (array, name) => checkCorners(array, representative, name, where);
   if (dimension === 3) {
     const tetrahedra = corners(toUint32(triangulation.tetrahedra ?? [], `${where}: tetrahedra`), 'tetrahedra');
@@ -186,6 +192,7 @@ function withTetrahedralizationInHeap(core, points, t, where, call) {
       vertices: put(t.vertices),
       vertexCount: t.vertices.length,
       representative: put(t.representative),
+      furthestSite: t.furthestSite,
     };
     return call(put(points), points.length / 3, heap);
   } finally {

@@ -20,9 +20,10 @@ using hullkit_wasm::view_of;
 // their count. `progress` is a JS function (points done, total) or null; the JS layer wraps the
 // caller's so that it never throws (an exception thrown through these frames would skip the C++
 // destructors and leak the working mesh).
-hullkit::Delaunay3 delaunay3_from_heap(std::uintptr_t xyz, std::uint32_t count, val progress) {
+hullkit::Delaunay3 delaunay3_from_heap(std::uintptr_t xyz, std::uint32_t count, val progress, bool furthest_site) {
     hullkit::Delaunay3Options options;
     options.threads = 1;  // the wasm build has no threads; the result is the same for every count
+    options.furthest_site = furthest_site;
     if (!progress.isNull() && !progress.isUndefined()) {
         options.progress = [&progress](std::size_t done, std::size_t total) {
             progress(static_cast<double>(done), static_cast<double>(total));
@@ -73,6 +74,7 @@ struct HeapTetrahedralization {
     std::uintptr_t vertices = 0;  ///< dimension 1 and 0
     std::uint32_t vertex_count = 0;
     std::uintptr_t representative = 0;  ///< one per point
+    bool furthest_site = false;          ///< Delaunay3Options::furthest_site made it
 };
 
 template <typename T>
@@ -93,6 +95,7 @@ hullkit::Delaunay3 rebuilt(const HeapTetrahedralization& h, std::uint32_t point_
     d.vertices = block<std::uint32_t>(h.vertices, h.vertex_count);
     d.representative = block<std::uint32_t>(h.representative, point_count);
     for (std::uint32_t i = 0; i < point_count; ++i) d.duplicate_count += d.representative[i] != i;
+    d.furthest_site = h.furthest_site;
     return d;
 }
 
@@ -135,6 +138,7 @@ EMSCRIPTEN_BINDINGS(hullkit_delaunay3) {
         .function("ok", &delaunay3_ok)
         .function("errorPoint", &error_point)
         .function("duplicateCount", &duplicate_count)
+        .property("furthestSite", &hullkit::Delaunay3::furthest_site)
         .function("tetrahedraView", &tetrahedra_view)
         .function("neighborsView", &neighbors_view)
         .function("hullView", &hull_view)
@@ -154,7 +158,8 @@ EMSCRIPTEN_BINDINGS(hullkit_delaunay3) {
         .field("triangleCount", &HeapTetrahedralization::triangle_count)
         .field("vertices", &HeapTetrahedralization::vertices)
         .field("vertexCount", &HeapTetrahedralization::vertex_count)
-        .field("representative", &HeapTetrahedralization::representative);
+        .field("representative", &HeapTetrahedralization::representative)
+        .field("furthestSite", &HeapTetrahedralization::furthest_site);
     emscripten::class_<hullkit::Delaunay3Queries>("Delaunay3Queries")
         .property("error", &hullkit::Delaunay3Queries::error)
         .function("errorQuery", &error_query)

@@ -440,7 +440,9 @@ export interface Hullkit {
    * back into the core, which answers from them (nothing is tetrahedralized again). They are
    * checked for consistency (indices in range, neighbours that share their faces back), not for
    * geometry: check arrays from elsewhere with {@link Hullkit.verifyDelaunay3} first. Coplanar and
-   * collinear points have no tetrahedra (`tetrahedron` is all -1) but a nearest point.
+   * collinear points have no tetrahedra (`tetrahedron` is all -1) but a nearest point. A
+   * furthest-site tetrahedralization (`furthestSite: true`) locates queries but finds no nearest
+   * points (`nearest: true` throws: the points inside the hull are in it nowhere).
    *
    * @example
    * const t = hullkit.delaunay3(xyz);
@@ -799,6 +801,16 @@ export interface Delaunay3Options {
    * `pointsDone === total`. Not called when the points do not span 3D or the plane.
    */
   progress?: (pointsDone: number, total: number) => void;
+  /**
+   * The furthest-site tetrahedralization instead (scipy's and Qhull's furthest_site: the upper hull
+   * of the lifted points): the tetrahedra whose circumspheres hold every point. Only the convex
+   * hull's extreme points are corners (a point inside the hull, or inside one of its faces or
+   * edges, is in no tetrahedron); ties as for the ordinary one (no flat tetrahedron). Coplanar
+   * points: the furthest-site triangles of the polygon's corners; collinear: the two end points.
+   * {@link Hullkit.locate3} and {@link Hullkit.voronoi3} take the result as they take the ordinary
+   * one (the diagram's cells are then all unbounded). Default false.
+   */
+  furthestSite?: boolean;
 }
 
 /**
@@ -851,6 +863,8 @@ export interface Delaunay3Result {
   representative: Uint32Array;
   /** How many points are duplicates (`representative[i] !== i`). */
   duplicateCount: number;
+  /** Whether this is the furthest-site tetrahedralization ({@link Delaunay3Options.furthestSite}). */
+  furthestSite: boolean;
 }
 
 export interface VerifyDelaunay3Options {
@@ -869,6 +883,8 @@ export interface VerifyDelaunay3Options {
  */
 export interface Delaunay3Triangulation {
   dimension: number;
+  /** true for a furthest-site tetrahedralization (default false): then no nearest points. */
+  furthestSite?: boolean;
   tetrahedra?: Uint32Array | ArrayLike<number>;
   neighbors?: Int32Array | ArrayLike<number>;
   triangles?: Uint32Array | ArrayLike<number>;

@@ -27,7 +27,8 @@ namespace {
 
 const char* const kDelaunay3Usage =
     R"(Usage: hullkit delaunay3 [INPUT|-] [-o FILE] [--format FORMAT]
-                         [--voronoi FILE] [--threads N] [--stats] [--quiet]
+                         [--voronoi FILE] [--furthest-site] [--threads N]
+                         [--stats] [--quiet]
 
 Computes the Delaunay tetrahedralization of the 3D points in INPUT (standard
 input if INPUT is missing or '-'): the lower convex hull of the points lifted to
@@ -64,7 +65,14 @@ Options:
                         counter-clockwise seen from q), "cells":
                         [[face,...],...] (per point), "volume": [...] (null
                         when unbounded: a hull point, or for a duplicate
-                        point)}
+                        point)}; with --furthest-site the furthest-site
+                        diagram (every cell unbounded; a point in no
+                        tetrahedron has no faces and volume 0)
+  --furthest-site     the furthest-site tetrahedralization instead (qdelaunay
+                        Qu): the tetrahedra whose circumspheres hold every
+                        point; only the hull's extreme points are corners;
+                        coplanar points: the furthest-site triangles of the
+                        polygon's corners; collinear: the two end points
   --threads N         a whole number from 0 to 1024: 0 (default) every
                       hardware thread, 1 this thread only; the output is the
                       same for every N
@@ -125,6 +133,7 @@ struct Delaunay3Args {
     Format format = Format::Json;
     std::string voronoi;  ///< --voronoi FILE: the Voronoi cells as JSON there
     unsigned threads = 0;
+    bool furthest_site = false;
     bool stats = false;
     bool quiet = false;
 };
@@ -141,6 +150,7 @@ bool parse_args(const std::vector<std::string>& argv, Delaunay3Args* args) {
     app.add_option("--format", format_name)->multi_option_policy(last);
     app.add_option("--voronoi", args->voronoi)->multi_option_policy(last);
     add_whole_number_option(app, "--threads", &args->threads, 0, 1024);
+    app.add_flag("--furthest-site", args->furthest_site);
     app.add_flag("--stats", args->stats);
     app.add_flag("--quiet", args->quiet);
     parse_or_throw(app, argv, "delaunay3");
@@ -492,6 +502,7 @@ int delaunay3_main(const std::vector<std::string>& argv) {
     const std::vector<double> xyz = read_cloud(args.input, args.threads, args.quiet);
     hullkit::Delaunay3Options options;
     options.threads = args.threads;
+    options.furthest_site = args.furthest_site;
     hullkit::Delaunay3 result;
     const auto start = std::chrono::steady_clock::now();
     {

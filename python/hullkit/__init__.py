@@ -382,8 +382,14 @@ class Delaunay3(_CoreViews):
                 f"dimension={self.dimension})")
 
 
-def delaunay3(points, threads=0):
+def delaunay3(points, threads=0, furthest_site=False):
     """The exact Delaunay tetrahedralization of ``points`` (array-like, shape (n, 3)); see Delaunay3.
+
+    ``furthest_site=True``: the furthest-site tetrahedralization instead (scipy's and Qhull's
+    furthest_site: the upper hull of the lifted points), whose tetrahedra's circumspheres hold every
+    point; only the hull's extreme points are corners (a point inside the hull, or inside one of its
+    faces or edges, is in no tetrahedron); coplanar points: the furthest-site triangulation of the
+    polygon's corners; collinear: the two end points.
 
     Anything numpy converts to float64 is accepted (float32, Fortran order, lists: converted once;
     a C-ordered float64 array is used as it is). ``threads``: 0 every core, 1 the calling thread
@@ -410,7 +416,7 @@ def delaunay3(points, threads=0):
     """
     array = as_points(points, 3)
     with _translated():
-        core = _core.Tetrahedralization(array, _threads(threads))
+        core = _core.Tetrahedralization(array, _threads(threads), bool(furthest_site))
     return Delaunay3(core, array)
 
 

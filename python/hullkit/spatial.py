@@ -55,10 +55,12 @@ Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact;
 by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
 ``coplanar``), Fv by Voronoi; ConvexHull takes QGn and QG-n (``good``), Qc (``coplanar``: the
 points exactly on the boundary that are not vertices) and Qi (the points inside). Any other option raises
-HullkitError naming it; so do ``furthest_site=True`` in 3D and more than 3 dimensions.
-``furthest_site=True`` in 2D (Delaunay, Voronoi): the furthest-site triangulation of the hull's
-corners (every circumcircle holds every point) and its diagram, exactly (Lawson's flips with the
-exact in-circle test).
+HullkitError naming it; so do more than 3 dimensions.
+``furthest_site=True`` (Delaunay, Voronoi): the furthest-site triangulation of the hull's
+extreme points (every circumcircle or circumsphere holds every point) and its diagram, exactly: in
+2D by Lawson's flips with the exact in-circle test, in 3D by the core's tetrahedralization with
+every in-sphere answer negated (the upper hull of the lifted points; ties by the same
+perturbation, no flat tetrahedron).
 
 Only NaN or infinite coordinates and wrong shapes raise (HullkitError, a ValueError, naming the
 point; ``QhullError`` is the same class, so scipy code that catches it keeps working).
@@ -338,9 +340,11 @@ class Delaunay(_Incremental):
     coplanar, npoints, ndim, nsimplex, min_bound, max_bound; and dimension. Methods:
     find_simplex, lift_points, plane_distance, add_points and close (``incremental=True``).
 
-    ``furthest_site=True`` (2D): the triangulation of the hull's corners whose circumcircles hold
-    every point (the upper hull of the lifted points), exact; ``equations`` then point up, and
-    points inside the hull are in no simplex (``coplanar`` is empty, as scipy's).
+    ``furthest_site=True``: the triangulation (2D) or tetrahedralization (3D) of the hull's extreme
+    points whose circumcircles or circumspheres hold every point (the upper hull of the lifted
+    points), exact; ``equations`` then point up, and points inside the hull (or inside a hull face
+    or edge) are in no simplex (``coplanar`` is empty, as scipy's). Coplanar 3D points: no
+    simplices, ``convex_hull`` the furthest-site triangles of the polygon's corners.
 
     ``equations`` are the planes of the simplices lifted onto the paraboloid
     z = paraboloid_scale * |x|^2 + paraboloid_shift (scale 1, shift 0: hullkit does not rescale),
@@ -377,8 +381,6 @@ class Delaunay(_Incremental):
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self._equations = None
         if self.ndim == 3:
-            if self._furthest:
-                _not_supported("furthest_site=True in 3D", "Delaunay")
             self._from_3d(array)
         else:
             self._from_2d(array)
@@ -473,7 +475,9 @@ class Delaunay(_Incremental):
 
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, xyz):
-        self._tetrahedralization = d = delaunay3(xyz)
+        # furthest_site=True: the core's furthest-site tetrahedralization (its corners the hull's
+        # extreme points; coplanar points: the furthest-site triangles of the polygon's corners).
+        self._tetrahedralization = d = delaunay3(xyz, furthest_site=self._furthest)
         self.dimension = d.dimension
         self._representative, self._duplicate_count = d.representative, d.duplicate_count
         # The core's uint32 indices are below 2**31 (it refuses more points): as int32 they are the
@@ -501,7 +505,7 @@ class Delaunay(_Incremental):
         if array.shape[-1:] != (dims,):
             raise HullkitError(f"xi must have shape (..., {dims}), got {array.shape}")
         flat = as_points(array.reshape(-1, dims), dims, "xi")
-        if self._furthest:
+        if self._furthest and dims == 2:
             return self._furthest_find(flat).reshape(array.shape[:-1])
         if dims == 3:
             found = self._tetrahedralization.locate(flat)["tetrahedron"]
@@ -671,8 +675,10 @@ class Voronoi(_Incremental):
       ``[-1]`` between each pair of points whose cells share a face (the planar Voronoi edge swept
       along the normal), collinear points a plane ``[-1]`` between consecutive points. One point
       has the whole space as its cell (region ``[-1]``). Every cell is then unbounded.
-    * ``furthest_site=True`` (2D): each hull corner's furthest-site cell (unbounded: -1 last), the
-      other points' cells empty (region 0, volume 0); 3D raises "not supported".
+    * ``furthest_site=True``: each extreme point's furthest-site cell (unbounded; in 2D
+      counter-clockwise with -1 last, in 3D ascending with -1 first), the other points' cells empty
+      (volume 0; in 2D they share region 0, in 3D each has its own empty region, as scipy's). Coplanar or
+      collinear points in 3D, and collinear ones in 2D, raise "not supported" (scipy raises too).
       ``qhull_options`` as the module says;
       NaN or infinite coordinates and wrong shapes raise HullkitError (a ValueError).
 
@@ -713,7 +719,7 @@ class Voronoi(_Incremental):
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self.furthest_site = self._furthest
         self._ridge_dict = self._ridge_vertices = self._regions = None
-        if self._furthest:
+        if self._furthest and self.ndim == 2:
             parts = self._furthest_2d(array)
         else:
             parts = self._from_3d(array) if self.ndim == 3 else self._from_2d(array)
@@ -799,8 +805,6 @@ class Voronoi(_Incremental):
         exactly cocircular triangles, a ridge per edge between two groups or on the hull (a ray),
         a cell (unbounded: -1 last) for each hull corner, counter-clockwise; the other points'
         cells are empty (region 0, volume 0)."""
-        if self.ndim == 3:
-            _not_supported("furthest_site=True in 3D", "Voronoi")
         tri = Delaunay(xy, furthest_site=True)
         self.dimension = tri.dimension
         if tri.nsimplex == 0:
@@ -845,12 +849,20 @@ class Voronoi(_Incremental):
 
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, xyz):
-        d = delaunay3(xyz)
+        d = delaunay3(xyz, furthest_site=self._furthest)
         self.dimension = d.dimension
+        if self._furthest and d.dimension < 3:
+            _not_supported("furthest_site=True for coplanar or collinear 3D points", "Voronoi")
         if d.dimension == 3:
+            # Furthest-site: the diagram dual to the furthest-site tetrahedralization (each extreme
+            # point's cell unbounded; a point in no tetrahedron has an empty cell, volume 0).
             v = d.voronoi()
             self.vertices = v["vertices"]
-            return (d.representative, *self._faces_3d(v, len(xyz)), v["volume"])
+            cells, offsets = self._faces_3d(v, len(xyz))
+            volume = v["volume"]
+            if self._furthest:
+                volume = _np.where((_np.diff(offsets) == 0) & ~_np.isnan(volume), 0.0, volume)
+            return (d.representative, cells, offsets, volume)
         if d.dimension == 2:
             return self._coplanar_3d(xyz, d)
         return self._along_line(d.representative, d.vertices, (-1,))

@@ -1025,10 +1025,11 @@ py::dict verify_delaunay(const Points& points, const py::array_t<std::uint32_t, 
 /// arrays are views into the core's result, which they keep alive.
 class Tetrahedralization {
 public:
-    Tetrahedralization(Points points, unsigned threads) : points_(std::move(points)) {
+    Tetrahedralization(Points points, unsigned threads, bool furthest_site) : points_(std::move(points)) {
         const hullkit::PointSpan span(points_.data(), rows(points_, 3, "points"));
         hullkit::Delaunay3Options options;
         options.threads = threads;
+        options.furthest_site = furthest_site;
         {
             py::gil_scoped_release unlocked;
             result_ = hullkit::delaunay3(span, options);
@@ -1472,7 +1473,7 @@ PYBIND11_MODULE(_core, m) {
 
     using hullkit::Delaunay3;
     py::class_<Tetrahedralization>(m, "Tetrahedralization")
-        .def(py::init<Points, unsigned>(), py::arg("points"), py::arg("threads") = 0u)
+        .def(py::init<Points, unsigned, bool>(), py::arg("points"), py::arg("threads") = 0u, py::arg("furthest_site") = false)
         .def_property_readonly("dimension", [](const Tetrahedralization& t) { return t.result().dimension; })
         .def_property_readonly("tetrahedra", result_view<Tetrahedralization>(&Delaunay3::tetrahedra, 4))
         .def_property_readonly("neighbors",  // per tetrahedron, or per triangle for coplanar points

@@ -75,6 +75,36 @@ TEST_CASE("hullkit delaunay3: JSON output is the library's tetrahedralization", 
     REQUIRE(v.out.rfind("ok: 400 points", 0) == 0);
 }
 
+TEST_CASE("hullkit delaunay3 --furthest-site: the library's furthest-site tetrahedralization, and its diagram",
+          "[delaunay3][cli][furthest]") {
+    TempDir dir("hk-d3");
+    const std::vector<double> xyz = write_cloud(dir.file("points.txt"), 300, 7);
+    const RunResult r = run_cli(dir, {"delaunay3", dir.file("points.txt"), "--furthest-site", "--voronoi",
+                                      dir.file("cells.json"), "-o", dir.file("tets.json")});
+    REQUIRE(r.exit_code == 0);
+    const nlohmann::json j = nlohmann::json::parse(read_text(dir.file("tets.json")));
+    hullkit::Delaunay3Options options;
+    options.furthest_site = true;
+    const hullkit::Delaunay3 d = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 300), options);
+    REQUIRE(flatten(j["tetrahedra"]) == d.tetrahedra);
+    REQUIRE(flatten(j["hull"]) == d.hull);
+    // Not the nearest-site tetrahedralization: fewer tetrahedra, only on the hull's corners, and
+    // it does not verify as Delaunay.
+    const hullkit::Delaunay3 nearest = hullkit::delaunay3(hullkit::PointSpan(xyz.data(), 300));
+    REQUIRE(d.tetrahedron_count() < nearest.tetrahedron_count());
+    const RunResult v = run_cli(dir, {"verify-delaunay3", dir.file("points.txt"), dir.file("tets.json")});
+    REQUIRE(v.exit_code == 1);
+    // The diagram: every corner's cell unbounded (volume null), every other point's empty (volume 0).
+    const nlohmann::json cells = nlohmann::json::parse(read_text(dir.file("cells.json")));
+    std::vector<bool> corner(300, false);
+    for (const std::uint32_t c : d.tetrahedra) corner[c] = true;
+    for (std::size_t i = 0; i < 300; ++i) {
+        INFO("point " << i);
+        REQUIRE(cells["volume"][i].is_null() == corner[i]);
+        REQUIRE(cells["cells"][i].empty() == !corner[i]);
+    }
+}
+
 TEST_CASE("hullkit delaunay3: TetGen .ele and .node, VTK, and verification of the .ele", "[delaunay3][cli]") {
     TempDir dir("hk-d3");
     const std::vector<double> xyz = write_cloud(dir.file("points.txt"), 300, 2);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "delaunay3_test_points.hpp"
 #include "hull/hull_checks.hpp"
 #include "hullkit/delaunay3.hpp"
 #include "hullkit/hull.hpp"
@@ -27,7 +28,10 @@ using hullkit::PointSpan;
 
 namespace {
 
-using Tet = std::array<std::uint32_t, 4>;
+using hullkit_test::grid3;
+using hullkit_test::shuffled3;
+using hullkit_test::Tet;
+using hullkit_test::tetrahedron_set;
 
 Delaunay3 run(const std::vector<double>& xyz, unsigned threads = 1) {
     Delaunay3Options options;
@@ -99,30 +103,11 @@ void check_tetrahedralization(const std::vector<double>& xyz, const Delaunay3& d
     REQUIRE(open_faces == hull);
 }
 
-std::set<Tet> tetrahedron_set(const Delaunay3& d, const std::vector<std::uint32_t>* relabel = nullptr) {
-    std::set<Tet> out;
-    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
-        Tet v;
-        for (int k = 0; k < 4; ++k) v[k] = relabel ? (*relabel)[d.tetrahedra[4 * t + k]] : d.tetrahedra[4 * t + k];
-        std::sort(v.begin(), v.end());
-        out.insert(v);
-    }
-    return out;
-}
-
 std::vector<double> uniform(std::size_t n, std::uint64_t seed, double scale = 1.0, double offset = 0.0) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1, 1);
     std::vector<double> xyz(3 * n);
     for (double& v : xyz) v = offset + scale * u(rng);
-    return xyz;
-}
-
-std::vector<double> grid(int n) {
-    std::vector<double> xyz;
-    for (int x = 0; x < n; ++x)
-        for (int y = 0; y < n; ++y)
-            for (int z = 0; z < n; ++z) xyz.insert(xyz.end(), {double(x), double(y), double(z)});
     return xyz;
 }
 
@@ -163,7 +148,7 @@ TEST_CASE("delaunay3: five points, a bipyramid and a point inside", "[delaunay3]
 
 TEST_CASE("delaunay3: the cube's corners (eight cospherical points) and integer grids", "[delaunay3]") {
     for (int n : {2, 3, 5, 8}) {
-        const std::vector<double> xyz = grid(n);
+        const std::vector<double> xyz = grid3(n);
         const Delaunay3 d = run(xyz);
         INFO("grid " << n);
         check_tetrahedralization(xyz, d);
@@ -216,13 +201,8 @@ TEST_CASE("delaunay3: uniform points; the same tetrahedra in any input order", "
     const Delaunay3 d = run(xyz);
     check_tetrahedralization(xyz, d);
     // Shuffle the input: the same tetrahedra, up to the relabelling.
-    std::vector<std::uint32_t> perm(xyz.size() / 3);
-    std::iota(perm.begin(), perm.end(), 0u);
-    std::mt19937_64 rng(3);
-    std::shuffle(perm.begin(), perm.end(), rng);
-    std::vector<double> shuffled(xyz.size());
-    for (std::size_t i = 0; i < perm.size(); ++i)
-        for (int k = 0; k < 3; ++k) shuffled[3 * i + k] = xyz[3 * perm[i] + k];
+    std::vector<std::uint32_t> perm;
+    const std::vector<double> shuffled = shuffled3(xyz, perm, 3);
     const Delaunay3 e = run(shuffled);
     check_tetrahedralization(shuffled, e);
     REQUIRE(tetrahedron_set(e, &perm) == tetrahedron_set(d));
@@ -230,16 +210,11 @@ TEST_CASE("delaunay3: uniform points; the same tetrahedra in any input order", "
 
 TEST_CASE("delaunay3: a grid in any input order gives the same tetrahedra (ties broken by the points alone)",
           "[delaunay3]") {
-    const std::vector<double> xyz = grid(6);
+    const std::vector<double> xyz = grid3(6);
     const Delaunay3 d = run(xyz);
     for (std::uint64_t seed : {1, 2, 3}) {
-        std::vector<std::uint32_t> perm(xyz.size() / 3);
-        std::iota(perm.begin(), perm.end(), 0u);
-        std::mt19937_64 rng(seed);
-        std::shuffle(perm.begin(), perm.end(), rng);
-        std::vector<double> shuffled(xyz.size());
-        for (std::size_t i = 0; i < perm.size(); ++i)
-            for (int k = 0; k < 3; ++k) shuffled[3 * i + k] = xyz[3 * perm[i] + k];
+        std::vector<std::uint32_t> perm;
+        const std::vector<double> shuffled = shuffled3(xyz, perm, seed);
         const Delaunay3 e = run(shuffled);
         check_tetrahedralization(shuffled, e);
         REQUIRE(tetrahedron_set(e, &perm) == tetrahedron_set(d));
@@ -456,7 +431,7 @@ TEST_CASE("delaunay3: 1, 2, 3 and 8 threads give identical arrays", "[delaunay3]
 }
 
 TEST_CASE("delaunay3: large uniform and grid inputs verify, on threads", "[delaunay3][threads][heavy]") {
-    for (const auto& xyz : {uniform(100000, 43), grid(30)}) {
+    for (const auto& xyz : {uniform(100000, 43), grid3(30)}) {
         const Delaunay3 one = run(xyz, 1);
         check_tetrahedralization(xyz, one);
         const Delaunay3 two = run(xyz, 2);

@@ -111,6 +111,37 @@ TEST_CASE("delaunay3_locate: a grid, queries on vertices, edges and faces", "[de
     check_queries(xyz, queries, 2);
 }
 
+TEST_CASE("delaunay3_locate: barycentric weights of slivers whose rounded volume cancels to 0 (a fuzzer's find)",
+          "[delaunay3]") {
+    // Eight points within 1e-9 of each other at 6e-154 and one at 7e-77: each tetrahedron's volume,
+    // rounded from differences to its far corner, came out 0, and the weights at its own corners NaN.
+    const std::vector<double> xyz = {6.9916528033218717e-77, 6.0137435052281011e-154, 6.0134700169990685e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 6.0134700169990685e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 6.0134700169990685e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 7.5051381632391098e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 6.0134700169990685e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 6.0134701059094185e-154,
+                                     6.0134700169990685e-154, 6.0134700169990685e-154, 6.0134700169990685e-154,
+                                     6.0134700170662234e-154, 6.0134700169990685e-154, 6.0134700169990685e-154,
+                                     6.0134700169990672e-154, 6.0134700169990685e-154, 6.0134700169990685e-154};
+    const PointSpan points(xyz.data(), 9);
+    const Delaunay3 d = hullkit::delaunay3(points);
+    REQUIRE(d.dimension == 3);
+    hullkit::Delaunay3QueryOptions options;
+    options.barycentric = true;
+    const auto found = hullkit::delaunay3_locate(points, d, points, options);
+    REQUIRE(found.ok());
+    for (std::size_t i = 0; i < 9; ++i) {
+        INFO("point " << i);
+        const std::int32_t t = found.tetrahedron[i];
+        REQUIRE(t >= 0);
+        for (int k = 0; k < 4; ++k) {
+            const bool corner = d.tetrahedra[4 * static_cast<std::size_t>(t) + k] == d.representative[i];
+            REQUIRE(found.barycentric[4 * i + k] == (corner ? 1.0 : 0.0));
+        }
+    }
+}
+
 TEST_CASE("delaunay3_locate: threads give the same answers", "[delaunay3][threads]") {
     std::mt19937_64 rng(9);
     std::uniform_real_distribution<double> u(-1, 1);

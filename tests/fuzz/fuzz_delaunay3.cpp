@@ -10,7 +10,11 @@
 //  - the reversed input gives the same tetrahedra (relabelled): ties depend only on the points;
 //  - delaunay3_locate answers a query at an input point with a tetrahedron holding it (the
 //    barycentric weight of that corner exactly 1) and with its representative as the nearest point;
-//  - an error is one line, with no tetrahedra.
+//  - an error is one line, with no tetrahedra;
+//  - the furthest-site tetrahedralization (up to 150 points): every tetrahedron positive, every point
+//    inside or on every circumsphere (exact orient3d and insphere, on the points scaled by a power
+//    of two into insphere's exact range), neighbours symmetric, the open faces the hull's, the corners
+//    exactly the hull's vertices, and the volume the ordinary tetrahedralization's (as a sum).
 // Built by scripts/fuzz.sh (clang++ -fsanitize=fuzzer,address,undefined).
 #include <algorithm>
 #include <array>
@@ -22,6 +26,8 @@
 #include <vector>
 
 #include "hullkit/delaunay3.hpp"
+#include "hullkit/hull.hpp"
+#include "hullkit/predicates.hpp"
 
 namespace {
 
@@ -67,6 +73,83 @@ std::set<std::array<std::uint32_t, 4>> tetrahedron_set(const hullkit::Delaunay3&
     return out;
 }
 
+/// Neighbours share the faces they claim and name each other back; the faces without one are
+/// exactly the hull triangles.
+void check_neighbours_and_hull(const hullkit::Delaunay3& d) {
+    std::multiset<std::array<std::uint32_t, 3>> open, hull;
+    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
+        for (int j = 0; j < 4; ++j) {
+            std::array<std::uint32_t, 3> face;
+            for (int i = 0, k = 0; i < 4; ++i)
+                if (i != j) face[k++] = d.tetrahedra[4 * t + i];
+            std::sort(face.begin(), face.end());
+            const std::int32_t u = d.neighbors[4 * t + j];
+            if (u < 0) {
+                open.insert(face);
+                continue;
+            }
+            const std::uint32_t* w = &d.tetrahedra[4 * static_cast<std::size_t>(u)];
+            for (const std::uint32_t c : face) check(std::find(w, w + 4, c) != w + 4);
+            bool back = false;
+            for (int k = 0; k < 4; ++k) back = back || d.neighbors[4 * static_cast<std::size_t>(u) + k] == static_cast<std::int32_t>(t);
+            check(back);
+        }
+    }
+    for (std::size_t f = 0; f < d.hull.size() / 3; ++f) {
+        std::array<std::uint32_t, 3> face = {d.hull[3 * f], d.hull[3 * f + 1], d.hull[3 * f + 2]};
+        std::sort(face.begin(), face.end());
+        hull.insert(face);
+    }
+    check(open == hull);
+}
+
+/// The furthest-site checks (see the top).
+void check_furthest(const std::vector<double>& xyz, const hullkit::Delaunay3& nearest) {
+    const std::size_t n = xyz.size() / 3;
+    const hullkit::PointSpan points(xyz.data(), n);
+    hullkit::Delaunay3Options options;
+    options.furthest_site = true;
+    const hullkit::Delaunay3 d = hullkit::delaunay3(points, options);
+    check(d.ok() && d.dimension == nearest.dimension && d.furthest_site);
+    if (d.dimension != 3) return;
+    check_neighbours_and_hull(d);
+    // The points scaled by one power of two into insphere's exact range (as delaunay3 scales them).
+    double largest = 0, smallest = HUGE_VAL;
+    for (const double v : xyz) {
+        largest = std::max(largest, std::fabs(v));
+        if (v != 0) smallest = std::min(smallest, std::fabs(v));
+    }
+    int exponent = 0;
+    if (!hullkit::insphere_range_ok(largest, smallest)) check(hullkit::insphere_scale_exponent(largest, smallest, &exponent));
+    std::vector<double> scaled(xyz.size());
+    for (std::size_t i = 0; i < xyz.size(); ++i) scaled[i] = std::ldexp(xyz[i], exponent);
+    const auto at = [&](std::uint32_t i) { return &scaled[3 * i]; };
+    const auto six_volume = [&](const std::uint32_t* v) {
+        double e[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int k = 0; k < 3; ++k) e[r][k] = xyz[3 * v[r + 1] + k] - xyz[3 * v[0] + k];
+        return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+               e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    };
+    std::set<std::uint32_t> corners;
+    double volume = 0, nearest_volume = 0, extent = 0;
+    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
+        const std::uint32_t* v = &d.tetrahedra[4 * t];
+        corners.insert(v, v + 4);
+        check(hullkit::orient3d(at(v[0]), at(v[1]), at(v[2]), at(v[3])) > 0);
+        for (std::uint32_t i = 0; i < n; ++i) check(hullkit::insphere(at(v[0]), at(v[1]), at(v[2]), at(v[3]), at(i)) >= 0);
+        volume += six_volume(v);
+    }
+    const hullkit::Hull h = hullkit::hull(points);
+    check(corners == std::set<std::uint32_t>(h.vertices.begin(), h.vertices.end()));
+    for (std::size_t t = 0; t < nearest.tetrahedron_count(); ++t) nearest_volume += six_volume(&nearest.tetrahedra[4 * t]);
+    for (const double v : xyz) extent = std::max(extent, std::fabs(v));
+    // Both fill the hull; rounded sums (a loose bound, and none where they overflow).
+    const double margin = 1e-9 * std::fabs(nearest_volume) + 1e-10 * extent * extent * extent;
+    if (std::isfinite(volume) && std::isfinite(nearest_volume) && std::isfinite(margin))
+        check(std::fabs(volume - nearest_volume) <= margin);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -95,34 +178,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 check(back);
             }
     }
+    if (n <= 150) check_furthest(xyz, d);
     if (d.dimension != 3) return 0;
     const hullkit::Delaunay3VerifyReport report = hullkit::verify_delaunay3(points, d.tetrahedra.data(), d.tetrahedron_count());
     check(report.ok);
-    std::multiset<std::array<std::uint32_t, 3>> open, hull;
-    for (std::size_t t = 0; t < d.tetrahedron_count(); ++t) {
-        for (int j = 0; j < 4; ++j) {
-            std::array<std::uint32_t, 3> face;
-            for (int i = 0, k = 0; i < 4; ++i)
-                if (i != j) face[k++] = d.tetrahedra[4 * t + i];
-            std::sort(face.begin(), face.end());
-            const std::int32_t u = d.neighbors[4 * t + j];
-            if (u < 0) {
-                open.insert(face);
-                continue;
-            }
-            const std::uint32_t* w = &d.tetrahedra[4 * static_cast<std::size_t>(u)];
-            for (const std::uint32_t c : face) check(std::find(w, w + 4, c) != w + 4);
-            bool back = false;
-            for (int k = 0; k < 4; ++k) back = back || d.neighbors[4 * static_cast<std::size_t>(u) + k] == static_cast<std::int32_t>(t);
-            check(back);
-        }
-    }
-    for (std::size_t f = 0; f < d.hull.size() / 3; ++f) {
-        std::array<std::uint32_t, 3> face = {d.hull[3 * f], d.hull[3 * f + 1], d.hull[3 * f + 2]};
-        std::sort(face.begin(), face.end());
-        hull.insert(face);
-    }
-    check(open == hull);
+    check_neighbours_and_hull(d);
     // The reversed input: the same tetrahedra, relabelled (where no duplicates change which index
     // represents a point).
     if (d.duplicate_count == 0) {

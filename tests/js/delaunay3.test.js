@@ -337,7 +337,7 @@ test('delaunay3: bad input throws, naming the point', () => {
   assert.throws(() => hullkit.delaunay3([{ x: 0, y: 0, z: 0 }]), (e) => e instanceof TypeError && /got an array of objects/.test(e.message));
   assert.throws(() => hullkit.delaunay3([0, 0, '1']), (e) => e instanceof TypeError && /entry 2 is string/.test(e.message));
   assert.throws(() => hullkit.delaunay3('0 0 0'), TypeError);
-  assert.throws(() => hullkit.delaunay3([0, 0, 0], { threads: 2 }), /delaunay3: unknown option "threads" \(known: progress\)/);
+  assert.throws(() => hullkit.delaunay3([0, 0, 0], { threads: 2 }), /delaunay3: unknown option "threads" \(known: progress, furthestSite\)/);
   assert.throws(() => hullkit.delaunay3([0, 0, 0], { progress: 'yes' }), /progress must be a function/);
 });
 
@@ -403,4 +403,59 @@ test('verifyDelaunay3: malformed arguments throw', () => {
   assert.throws(() => hullkit.verifyDelaunay3(xyz.subarray(1), tetrahedra), /not a whole number of 3D points/);
   assert.throws(() => hullkit.verifyDelaunay3(xyz, tetrahedra, { perturbed: 'no' }), /perturbed must be true or false/);
   assert.throws(() => hullkit.verifyDelaunay3(xyz, tetrahedra, { exact: true }), /unknown option "exact"/);
+});
+
+test('delaunay3 furthestSite: every circumsphere holds every point, the corners are the hull\'s extreme points (exact), the native arrays', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'hullkit-delaunay3-furthest-'));
+  try {
+    for (const [name, xyz] of [['uniform', uniform(300, 21)], ['ball', randomBall(200, 22)], ['grid', grid(3)]]) {
+      const result = hullkit.delaunay3(xyz, { furthestSite: true });
+      assert.equal(result.dimension, 3, name);
+      assert.equal(result.furthestSite, true, name);
+      const points = exactPoints(xyz);
+      const corners = new Set();
+      let volume = 0n;
+      for (let t = 0; t < result.tetrahedra.length / 4; t++) {
+        const [a, b, c, d] = tetrahedron(result.tetrahedra, t).map((i) => (corners.add(i), points[i]));
+        assert.equal(orient3d(a, b, c, d), 1, `${name}: tetrahedron ${t} positive`);
+        volume += orient3dDeterminant(a, b, c, d);
+        for (let p = 0; p < points.length; p++) assert.ok(insphere(a, b, c, d, points[p]) >= 0, `${name}: point ${p} outside tetrahedron ${t}'s sphere`);
+      }
+      const hull = hullkit.hull(xyz);
+      assert.deepEqual([...corners].sort((u, v) => u - v), [...hull.vertices].sort((u, v) => u - v), `${name}: corners`);
+      // It fills the hull: the same volume as the ordinary tetrahedralization, exactly.
+      const ordinary = hullkit.delaunay3(xyz);
+      let expected = 0n;
+      for (let t = 0; t < ordinary.tetrahedra.length / 4; t++) expected += orient3dDeterminant(...tetrahedron(ordinary.tetrahedra, t).map((i) => points[i]));
+      assert.equal(volume, expected, `${name}: volume`);
+      // The native command gives the same arrays.
+      const file = join(dir, `${name}.txt`);
+      let text = '';
+      for (let i = 0; i < xyz.length; i += 3) text += `${xyz[i]} ${xyz[i + 1]} ${xyz[i + 2]}\n`;
+      writeFileSync(file, text);
+      const native = JSON.parse(execFileSync(cli, ['delaunay3', file, '--furthest-site', '--quiet'], { encoding: 'utf8' }));
+      assert.deepEqual([...result.tetrahedra], native.tetrahedra.flat(), `${name} tetrahedra`);
+      assert.deepEqual([...result.neighbors], native.neighbors.flat(), `${name} neighbors`);
+    }
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('delaunay3 furthestSite: locate3 finds the tetrahedron, refuses nearest points; voronoi3 cells are unbounded; bad flags throw', () => {
+  const xyz = uniform(200, 23);
+  const result = hullkit.delaunay3(xyz, { furthestSite: true });
+  const centroid = [0, 1, 2].map((k) => [0, 1, 2, 3].reduce((s, i) => s + xyz[3 * result.tetrahedra[i] + k], 0) / 4);
+  const { tetrahedron: found } = hullkit.locate3(xyz, result, centroid);
+  assert.equal(found[0], 0, 'the first tetrahedron holds its own centroid');
+  assert.throws(() => hullkit.locate3(xyz, result, centroid, { nearest: true }), (e) => e instanceof HullkitError && /nearest points need the ordinary tetrahedralization/.test(e.message));
+  const cells = hullkit.voronoi3(xyz, result);
+  const corner = new Set(result.tetrahedra);
+  for (let i = 0; i < 200; i++) {
+    const faces = cells.cellOffsets[i + 1] - cells.cellOffsets[i];
+    assert.equal(faces > 0, corner.has(i), `point ${i}: faces only for corners`);
+    assert.equal(cells.volume[i], corner.has(i) ? Infinity : 0, `point ${i}: volume`);
+  }
+  assert.throws(() => hullkit.delaunay3(xyz, { furthestSite: 1 }), (e) => e instanceof HullkitError && /furthestSite must be true or false/.test(e.message));
+  assert.throws(() => hullkit.locate3(xyz, { ...result, furthestSite: 'yes' }, centroid), (e) => e instanceof HullkitError && /furthestSite must be true or false/.test(e.message));
 });

@@ -388,12 +388,87 @@ def test_furthest_site_on_cocircular_corners_and_refusals():
     assert vor.vertices.tolist() == [[0.5, 0.5]]  # the four corners' one circle: one vertex
     assert all(vor.regions[vor.point_region[i]] == [0, -1] for i in range(4))
     assert vor.point_region[4] == vor.point_region[5] == 0 and vor.regions[0] == []
-    with pytest.raises(HullkitError, match="furthest_site=True in 3D is not supported"):
-        Delaunay(np.random.default_rng(1).random((10, 3)), furthest_site=True)
     with pytest.raises(HullkitError, match="furthest_site=True for collinear points"):
         Voronoi(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
     line = Delaunay(np.c_[np.arange(4.0), np.zeros(4)], furthest_site=True)
     assert line.nsimplex == 0 and line.find_simplex([[1.0, 0.0]]).tolist() == [-1]
+
+
+def insphere_sign(a, b, c, d, e):
+    """Exact sign of e against the sphere through a, b, c, d (positively oriented): > 0 inside."""
+    rows = [[Fraction(float(p[k])) - Fraction(float(e[k])) for k in range(3)] for p in (a, b, c, d)]
+    rows = [r + [r[0] ** 2 + r[1] ** 2 + r[2] ** 2] for r in rows]
+    value = -Fraction_det(rows)  # the determinant is negative for e inside
+    return (value > 0) - (value < 0)
+
+
+def six_volume(points, tetrahedra):
+    """6 x the tetrahedra's total signed volume, exactly."""
+    total = Fraction(0)
+    for a, b, c, d in tetrahedra:
+        rows = [[Fraction(float(points[v][k])) - Fraction(float(points[a][k])) for k in range(3)] for v in (b, c, d)]
+        total += Fraction_det(rows)
+    return total
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_furthest_site_3d_delaunay_and_voronoi_match_scipy(seed):
+    """3D furthest-site: scipy's tetrahedra on random points; exactly, every circumsphere holds every
+    point, the tetrahedra are positive and fill the hull (the ordinary tetrahedralization's volume),
+    the corners are the hull's vertices; find_simplex agrees with scipy; the Voronoi diagram has
+    scipy's vertices and ridges (plus the faces with one finite vertex Qhull leaves out)."""
+    rng = np.random.default_rng(110 + seed)
+    points = rng.random((40, 3))
+    ours, theirs = Delaunay(points, furthest_site=True), scipy.spatial.Delaunay(points, furthest_site=True)
+    assert sorted(map(sorted, ours.simplices.tolist())) == sorted(map(sorted, theirs.simplices.tolist()))
+    assert set(ours.simplices.ravel().tolist()) == set(ConvexHull(points).vertices.tolist()) and len(ours.coplanar) == 0
+    for a, b, c, d in ours.simplices:
+        assert exact_side(points[[a, b, c]], points[d]) > 0
+        assert all(insphere_sign(points[a], points[b], points[c], points[d], q) >= 0 for q in points)
+    assert six_volume(points, ours.simplices) == six_volume(points, Delaunay(points).simplices)
+    assert (ours.equations[:, -2] > 0).all()  # the lifted facets face up
+    queries = rng.random((300, 3)) * 1.2 - 0.1
+    found = ours.find_simplex(queries)
+    expected = theirs.find_simplex(queries)
+    assert np.array_equal(found >= 0, expected >= 0)
+    assert all(set(ours.simplices[t]) == set(theirs.simplices[u]) for t, u in zip(found, expected) if t >= 0)
+    bary = np.einsum("nij,nj->ni", ours.transform[found[found >= 0], :3], queries[found >= 0] - ours.transform[found[found >= 0], 3])
+    assert (bary > -1e-12).all() and (bary.sum(axis=1) < 1 + 1e-12).all()
+    vor, svor = Voronoi(points, furthest_site=True), scipy.spatial.Voronoi(points, furthest_site=True)
+    tree = scipy.spatial.cKDTree(svor.vertices)
+    distance, index = tree.query(vor.vertices)
+    assert distance.max() < 1e-9 and len(set(index.tolist())) == len(index) == len(svor.vertices)
+    mapping = {**dict(enumerate(index.tolist())), -1: -1}
+    ours_ridges = {tuple(p): frozenset(mapping[v] for v in r) for p, r in zip(vor.ridge_points.tolist(), vor.ridge_vertices)}
+    for p, r in zip(svor.ridge_points.tolist(), svor.ridge_vertices):
+        assert ours_ridges[tuple(sorted(p))] == frozenset(r)
+    assert all(sum(v >= 0 for v in r) == 1 for p, r in ours_ridges.items() if p not in {tuple(sorted(q)) for q in svor.ridge_points.tolist()})
+    corners = set(ours.simplices.ravel().tolist())
+    for i in range(len(points)):
+        assert {mapping[v] for v in vor.regions[vor.point_region[i]]} == set(svor.regions[svor.point_region[i]])
+        assert vor.volumes[i] == (np.inf if i in corners else 0.0)
+
+
+def test_furthest_site_3d_on_a_grid_and_lower_dimensions():
+    """A 3 x 3 x 3 grid: only the 8 corners, which are cospherical (ties: never flat), the same
+    tetrahedra in any input order; coplanar 3D points: the polygon's furthest-site triangles;
+    Voronoi refuses coplanar points, as scipy does."""
+    grid = np.array(np.meshgrid(*[np.arange(3.0)] * 3, indexing="ij")).reshape(3, -1).T
+    tri = Delaunay(grid, furthest_site=True)
+    assert set(tri.simplices.ravel().tolist()) == {0, 2, 6, 8, 18, 20, 24, 26}
+    assert all(exact_side(grid[[a, b, c]], grid[d]) > 0 for a, b, c, d in tri.simplices)
+    assert six_volume(grid, tri.simplices) == 6 * 8
+    order = np.random.default_rng(5).permutation(len(grid))
+    moved = Delaunay(grid[order], furthest_site=True)
+    assert sorted(map(sorted, order[moved.simplices].tolist())) == sorted(map(sorted, tri.simplices.tolist()))
+    assert tri.find_simplex([[1.0, 1.0, 1.0], [3.0, 0.0, 0.0]]).tolist()[1] == -1
+    plane = np.c_[np.random.default_rng(6).random((30, 2)), np.full(30, 2.0)]
+    flat = Delaunay(plane, furthest_site=True)
+    assert flat.dimension == 2 and flat.nsimplex == 0
+    corners2d = set(ConvexHull(plane[:, :2]).vertices.tolist())
+    assert set(flat.convex_hull.ravel().tolist()) == corners2d and len(flat.convex_hull) == len(corners2d) - 2
+    with pytest.raises(HullkitError, match="furthest_site=True for coplanar or collinear 3D points"):
+        Voronoi(plane, furthest_site=True)
 
 
 @pytest.mark.parametrize("ndim", [2, 3])

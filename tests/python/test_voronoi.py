@@ -336,8 +336,8 @@ def test_errors_say_what_is_wrong():
     for options in ({"qhull_options": "Qbb Qc Qz Qu"}, {"qhull_options": "QG0"}):
         with pytest.raises(HullkitError, match="not supported by hullkit.spatial.Voronoi"):
             Voronoi([[0, 0], [1, 0], [0, 1]], **options)
-    with pytest.raises(HullkitError, match="furthest_site=True in 3D is not supported by hullkit.spatial.Voronoi"):
-        Voronoi([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], furthest_site=True)
+    with pytest.raises(HullkitError, match="furthest_site=True for coplanar or collinear 3D points is not supported by hullkit.spatial.Voronoi"):
+        Voronoi([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], furthest_site=True)
 
 
 def test_tsearch_is_find_simplex():

@@ -135,6 +135,11 @@ check(planar.dimension === 2 && planar.triangles.length === 6 && up[2] === 1 && 
 const checked: Delaunay3VerifyReport = hullkit.verifyDelaunay3(cubeAndCentre, tetrahedra, { perturbed: true });
 check(checked.ok && checked.problemCount === 0 && checked.distinctPoints === 9 && checked.hullTriangles === 12, 'verifyDelaunay3');
 check(tetrahedralization.duplicateCount === 0 && tetrahedralization.representative.length === 9, 'delaunay3 duplicates');
+// Furthest-site: only the cube's eight corners, never its centre; flagged on the result
+const furthestOptions: Delaunay3Options = { furthestSite: true };
+const furthestTetrahedra: Delaunay3Result = hullkit.delaunay3(cubeAndCentre, furthestOptions);
+const furthestFlag: boolean = furthestTetrahedra.furthestSite;
+check(furthestFlag && !tetrahedralization.furthestSite && !furthestTetrahedra.tetrahedra.includes(8), 'delaunay3 furthestSite');
 // Queries on it: the tetrahedron holding a point, barycentric weights, the nearest point; Voronoi cells
 const located: Locate3Result = hullkit.locate3(cubeAndCentre, tetrahedralization, [0.4, 0.5, 0.5, 2, 2, 2], { barycentric: true, nearest: true });
 const holding: Int32Array = located.tetrahedron;

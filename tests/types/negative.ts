@@ -24,6 +24,7 @@ hullkit.locate(xyz, hullkit.delaunay(xyz), xyz, { threads: 1 }); // error
 const inside: Uint32Array = hullkit.locate(xyz, hullkit.delaunay(xyz), xyz).triangle; // error
 hullkit.delaunay3([[0, 0, 0]]); // error
 hullkit.delaunay3(xyz, { threads: 2 }); // error
+hullkit.delaunay3(xyz, { furthestSite: 1 }); // error
 const flat: Uint32Array = hullkit.delaunay3(xyz).neighbors; // error
 hullkit.verifyDelaunay3(xyz, hullkit.delaunay3(xyz)); // error
 hullkit.locate3(xyz, hullkit.delaunay3(xyz).tetrahedra, xyz); // error

@@ -53,6 +53,17 @@ struct Delaunay3Options {
     /// of the insertion order (rounds double in size; the last holds half the points), the last call
     /// with points_done == total. Leave empty for none.
     std::function<void(std::size_t points_done, std::size_t total)> progress;
+    /// The furthest-site Delaunay tetrahedralization instead (Qhull's and scipy's furthest_site):
+    /// the upper convex hull of the lifted points, projected. Its tetrahedra are those whose
+    /// circumspheres hold every point (inside or on); its vertices are the extreme points of the
+    /// convex hull (exactly: a point inside the hull or inside one of its faces or edges is in no
+    /// tetrahedron, though it keeps its `representative`), and it covers the same convex hull
+    /// (`hull` the same faces, coplanar ones triangulated by the tie rule). Ties as above, with the
+    /// same perturbation (cospherical corners get one answer, no flat tetrahedron). Built by the same
+    /// insertion with each in-sphere answer negated: every point is inserted from outside the hull
+    /// of those before it (they are in convex position). Coplanar input: the furthest-site
+    /// triangulation of the polygon's corners in the plane; collinear: the two end points.
+    bool furthest_site = false;
 };
 
 /// A Delaunay tetrahedralization. On failure `error` says what is wrong and, where one point is to
@@ -91,6 +102,9 @@ struct Delaunay3 {
     /// index with exactly the same coordinates (duplicates are merged, never dropped silently).
     std::vector<std::uint32_t> representative;
     std::size_t duplicate_count = 0;  ///< points whose representative is not themselves
+    /// Made with Delaunay3Options::furthest_site (then delaunay3_locate finds no nearest points:
+    /// the points inside the hull are in no tetrahedron).
+    bool furthest_site = false;
 
     std::string error;              ///< empty on success
     std::int64_t error_point = -1;  ///< index of the offending point, -1 if none

@@ -449,7 +449,7 @@ void planar_triangles(PointSpan input, Points& points, const Delaunay3Options& o
     points.original.push_back(kGhost);
     points.order.insert(points.order.begin(), extra);  // q first: it is in the first tetrahedron
     for (std::size_t r = 1; r < points.rounds.size(); ++r) ++points.rounds[r];
-    Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
+    Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress, options.furthest_site);
 
     const std::size_t slots = mesh.size();
     const std::uint32_t* link = mesh.links();
@@ -483,12 +483,32 @@ void planar_triangles(PointSpan input, Points& points, const Delaunay3Options& o
     }
 }
 
+/// Furthest-site: keeps only the distinct points that are vertices of the input's convex hull (its
+/// extreme points, exactly), in the same (Hilbert) order. Only they have furthest-site cells: a
+/// point inside the hull, or inside one of its faces or edges, is in no tetrahedron.
+void keep_extreme_points(PointSpan input, unsigned threads, Points& points) {
+    HullOptions hull_options;
+    hull_options.threads = threads;
+    const Hull h = hull(input, hull_options);
+    std::vector<std::uint8_t> extreme(input.count, 0);
+    for (const std::uint32_t v : h.vertices) extreme[v] = 1;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!extreme[points.original[i]]) continue;
+        std::copy(points[i], points[i] + 3, points.xyz.begin() + static_cast<std::ptrdiff_t>(3 * kept));
+        points.original[kept++] = points.original[i];
+    }
+    points.xyz.resize(3 * kept);
+    points.original.resize(kept);
+}
+
 }  // namespace
 
 Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
     Extent extent;
     Delaunay3 out = check_input(input, &extent);
     if (!out.ok()) return out;
+    out.furthest_site = options.furthest_site;
     Points points;
     gather_distinct(input, extent, options.threads, out, points);
     const std::size_t m = points.size();
@@ -511,10 +531,12 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
             return delaunay3_detail::lexicographically_less(points[a], points[b]);
         });
         for (std::uint32_t i : along) out.vertices.push_back(points.original[i]);
+        if (options.furthest_site) out.vertices = {out.vertices.front(), out.vertices.back()};
         return out;
     }
     std::size_t d = 0;
     while (d < m && orient3d(points[0], points[1], points[c], points[d]) == 0) ++d;
+    if (options.furthest_site) keep_extreme_points(input, options.threads, points);
     insertion_order(points);
     try {
         if (d == m) {
@@ -523,7 +545,7 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
             return out;
         }
         out.dimension = 3;
-        Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress);
+        Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress, options.furthest_site);
         write_tetrahedra(mesh, points, options.threads, out);
     } catch (const std::bad_alloc&) {
         return failure("out of memory tetrahedralizing " + std::to_string(m) + " points");

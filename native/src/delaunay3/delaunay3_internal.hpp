@@ -61,20 +61,24 @@ struct Mesh {
 /// The exact predicates with the symbolic perturbation (delaunay3.hpp, "Ties").
 class Predicates {
 public:
-    explicit Predicates(const Points& points);
+    /// `furthest`: the furthest-site conflicts (every answer of conflict() negated: e conflicts
+    /// with a tetrahedron whose perturbed circumsphere leaves it outside, the upper 4D hull).
+    explicit Predicates(const Points& points, bool furthest = false);
 
     /// orient3d of four finite points.
     int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
         return detail::orient3d_semi_static(orient_bound_, p(a), p(b), p(c), p(d));
     }
     /// Whether e conflicts with tetrahedron `t` (its circumsphere, or for a ghost the open half-space
-    /// beyond its hull face, holds e), perturbed: never 0 for distinct points. The common case, a
+    /// beyond its hull face, holds e), perturbed: never 0 for distinct points. Furthest-site: the
+    /// circumsphere leaves e outside; a ghost conflicts when e is strictly beyond its hull face or,
+    /// on its plane, outside the face's (perturbed) circumcircle. The common case, a
     /// finite tetrahedron the semi-static bound decides, inline; the rest in conflict_exact.
     bool conflict(const std::uint32_t* t, std::uint32_t e) const {
         if (t[3] != kGhost) {
             const double det = detail::insphere_stage_a_det(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
-            if (det > insphere_bound_) return true;
-            if (-det > insphere_bound_) return false;
+            if (det > insphere_bound_) return !furthest_;
+            if (-det > insphere_bound_) return furthest_;
         }
         return conflict_exact(t, e);
     }
@@ -95,6 +99,7 @@ private:
     double span_;
     double orient_bound_;
     double insphere_bound_;
+    bool furthest_;
 };
 
 /// Index along a 3D Hilbert curve on a 1024^3 grid (each coordinate below 1024).
@@ -111,8 +116,11 @@ bool scale_exponent_of(PointSpan points, int* exponent);
 /// Bowyer-Watson insertion of every point of `points` (round by round of points.order) into one
 /// mesh; the points must not be all coplanar. `threads` as Delaunay3Options::threads: the mesh is
 /// the same for every value. Returns the mesh, ghosts included (free slots have kFree as corner 3).
+/// `furthest`: the furthest-site tetrahedralization (the upper 4D hull) by the same insertion with
+/// the conflicts negated; then the points must be in convex position (each a vertex of their hull),
+/// so that each one inserted lies outside the hull of those before it.
 Mesh tetrahedralize(const Points& points, unsigned threads,
-                    const std::function<void(std::size_t, std::size_t)>& progress);
+                    const std::function<void(std::size_t, std::size_t)>& progress, bool furthest = false);
 
 }  // namespace delaunay3_detail
 }  // namespace hullkit

@@ -53,9 +53,10 @@ constexpr int kMaxPasses = 3;
 
 /// What the partitions share: the points and the mesh.
 struct Shared {
-    explicit Shared(const Points& p) : points(p), predicates(p) {}
+    Shared(const Points& p, bool furthest_site) : points(p), predicates(p, furthest_site), furthest(furthest_site) {}
     const Points& points;
     Predicates predicates;
+    bool furthest;  ///< the furthest-site tetrahedralization: every point lands outside the hull
     Mesh mesh;
     /// Per point, its number + 1 on the boundary of the cavity being filled (0 otherwise); each
     /// partition numbers only its own points (a cavity's corners are its own).
@@ -479,8 +480,9 @@ private:
         for (std::size_t i = 0; i < parts; ++i) {
             workers_[i].own_range(bounds[i], bounds[i + 1], 0, nullptr, 0, 0);
             for (std::size_t k = 0; k < lists[i].size() && start[i] == kNoStart; k = 2 * k + 1) {
+                // (Furthest-site: every walk ends at a ghost, outside the hull, which may start one.)
                 const std::uint32_t t = serial_.walk(lists[i][k]);
-                if (shared_.mesh.corner[4 * t + 3] != kGhost && workers_[i].owns(t)) {
+                if ((shared_.furthest || shared_.mesh.corner[4 * t + 3] != kGhost) && workers_[i].owns(t)) {
                     start[i] = t;
                     first[i] = k;
                 }
@@ -558,11 +560,11 @@ private:
 }  // namespace
 
 Mesh tetrahedralize(const Points& points, unsigned threads,
-                    const std::function<void(std::size_t, std::size_t)>& progress) {
+                    const std::function<void(std::size_t, std::size_t)>& progress, bool furthest) {
     // Point indices below 2^30 leave the top bits of a row's first corner to the cavity's marks;
     // more points would make more than kMaxTetrahedra tetrahedra anyway (at least 3 per point).
     if (points.size() >= (std::size_t{1} << 30)) throw std::length_error("more than 2^30 points");
-    Shared shared(points);
+    Shared shared(points, furthest);
     const std::array<std::size_t, 4> used = start_mesh(shared);
     Rounds rounds(shared, detail::resolve_threads(threads));
     const std::size_t total = points.size();

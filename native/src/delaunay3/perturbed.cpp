@@ -22,11 +22,12 @@
 namespace hullkit {
 namespace delaunay3_detail {
 
-Predicates::Predicates(const Points& points)
+Predicates::Predicates(const Points& points, bool furthest)
     : xyz_(points.xyz.data()),
       span_(points.span),
       orient_bound_(detail::orient3d_static_bound(points.span)),
-      insphere_bound_(detail::insphere_static_bound(points.span)) {}
+      insphere_bound_(detail::insphere_static_bound(points.span)),
+      furthest_(furthest) {}
 
 namespace {
 
@@ -102,15 +103,20 @@ int Predicates::coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32
     return perturbation(w, 3, p(e));
 }
 
+// Furthest-site (the upper hull of the same perturbed lifted points): a finite tetrahedron's answer
+// is negated, and so is a ghost's for e on its plane: the ghost is then the limit of a sphere
+// through a, b, c whose centre runs off to infinity on the hull's side, which still meets the plane
+// in the face's circumcircle; e strictly beyond the face is outside every such sphere either way.
 bool Predicates::conflict_exact(const std::uint32_t* t, std::uint32_t e) const {
+    const int inside = furthest_ ? -1 : 1;
     if (t[3] == kGhost) {
         const int side = orient(t[0], t[1], t[2], e);
         if (side != 0) return side > 0;
-        return coplanar_perturbed(t[0], t[1], t[2], e) > 0;
+        return coplanar_perturbed(t[0], t[1], t[2], e) == inside;
     }
-    if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) return s > 0;
+    if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) return s == inside;
     const double* w[4] = {p(t[0]), p(t[1]), p(t[2]), p(t[3])};
-    return perturbation(w, 4, p(e)) > 0;
+    return perturbation(w, 4, p(e)) == inside;
 }
 
 }  // namespace delaunay3_detail

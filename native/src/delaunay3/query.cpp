@@ -144,20 +144,25 @@ public:
     }
 
     /// Barycentric coordinates of q in tetrahedron t (rounded; exact zeros on faces through q).
+    /// Each weight is the volume with q in place of its corner over their sum (the whole volume),
+    /// each rounded from differences to q; a weight whose exact sign is positive but whose rounded
+    /// volume is not (a sliver far from the origin of its differences) is kept at the smallest
+    /// positive double, so the weights are never negative, never NaN, and exactly 1 at a corner.
     void barycentric(std::int32_t t, const double* q, double* out) const {
         double p[4][3];
         const double* w[4];
         for (int i = 0; i < 4; ++i) w[i] = point(d_.tetrahedra[4 * static_cast<std::size_t>(t) + i], p[i]);
-        const double whole = volume6(w[0], w[1], w[2], w[3]);
+        double part[4], whole = 0.0;
         for (int k = 0; k < 4; ++k) {
-            if (sign(t, k, q) == 0) {
-                out[k] = 0.0;
-                continue;
-            }
-            const double* r[4] = {w[0], w[1], w[2], w[3]};
-            r[k] = q;
-            out[k] = volume6(r[0], r[1], r[2], r[3]) / whole;
+            part[k] = 0.0;
+            if (sign(t, k, q) == 0) continue;  // q inside t: the others are positive
+            // q first (differences to q), the others in an order of the same parity.
+            static constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {2, 1, 0}};
+            const double volume = volume6(q, w[kOthers[k][0]], w[kOthers[k][1]], w[kOthers[k][2]]);
+            part[k] = std::max(volume, std::numeric_limits<double>::denorm_min());
+            whole += part[k];
         }
+        for (int k = 0; k < 4; ++k) out[k] = part[k] / whole;
     }
 
     /// The nearest input point to q (ties: the lowest index), by a greedy walk from `from`.
@@ -251,6 +256,12 @@ Delaunay3Queries delaunay3_locate(PointSpan points, const Delaunay3& d, PointSpa
             }
             scaled[3 * i + k] = s;
         }
+    }
+    if (options.nearest && d.furthest_site) {
+        return query_failure("nearest points need the ordinary tetrahedralization: the furthest-site one leaves the "
+                             "points inside the hull out (locate in it, and find nearest points in delaunay3() "
+                             "without furthest_site)",
+                             -1);
     }
     Delaunay3Queries out;
     out.tetrahedron.assign(m, -1);
