@@ -39,7 +39,7 @@
 // main -> worker  {type: 'trace', id, xyz, scan?} / {type: 'trace', id, xy, lifted: true}
 // worker -> main  {type: 'result', id, kinds, args, kindNames, triangles, dimension, ms}: the
 //                 events of the real gift wrapping (hullkit.giftwrapTrace / delaunayGiftwrapTrace)
-// main -> worker  {type: 'delaunay3', id, distribution, n, seed, text?, xyz?}   (the Hull view's points)
+// main -> worker  {type: 'delaunay3', id, distribution, n, seed, text?, xyz?, furthestSite?}   (the Hull view's points)
 // worker -> main  {type: 'progress', id, done, total}   while the points are inserted, then
 //                 {type: 'result', id, key, n, xyz, dimension, tetrahedra, neighbors, hull, triangles,
 //                  vertices, representative, duplicateCount, ms, genMs, drawing, drawingMs}
@@ -613,7 +613,7 @@ function sweptHulls(hullkit, parts, pivot, route) {
 // {key, xyz, triangulation, voronoi}.
 let tetrahedralization = null;
 
-function delaunay3Job({ id, distribution, n, seed, text, xyz: given }) {
+function delaunay3Job({ id, distribution, n, seed, text, xyz: given, furthestSite = false }) {
   return withHullkit(id, (hullkit) => {
     const g0 = performance.now();
     const xyz = requestedPoints({ distribution, n, seed, text, xyz: given });
@@ -621,7 +621,7 @@ function delaunay3Job({ id, distribution, n, seed, text, xyz: given }) {
     tetrahedralization = null; // the memory of the last one first
     const t0 = performance.now();
     // Progress after each round of the insertion (rounds double; the last holds half the points).
-    const result = hullkit.delaunay3(xyz, { progress: (done, total) => self.postMessage({ type: 'progress', id, done, total }) });
+    const result = hullkit.delaunay3(xyz, { furthestSite, progress: (done, total) => self.postMessage({ type: 'progress', id, done, total }) });
     const ms = performance.now() - t0;
     const owned = {
       tetrahedra: ownedCopy(result.tetrahedra, Uint32Array, 'tetrahedra'),
@@ -634,14 +634,14 @@ function delaunay3Job({ id, distribution, n, seed, text, xyz: given }) {
     // The worker keeps copies for the Voronoi diagram; the page gets the originals.
     tetrahedralization = {
       key: id, xyz: xyz.slice(), voronoi: null,
-      triangulation: { dimension: result.dimension, ...Object.fromEntries(Object.entries(owned).map(([k, v]) => [k, v.slice()])) },
+      triangulation: { dimension: result.dimension, furthestSite, ...Object.fromEntries(Object.entries(owned).map(([k, v]) => [k, v.slice()])) },
     };
     const d0 = performance.now();
     const drawing = tetrahedraDrawing(xyz, { dimension: result.dimension, ...owned });
     const drawingMs = performance.now() - d0;
     const drawingBuffers = Object.values(drawing).filter(ArrayBuffer.isView).map((a) => a.buffer);
     self.postMessage(
-      { type: 'result', id, key: id, n: xyz.length / 3, xyz, dimension: result.dimension, ...owned, duplicateCount: result.duplicateCount, ms, genMs, drawing, drawingMs },
+      { type: 'result', id, key: id, n: xyz.length / 3, xyz, dimension: result.dimension, furthestSite, ...owned, duplicateCount: result.duplicateCount, ms, genMs, drawing, drawingMs },
       [xyz.buffer, ...Object.values(owned).map((a) => a.buffer), ...drawingBuffers],
     );
   });

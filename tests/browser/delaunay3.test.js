@@ -4,7 +4,8 @@
 // plane (slider and handle) changes the pixels drawn; hovering shows a circumsphere with no point
 // inside it (a grid's cospherical corners all on it); clicking a point shows the volume that
 // hullkit.voronoi3 gives its cell (and says a hull point's cell is unbounded); its explanation
-// opens; numbers in the URL are made valid; nothing is fetched beyond the page's own files.
+// opens; the furthest-site tetrahedra (Sites) are hullkit.delaunay3's too; numbers in the URL are made
+// valid; nothing is fetched beyond the page's own files.
 // Saves docs/delaunay3.png.
 //
 //   node --test tests/browser/delaunay3.test.js
@@ -288,6 +289,46 @@ test('the Delaunay 3D view', { timeout: 600_000 }, async (t) => {
       assert.equal(new URL(page.url()).searchParams.get('cut'), 'off');
       assert.ok(changed(clipped, await canvasImage(page)) > 1000, 'without the cut the drawing changes');
       assert.equal(await page.isDisabled('#d3-offset'), true, 'no plane to move');
+      await page.close();
+    });
+
+    await t.test('furthest sites: hullkit.delaunay3\'s furthest-site tetrahedra, a circumsphere holding every point, unbounded or empty cells', async () => {
+      const page = await browser.newPage({ viewport: DESKTOP, deviceScaleFactor: 1 });
+      record(page);
+      const [n, seed] = [400, 4];
+      await page.goto(`${base}?view=delaunay3&dist=ball&n=${n}&seed=${seed}&sites=furthest`);
+      assert.equal(await settled(page), 'ready', await page.textContent('#d3-error'));
+      const info = await drawn(page);
+      assert.equal(await page.inputValue('#d3-sites'), 'furthest');
+      const xyz = generatePoints('ball', n, seed);
+      const expected = hullkit.delaunay3(xyz, { furthestSite: true });
+      const corners = new Set(hullkit.hull(xyz).vertices);
+      assert.equal(info.sites, 'furthest');
+      assert.equal(info.tetrahedra, expected.tetrahedra.length / 4);
+      assert.equal(await readCount(page, '#d3-stat-tetrahedra'), expected.tetrahedra.length / 4);
+      assert.equal(info.corners, corners.size);
+      assert.match(await page.textContent('#d3-status'), /furthest sites: .* tetrahedra on the hull's .* corners/);
+      // Hover: a circumsphere with every point inside or on it.
+      const hover = await hoverAny(page, [[0.45, 0.5], [0.5, 0.45], [0.4, 0.55], [0.55, 0.55]]);
+      assert.ok(hover, 'a tetrahedron under the pointer');
+      assert.deepEqual([...expected.tetrahedra.subarray(4 * hover.tetrahedron, 4 * hover.tetrahedron + 4)], hover.corners);
+      assert.match(await page.textContent('#d3-hover'), /every other point inside it|none outside/);
+      // A corner's cell is unbounded; a point inside the hull has none.
+      await page.mouse.move(5, 5);
+      const corner = await pointToClick(page, (i) => corners.has(i));
+      await page.mouse.click(corner.x, corner.y);
+      await page.waitForFunction((p) => window.hullkitDelaunay3Cell?.point === p, corner.point, { timeout: TIMEOUT, polling: 50 });
+      assert.match(await page.textContent('#d3-cell'), /furthest-site cell .* is unbounded/);
+      const inner = await pointToClick(page, (i) => !corners.has(i));
+      await page.mouse.click(inner.x, inner.y);
+      await page.waitForFunction((p) => window.hullkitDelaunay3Cell?.point === p, inner.point, { timeout: TIMEOUT, polling: 50 });
+      assert.equal((await page.evaluate(() => window.hullkitDelaunay3Cell)).faces, 0);
+      assert.match(await page.textContent('#d3-cell'), /no corner of the hull: its furthest-site cell is empty/);
+      // Back to the nearest sites: the Delaunay tetrahedra again, and the URL drops the option.
+      await page.selectOption('#d3-sites', 'nearest');
+      const back = await drawn(page, info.run);
+      assert.equal(back.tetrahedra, hullkit.delaunay3(xyz).tetrahedra.length / 4);
+      assert.equal(new URL(page.url()).searchParams.get('sites'), null);
       await page.close();
     });
 

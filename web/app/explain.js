@@ -95,6 +95,7 @@ export const EXPLANATIONS = {
         heading: 'The controls',
         paragraphs: [
           '<em>Distribution</em>: the Hull view\'s point sets (in a cube or a ball, on a sphere, coplanar, near-coplanar, integer grids, a rotated grid, pasted coordinates) or a file you open or drop on the page; 1 to 200 000 points. 100 000 points (about 670 000 tetrahedra) stay interactive: the tetrahedralization runs in the worker with its progress shown, and the shrink and the cut are applied by the graphics card.',
+          '<em>Sites</em>: <em>nearest</em> draws the Delaunay tetrahedralization; <em>furthest</em> the upper facets of the same lifted hull instead, the <strong>furthest-site</strong> tetrahedralization: its circumspheres hold every point, its corners are the hull\'s extreme points only (the points inside are in no tetrahedron), and each point\'s cell is where it is the farthest point, always unbounded. It is the same insertion with every in-sphere answer reversed.',
           '<em>Shrink</em> scales each tetrahedron about its centroid. <em>Cut</em> hides whole tetrahedra whose centroid lies beyond the plane, or clips them at the plane (a three.js clipping plane), or shows them all. <em>Move</em>, <em>Turn</em> and <em>Tilt</em> place the plane; drag its amber handle in the view to move it along its normal. Points beyond the plane are hidden with the tetrahedra. The link keeps the points and these settings.',
         ],
       },

@@ -12,8 +12,9 @@ const SEED_MAX = 0xffffffff;
 const SOURCES = [...Object.keys(DISTRIBUTIONS), 'custom', 'file'];
 const GRIDS = ['grid', 'rotated-grid'];
 export const DEFAULTS = Object.freeze({
-  distribution: 'ball', n: 1000, seed: 1, shrink: 0.75, cut: 'whole', offset: 0.1, azimuth: 0, elevation: 15,
+  distribution: 'ball', n: 1000, seed: 1, sites: 'nearest', shrink: 0.75, cut: 'whole', offset: 0.1, azimuth: 0, elevation: 15,
 });
+const SITES = ['nearest', 'furthest'];
 
 // Out-of-range values become the nearest valid one (n = -5 → 1, a shrink of 3 → 1, a tilt of 200° → 90°).
 const RANGES = {
@@ -33,7 +34,7 @@ export function delaunay3Ui() {
   const $ = (id) => document.getElementById(id);
   return {
     form: $('d3-controls'), distribution: $('d3-distribution'), generatedFields: $('d3-generated-fields'),
-    n: $('d3-n'), nHint: $('d3-n-hint'), seed: $('d3-seed'), customField: $('d3-custom-field'), customPoints: $('d3-custom-points'),
+    n: $('d3-n'), nHint: $('d3-n-hint'), seed: $('d3-seed'), sites: $('d3-sites'), customField: $('d3-custom-field'), customPoints: $('d3-custom-points'),
     compute: $('d3-compute'), cancel: $('d3-cancel'), status: $('d3-status'), error: $('d3-error'),
     shrink: $('d3-shrink'), shrinkValue: $('d3-shrink-value'), cut: $('d3-cut'),
     offset: $('d3-offset'), offsetValue: $('d3-offset-value'), azimuth: $('d3-azimuth'), azimuthValue: $('d3-azimuth-value'),
@@ -71,7 +72,8 @@ export function createDelaunay3Panel({ ui, state }) {
   function readParams() {
     let distribution = SOURCES.includes(ui.distribution.value) ? ui.distribution.value : DEFAULTS.distribution;
     if (distribution === 'file' && !state.fileInput) distribution = DEFAULTS.distribution;
-    const p = { distribution, n: valid('n', ui.n.value), seed: valid('seed', ui.seed.value) };
+    const sites = SITES.includes(ui.sites.value) ? ui.sites.value : DEFAULTS.sites;
+    const p = { distribution, n: valid('n', ui.n.value), seed: valid('seed', ui.seed.value), sites };
     if (distribution === 'custom') p.text = ui.customPoints.value;
     if (distribution === 'file') Object.assign(p, { n: state.fileInput.xyz.length / 3, file: state.fileInput.name });
     return p;
@@ -91,6 +93,7 @@ export function createDelaunay3Panel({ ui, state }) {
     ui.distribution.value = p.distribution;
     ui.n.value = String(p.n);
     ui.seed.value = String(p.seed);
+    ui.sites.value = p.sites ?? DEFAULTS.sites;
     updateSourceFields();
   }
 
@@ -129,6 +132,7 @@ export function createDelaunay3Panel({ ui, state }) {
     const p = readParams();
     const q = { dist: p.distribution === 'file' ? DEFAULTS.distribution : p.distribution };
     if (!['custom', 'file'].includes(p.distribution)) Object.assign(q, { n: p.n, seed: p.seed });
+    if (p.sites !== DEFAULTS.sites) q.sites = p.sites;
     const d = readDisplay();
     for (const key of ['shrink', 'offset', 'azimuth', 'elevation']) if (d[key] !== DEFAULTS[key]) q[URL_KEYS[key]] = d[key];
     if (d.cut !== DEFAULTS.cut) q.cut = d.cut;
@@ -141,6 +145,7 @@ export function createDelaunay3Panel({ ui, state }) {
     const p = {
       distribution: SOURCES.includes(dist) && dist !== 'file' ? dist : DEFAULTS.distribution,
       n: valid('n', q.get('n')), seed: valid('seed', q.get('seed')),
+      sites: SITES.includes(q.get('sites')) ? q.get('sites') : DEFAULTS.sites,
     };
     const d = {
       cut: CUT_MODES.includes(q.get('cut')) ? q.get('cut') : DEFAULTS.cut,
@@ -148,7 +153,7 @@ export function createDelaunay3Panel({ ui, state }) {
     };
     writeParams(p);
     writeDisplay(d);
-    correctUrl(Object.fromEntries(Object.entries(URL_KEYS).map(([key, name]) => [name, key in p ? p[key] : d[key]])));
+    correctUrl({ ...Object.fromEntries(Object.entries(URL_KEYS).map(([key, name]) => [name, key in p ? p[key] : d[key]])), sites: p.sites });
   }
 
   /** Listens to the inputs: `compute` for new points, `applyDisplay` for shrink and the cut. */
@@ -158,7 +163,7 @@ export function createDelaunay3Panel({ ui, state }) {
       if (ui.distribution.value !== 'custom') compute({ push: true });
     });
     ui.n.addEventListener('input', updateSourceFields);
-    for (const el of [ui.n, ui.seed]) el.addEventListener('change', () => compute({ push: true }));
+    for (const el of [ui.n, ui.seed, ui.sites]) el.addEventListener('change', () => compute({ push: true }));
     ui.customPoints.addEventListener('keydown', (event) => {
       if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
         event.preventDefault();

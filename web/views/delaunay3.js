@@ -55,7 +55,7 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     onPlaneDragEnd: () => writeUrl('delaunay3', urlParams()),
   });
 
-  const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.text ?? ''}|${p.file ?? ''}`;
+  const paramsKey = (p) => `${p.distribution}|${p.n}|${p.seed}|${p.sites}|${p.text ?? ''}|${p.file ?? ''}`;
 
   const describe = (p) => {
     if (p.distribution === 'custom') return 'the pasted points';
@@ -88,7 +88,9 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     ui.compute.disabled = true;
     ui.cancel.disabled = false;
     ui.status.textContent = `${busyLabel()}…`;
-    const request = { type: 'delaunay3', distribution: params.distribution, n: params.n, seed: params.seed, text: params.text };
+    const request = {
+      type: 'delaunay3', distribution: params.distribution, n: params.n, seed: params.seed, text: params.text, furthestSite: params.sites === 'furthest',
+    };
     if (params.distribution === 'file') request.xyz = state.fileInput.xyz.slice();
     const onProgress = ({ done, total }) => {
       if (state.job !== job) return;
@@ -158,9 +160,10 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     const drawMs = performance.now() - d0;
     const { dimension, tetrahedra, neighbors, representative, triangles } = msg;
     const { positions, centre, boundary, distinct } = msg.drawing;
+    const furthest = Boolean(msg.furthestSite);
     state.drawn = {
       key: msg.key, dimension, xyz: msg.xyz, centre, positions, tetrahedra, neighbors, representative,
-      triangles, vertices: msg.vertices, boundary, distinct,
+      triangles, vertices: msg.vertices, boundary, distinct, furthest,
     };
     state.voronoi = null;
     state.picked = -1;
@@ -176,9 +179,12 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     ui.stat.draw.title = `the first render of the geometry on the main thread (prepared in the worker in ${fmtMs(msg.drawingMs)})`;
     const n = distinct.length;
     const what = describe({ ...params, n: msg.n });
+    const corners = new Set(tetrahedra).size;
     let status = {
-      3: () => `${what}: ${fmtInt(count)} tetrahedra, ${fmtInt(msg.hull.length / 3)} hull triangles. No point lies inside any circumsphere, and no tetrahedron is flat.`,
-      2: () => `${what}: all on one plane, so no tetrahedra: their Delaunay triangulation in that plane, ${fmtInt(triangles.length / 3)} triangles (drawn flat).`,
+      3: () => (furthest
+        ? `${what}, furthest sites: ${fmtInt(count)} tetrahedra on the hull's ${fmtInt(corners)} corners (the upper lifted hull). Every circumsphere holds every point; the points inside the hull are in no tetrahedron; none is flat.`
+        : `${what}: ${fmtInt(count)} tetrahedra, ${fmtInt(msg.hull.length / 3)} hull triangles. No point lies inside any circumsphere, and no tetrahedron is flat.`),
+      2: () => `${what}: all on one plane, so no tetrahedra: their ${furthest ? 'furthest-site' : 'Delaunay'} triangulation in that plane, ${fmtInt(triangles.length / 3)} triangles (drawn flat).`,
       1: () => `${what}: all on one line, so no tetrahedra (${fmtInt(n)} distinct points).`,
       0: () => `${what}: one distinct point, no tetrahedra.`,
     }[dimension]?.() ?? 'No points.';
@@ -187,7 +193,7 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     window.hullkitDelaunay3 = {
       n: msg.n, distinct: n, duplicates: msg.duplicateCount, tetrahedra: count, hullTriangles: msg.hull.length / 3,
       triangles: triangles.length / 3, dimension, ms: msg.ms, drawMs, distribution: params.distribution, seed: params.seed,
-      run: runCount, voronoi: false, voronoiMs: null,
+      run: runCount, voronoi: false, voronoiMs: null, sites: furthest ? 'furthest' : 'nearest', corners,
     };
     setState('ready');
     requestVoronoi();
@@ -213,7 +219,7 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     const d = state.drawn;
     return {
       xyz: d.xyz, dimension: d.dimension, tetrahedra: d.tetrahedra, neighbors: d.neighbors, triangles: d.triangles,
-      vertices: d.vertices, representative: d.representative,
+      vertices: d.vertices, representative: d.representative, furthestSite: d.furthest,
     };
   }
 
@@ -302,7 +308,11 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
     const at = `Point ${p} (${fmtReal(x)}, ${fmtReal(y)}, ${fmtReal(z)})`;
     ui.cell.innerHTML = '';
     const strong = document.createElement('strong');
-    if (cell.bounded) {
+    if (state.drawn.furthest) {
+      strong.textContent = faces ? 'unbounded' : 'empty';
+      ui.cell.append(faces ? `${at}: its furthest-site cell (where it is the farthest point) is ` : `${at} is no corner of the hull: its furthest-site cell is `, strong,
+        faces ? `, as every one is; ${fmtInt(faces)} faces, the part near the points drawn.` : ' (no point of space has it farthest).');
+    } else if (cell.bounded) {
       strong.textContent = `volume ${fmtReal(cell.volume)}`;
       ui.cell.append(`${at}: its Voronoi cell has `, strong, `, ${fmtInt(faces)} faces (one per Delaunay neighbour), ${fmtInt(cell.vertices.length / 3)} vertices at circumcentres.`);
     } else {
@@ -321,12 +331,15 @@ export function createDelaunay3View({ stage, worker, setState, viewport }) {
       ? { tetrahedron: hover.tetrahedron, corners: hover.cornerIndices, centre: hover.centre, radius: hover.radius, onSphere: hover.points, exact: hover.exact }
       : null;
     if (!hover) {
-      ui.hover.textContent = 'Hover (or tap) a tetrahedron to see its empty circumsphere.';
+      ui.hover.textContent = state.drawn?.furthest
+        ? 'Hover (or tap) a tetrahedron to see its circumsphere, which holds every point.'
+        : 'Hover (or tap) a tetrahedron to see its empty circumsphere.';
       return;
     }
     const extra = hover.points.length - 4;
+    const [inside, none] = state.drawn?.furthest ? ['outside', 'every other point inside it'] : ['inside', 'no other point on or inside its sphere.'];
     ui.hover.textContent = `Tetrahedron ${fmtInt(hover.tetrahedron)} (points ${hover.cornerIndices.join(', ')}): circumradius ${fmtReal(hover.radius)}; ` +
-      (extra > 0 ? `${extra} more ${extra === 1 ? 'point lies' : 'points lie'} exactly on its sphere (cospherical), none inside.` : 'no other point on or inside its sphere.') +
+      (extra > 0 ? `${extra} more ${extra === 1 ? 'point lies' : 'points lie'} exactly on its sphere (cospherical), none ${inside}.` : state.drawn?.furthest ? `${none}.` : none) +
       (hover.exact ? '' : ' (Cospherical points show once the Voronoi diagram is in.)');
   }
 
