@@ -103,3 +103,20 @@ TEST_CASE("delaunay3 vs CGAL: cospherical ties (grids, lattices, spheres) broken
                 if (x == 0 || x == 6 || y == 0 || y == 6 || z == 0 || z == 6) box.insert(box.end(), {double(x), double(y), double(z)});
     same_as_cgal(box);
 }
+
+TEST_CASE("delaunay3 vs CGAL: points on spheres up to rounding (near-cospherical, in-sphere stage C)", "[delaunay3][cgal]") {
+    // Rounded unit vectors: every five points are cospherical up to the rounding of their
+    // coordinates, so most in-sphere tests go past the filter (hullkit's stage C decides them).
+    std::mt19937_64 rng(17);
+    std::normal_distribution<double> g;
+    for (const double offset : {0.0, 1e3}) {
+        std::vector<double> xyz;
+        for (int i = 0; i < 8000; ++i) {
+            double v[3] = {g(rng), g(rng), g(rng)};
+            const double r = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            xyz.insert(xyz.end(), {offset + v[0] / r, v[1] / r, v[2] / r});
+        }
+        INFO("centre offset " << offset);
+        same_as_cgal(xyz);
+    }
+}

@@ -121,8 +121,36 @@ TEST_CASE("insphere: cospherical integer points and their neighbours one ulp awa
         }
         check(p[0], p[1], p[2], p[3], p[4], &counts);
     }
-    CHECK(counts.stage[1] > 0);  // exact differences
-    CHECK(counts.stage[3] > 0);  // the 0.1 scale makes differences inexact
+    CHECK(counts.stage[1] > 0);                        // exact differences
+    CHECK(counts.stage[2] + counts.stage[3] > 0);      // the 0.1 scale makes differences inexact
+}
+
+TEST_CASE("insphere: points on a sphere up to rounding (stage C decides them; GMP agrees)", "[exact]") {
+    // Unit vectors rounded to doubles, at several scales and centres: five of them are cospherical
+    // up to the rounding of their coordinates, so the determinant is a few eps times its permanent
+    // and the filter cannot decide. Tuples of far-apart points (a Delaunay tetrahedralization of a
+    // sphere's samples is made of such) and of near neighbours.
+    std::mt19937_64 rng(41);
+    std::normal_distribution<double> g;
+    Counts counts;
+    for (int trial = 0; trial < 6000; ++trial) {
+        const double scale = std::ldexp(1.0, static_cast<int>(rng() % 40) - 20);
+        const double centre[3] = {trial % 3 == 0 ? 0.0 : g(rng), trial % 3 == 2 ? 1e3 * g(rng) : 0.0, 0.0};
+        const bool near = trial % 2 == 1;
+        double axis[3] = {g(rng), g(rng), g(rng)};
+        P3 p[5];
+        for (auto& q : p) {
+            double v[3];
+            for (int k = 0; k < 3; ++k) v[k] = near ? axis[k] + 0.01 * g(rng) : g(rng);
+            const double r = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            for (int k = 0; k < 3; ++k) q[k] = centre[k] + scale * (v[k] / r);
+        }
+        if (hullkit::orient3d(p[0].data(), p[1].data(), p[2].data(), p[3].data()) < 0) std::swap(p[0], p[1]);
+        check(p[0], p[1], p[2], p[3], p[4], &counts);
+    }
+    INFO("stages " << counts.stage[0] << " " << counts.stage[1] << " " << counts.stage[2] << " " << counts.stage[3]);
+    CHECK(counts.stage[2] > 1000);                      // decided by stage C
+    CHECK(counts.stage[2] > 20 * counts.stage[3]);      // the exact stage is the rare case
 }
 
 TEST_CASE("insphere: large integer coordinates (exact differences beyond the plain fast path)", "[exact]") {

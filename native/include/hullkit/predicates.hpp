@@ -299,8 +299,10 @@ inline int incircle_semi_static(double bound, double ax, double ay, double bx, d
 }
 
 /// insphere that reports the deciding stage: 0 = floating-point filter, 1 = exact arithmetic on
-/// exactly computed differences (integer fast path or expansions), 3 = the full exact expansion
-/// from the rounded differences and their roundoff. And its full exact evaluation alone.
+/// exactly computed differences (integer fast path or expansions), 2 = the rounded differences'
+/// exact determinant plus the first-order term of their roundoff (an error bound of order
+/// eps^2 times the permanent), 3 = the full exact expansion from the rounded differences and their
+/// roundoff. And its full exact evaluation alone.
 int insphere_traced(const double* a, const double* b, const double* c, const double* d, const double* e,
                     int* stage);
 int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e);

@@ -12,12 +12,14 @@
 //      (16 + 224 eps) eps times the permanent (in the header, inlinable);
 //   B  when the twelve differences are exact (their roundoff is 0: grids, integer and dyadic
 //      coordinates, the common degenerate inputs): small integers (after a power-of-two scale,
-//      below 2^9) are evaluated in plain doubles, which is then exact; otherwise the determinant of
-//      the differences as an expansion (fixed arrays, exact);
-//   D  otherwise the full exact expansion from the exact differences (each of two components),
+//      below 2^9) are evaluated in plain doubles, which is then exact; otherwise stage C first
+//      (its tails are zero), then the determinant of the differences as an expansion (fixed
+//      arrays, exact);
+//   D  when C cannot decide, the full exact expansion from the exact differences (each of two components),
 //      compressed after every product (heap arrays: this path is rare).
-// There is no stage C: the inputs that get past stage A without exact differences are
-// near-degenerate floating-point data, rare enough that the exact stage costs nothing measurable.
+//   C  otherwise the rounded differences' determinant in double-word arithmetic plus the first-order
+//      term of their roundoffs, against a bound of order 400 eps^2 times the permanent (below);
+//      this decides points that are cospherical up to rounding (samples of a sphere's surface).
 //
 // Valid range (kInsphereMinMagnitude = 2^-120 .. kInsphereMaxMagnitude = 2^+195), by the argument of
 // predicates.hpp for a polynomial of degree 5:
@@ -60,25 +62,6 @@ inline double power_of_two_below_512_over(double x) {
     return scale;
 }
 
-/// The determinant (hullkit's sign) from twelve differences in plain doubles: exact when they are
-/// integers below 2^9 in magnitude (every product and sum is then an integer below 2^53: lifts
-/// below 3 * 2^18, minors below 6 * 2^27, terms below 18 * 2^45, the sum below 72 * 2^45).
-double insphere_plain(const double* d) {
-    const double aex = d[0], aey = d[1], aez = d[2], bex = d[3], bey = d[4], bez = d[5];
-    const double cex = d[6], cey = d[7], cez = d[8], dex = d[9], dey = d[10], dez = d[11];
-    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    return (alift * bcd - blift * cda) + (clift * dab - dlift * abc);
-}
-
 /// Exact u * v - w * z of four doubles, as an expansion of at most 4 components.
 inline int product_diff(double u, double v, double w, double z, double* h) {
     double hi1, lo1, hi2, lo2;
@@ -114,8 +97,40 @@ int lift_times(int mlen, const double* minor, double x, double y, double z, doub
     return expansion_sum(lxy, mxy, lz, mz, h);
 }
 
-/// Stage B on exact differences d (aex, aey, aez, bex, ..., dez): the exact sign.
-int insphere_exact_differences(const double* d) {
+/// Shewchuk's Compress in place: the same value in (nearly) as few components as its bits allow,
+/// increasing in magnitude, no zeros; returns the new length.
+int compress_in_place(int m, double* e) {
+    if (m == 0) return 0;
+    double big = e[m - 1];
+    int bottom = m - 1;
+    for (int i = m - 2; i >= 0; --i) {
+        double sum, small;
+        fast_two_sum(big, e[i], sum, small);
+        if (small != 0.0) {
+            e[bottom--] = sum;
+            big = small;
+        } else {
+            big = sum;
+        }
+    }
+    e[bottom] = big;
+    int top = 0;
+    double carry = e[bottom];
+    for (int i = bottom + 1; i < m; ++i) {
+        double sum, small;
+        fast_two_sum(e[i], carry, sum, small);
+        if (small != 0.0) e[top++] = small;
+        carry = sum;
+    }
+    if (carry != 0.0) e[top++] = carry;
+    return top;
+}
+
+/// The determinant of twelve differences d (aex, aey, aez, bex, ..., dez), exactly, as an expansion
+/// into det (room for 1152 components); returns its length. The 3x3 minors and the four terms are
+/// compressed as they are made (a general double's terms fit in a few components; without it the
+/// sums would run over hundreds).
+int insphere_differences_expansion(const double* d, double* det) {
     const double aex = d[0], aey = d[1], aez = d[2], bex = d[3], bey = d[4], bez = d[5];
     const double cex = d[6], cey = d[7], cez = d[8], dex = d[9], dey = d[10], dez = d[11];
     double ab[4], bc[4], cd[4], da[4], ac[4], bd[4], ca[4], db[4];
@@ -125,19 +140,121 @@ int insphere_exact_differences(const double* d) {
     for (int i = 0; i < lac; ++i) ca[i] = -ac[i];
     for (int i = 0; i < lbd; ++i) db[i] = -bd[i];
     double abc[24], bcd[24], cda[24], dab[24];
-    const int labc = minor3(lbc, bc, aez, lac, ca, bez, lab, ab, cez, abc);  // aez bc - bez ac + cez ab
-    const int lbcd = minor3(lcd, cd, bez, lbd, db, cez, lbc, bc, dez, bcd);  // bez cd - cez bd + dez bc
-    const int lcda = minor3(lda, da, cez, lac, ac, dez, lcd, cd, aez, cda);  // cez da + dez ac + aez cd
-    const int ldab = minor3(lab, ab, dez, lbd, bd, aez, lda, da, bez, dab);  // dez ab + aez bd + bez da
+    const int labc = compress_in_place(minor3(lbc, bc, aez, lac, ca, bez, lab, ab, cez, abc), abc);  // aez bc - bez ac + cez ab
+    const int lbcd = compress_in_place(minor3(lcd, cd, bez, lbd, db, cez, lbc, bc, dez, bcd), bcd);  // bez cd - cez bd + dez bc
+    const int lcda = compress_in_place(minor3(lda, da, cez, lac, ac, dez, lcd, cd, aez, cda), cda);  // cez da + dez ac + aez cd
+    const int ldab = compress_in_place(minor3(lab, ab, dez, lbd, bd, aez, lda, da, bez, dab), dab);  // dez ab + aez bd + bez da
     double ta[288], tb[288], tc[288], td[288];
-    const int la = lift_times(lbcd, bcd, aex, aey, aez, 1.0, ta);
-    const int lb = lift_times(lcda, cda, bex, bey, bez, -1.0, tb);
-    const int lc = lift_times(ldab, dab, cex, cey, cez, 1.0, tc);
-    const int ld = lift_times(labc, abc, dex, dey, dez, -1.0, td);
-    double s1[576], s2[576], det[1152];
+    const int la = compress_in_place(lift_times(lbcd, bcd, aex, aey, aez, 1.0, ta), ta);
+    const int lb = compress_in_place(lift_times(lcda, cda, bex, bey, bez, -1.0, tb), tb);
+    const int lc = compress_in_place(lift_times(ldab, dab, cex, cey, cez, 1.0, tc), tc);
+    const int ld = compress_in_place(lift_times(labc, abc, dex, dey, dez, -1.0, td), td);
+    double s1[576], s2[576];
     const int l1 = expansion_sum(la, ta, lb, tb, s1);
     const int l2 = expansion_sum(lc, tc, ld, td, s2);
-    return expansion_sign(expansion_sum(l1, s1, l2, s2, det), det);
+    return expansion_sum(l1, s1, l2, s2, det);
+}
+
+/// Stage B on exact differences d: the exact sign.
+int insphere_exact_differences(const double* d) {
+    double det[1152];
+    return expansion_sign(insphere_differences_expansion(d, det), det);
+}
+
+// ---- Stage C: the rounded differences' determinant in double-word arithmetic, plus the first-order ----
+// ---- term of their roundoffs ----
+//
+// With d the rounded differences and t their roundoffs (d + t exact, |t| <= eps |d|), every term of
+// the determinant is a product of five entries, so
+//     det(d + t) = det(d) + F + R,   F = sum over the twelve entries of t_i * (d det / d d_i)(d),
+// and R (the terms with two or more tails) is at most ((1 + eps)^5 - 1 - 5 eps) P <= 10.01 eps^2 P,
+// P the permanent (the terms in absolute value; stage A's computed permanent is within a factor
+// 1 + 12 eps of it).
+//  * det(d) is evaluated by the same formula in double-word arithmetic (a value hi + lo): sums by
+//    Joldes, Muller & Popescu's AccurateDWPlusDW (relative error below 3 eps^2 / (1 - 4 eps)),
+//    products by their DWTimesDW1 (below 7 eps^2); taken here as at most eta = 16 eps^2 per
+//    operation. Every product of five entries passes through at most 11 operations (2 for a 2x2
+//    minor, 3 more for a 3x3 minor, 3 for a lift, 1 for their product, 2 for the final sums), so
+//    the error is at most ((1 + eta)^11 - 1) P < 200 eps^2 P.
+//  * F is computed in doubles by carrying each value's derivative along t through the formula
+//    (dual numbers): a straight-line program of at most 30 roundings on any product of inputs, so
+//    its error is at most gamma_30 < 31 eps times the same program run on |d|, |t| with every
+//    subtraction an addition (Fabs, computed with all terms positive: rounded down by at most a
+//    factor 1 - gamma_30). Fabs <= 5 eps P.
+//  * hi + (lo + F) rounds twice: at most 2 eps (|value| + |lo| + |F|).
+// The bound is of order 400 eps^2 P, while points that are cospherical up to the rounding of their
+// coordinates (samples of a sphere's surface) give determinants of a few eps times P, which stages
+// A and B cannot decide and stage D decides a hundred times more slowly.
+
+/// A double-word number hi + lo (|lo| at most half an ulp of hi).
+struct Word {
+    double hi, lo;
+};
+inline Word operator+(Word x, Word y) {  // AccurateDWPlusDW
+    double sh, sl, th, tl, vh, vl, zh, zl;
+    two_sum(x.hi, y.hi, sh, sl);
+    two_sum(x.lo, y.lo, th, tl);
+    const double c = sl + th;
+    fast_two_sum(sh, c, vh, vl);
+    const double w = tl + vl;
+    fast_two_sum(vh, w, zh, zl);
+    return {zh, zl};
+}
+inline Word operator-(Word x, Word y) { return x + Word{-y.hi, -y.lo}; }
+inline Word operator*(Word x, Word y) {  // DWTimesDW1
+    double ch, cl1, zh, zl;
+    two_product(x.hi, y.hi, ch, cl1);
+    const double cl2 = x.hi * y.lo + x.lo * y.hi;
+    const double cl3 = cl1 + cl2;
+    fast_two_sum(ch, cl3, zh, zl);
+    return {zh, zl};
+}
+
+struct Dual {
+    double v, t;  ///< a value and its derivative along the tails
+};
+inline Dual operator*(Dual a, Dual b) { return {a.v * b.v, a.t * b.v + a.v * b.t}; }
+inline Dual operator+(Dual a, Dual b) { return {a.v + b.v, a.t + b.t}; }
+inline Dual operator-(Dual a, Dual b) { return {a.v - b.v, a.t - b.t}; }
+
+/// The determinant's formula (insphere_plain's) on the twelve differences in any arithmetic; with
+/// `absolute` every subtraction is an addition (for inputs given in absolute value: a bound's program).
+template <class T, bool absolute = false>
+T insphere_formula(const T* x) {
+    const auto minus = [](T a, T b) { return absolute ? a + b : a - b; };
+    const T aex = x[0], aey = x[1], aez = x[2], bex = x[3], bey = x[4], bez = x[5];
+    const T cex = x[6], cey = x[7], cez = x[8], dex = x[9], dey = x[10], dez = x[11];
+    const T ab = minus(aex * bey, bex * aey), bc = minus(bex * cey, cex * bey), cd = minus(cex * dey, dex * cey);
+    const T da = minus(dex * aey, aex * dey), ac = minus(aex * cey, cex * aey), bd = minus(bex * dey, dex * bey);
+    const T abc = minus(aez * bc, bez * ac) + cez * ab;
+    const T bcd = minus(bez * cd, cez * bd) + dez * bc;
+    const T cda = cez * da + dez * ac + aez * cd;
+    const T dab = dez * ab + aez * bd + bez * da;
+    const T alift = aex * aex + aey * aey + aez * aez;
+    const T blift = bex * bex + bey * bey + bez * bez;
+    const T clift = cex * cex + cey * cey + cez * cez;
+    const T dlift = dex * dex + dey * dey + dez * dez;
+    return minus(alift * bcd, blift * cda) + minus(clift * dab, dlift * abc);
+}
+
+/// Stage C: the sign of det(d + t) when the bound above decides it, else 0 (undecided).
+int insphere_stage_c(const double* d, const double* t, double permanent) {
+    Word w[12];
+    Dual x[12], magnitude[12];
+    for (int i = 0; i < 12; ++i) {
+        w[i] = {d[i], 0.0};
+        x[i] = {d[i], t[i]};
+        magnitude[i] = {std::fabs(d[i]), std::fabs(t[i])};
+    }
+    const Word base = insphere_formula(w);
+    const double first = insphere_formula(x).t;
+    const double bound = insphere_formula<Dual, true>(magnitude).t;
+    const double value = base.hi + (base.lo + first);
+    const double errbound = 2.0 * kEpsilon * (std::fabs(value) + std::fabs(base.lo) + std::fabs(first)) +
+                            211.0 * kEpsilon * kEpsilon * permanent + 31.0 * kEpsilon * bound;
+    if (value > errbound) return 1;
+    if (-value > errbound) return -1;
+    return 0;
 }
 
 // ---- Stage D: general expansions on the heap, compressed after each product ----
@@ -240,16 +357,16 @@ int insphere_adapt(const double* a, const double* b, const double* c, const doub
         return 0;
     }
     const double* rows[4] = {a, b, c, d};
-    double diff[12];
+    double diff[12], tails[12];
     bool exact_differences = true;
     for (int i = 0; i < 4; ++i) {
         for (int k = 0; k < 3; ++k) {
             diff[3 * i + k] = rows[i][k] - e[k];
-            if (diff_roundoff(rows[i][k], e[k], diff[3 * i + k]) != 0.0) exact_differences = false;
+            tails[3 * i + k] = diff_roundoff(rows[i][k], e[k], diff[3 * i + k]);
+            if (tails[3 * i + k] != 0.0) exact_differences = false;
         }
     }
     if (exact_differences) {
-        if (stage) *stage = 1;
         double largest = 0.0;
         for (double v : diff) largest = std::max(largest, std::fabs(v));
         const double scale = power_of_two_below_512_over(largest);
@@ -259,7 +376,21 @@ int insphere_adapt(const double* a, const double* b, const double* c, const doub
             scaled[i] = diff[i] * scale;
             integers = integers && scaled[i] == std::trunc(scaled[i]);
         }
-        if (integers) return sign_of(insphere_plain(scaled));
+        // In plain doubles the formula is exact for integers below 2^9 in magnitude (every product and
+        // sum is then an integer below 2^53: lifts below 3 * 2^18, minors below 6 * 2^27, terms below
+        // 18 * 2^45, the sum below 72 * 2^45).
+        if (integers) {
+            if (stage) *stage = 1;
+            return sign_of(insphere_formula(scaled));
+        }
+    }
+    // Stage C (with zero tails when the differences are exact: then its error is the double-word
+    // evaluation's alone), before any expansion: near-cospherical floating-point points (a sphere's
+    // samples) mostly have exact differences and would otherwise all take the expansions.
+    if (stage) *stage = 2;
+    if (const int sign = insphere_stage_c(diff, tails, permanent); sign != 0) return sign;
+    if (exact_differences) {
+        if (stage) *stage = 1;
         return insphere_exact_differences(diff);
     }
     if (stage) *stage = 3;
