@@ -261,35 +261,10 @@ int insphere_stage_c(const double* d, const double* t, double permanent) {
 
 using Expansion = std::vector<double>;
 
-/// Shewchuk's Compress: the same value with (nearly) as few components as its bits allow, in
-/// increasing magnitude and without zeros.
-Expansion compress(const Expansion& e) {
-    const int m = static_cast<int>(e.size());
-    if (m == 0) return {};
-    Expansion g(m), h;
-    double big = e[m - 1];
-    int bottom = m - 1;
-    for (int i = m - 2; i >= 0; --i) {
-        double sum, small;
-        fast_two_sum(big, e[i], sum, small);
-        if (small != 0.0) {
-            g[bottom--] = sum;
-            big = small;
-        } else {
-            big = sum;
-        }
-    }
-    g[bottom] = big;
-    h.reserve(m - bottom);
-    double carry = g[bottom];
-    for (int i = bottom + 1; i < m; ++i) {
-        double sum, small;
-        fast_two_sum(g[i], carry, sum, small);
-        if (small != 0.0) h.push_back(small);
-        carry = sum;
-    }
-    if (carry != 0.0) h.push_back(carry);
-    return h;
+/// compress_in_place on a heap expansion.
+Expansion compress(Expansion e) {
+    e.resize(static_cast<std::size_t>(compress_in_place(static_cast<int>(e.size()), e.data())));
+    return e;
 }
 
 Expansion add(const Expansion& e, const Expansion& f) {
