@@ -147,6 +147,8 @@ struct Input {
     bool mesh = false;                          ///< a .ele (and .node) to refine
     std::vector<std::uint32_t> triangles;       ///< its triangles, 0-based
     std::vector<std::size_t> triangle_line;     ///< per triangle, its line of the .ele
+    std::vector<std::uint64_t> triangle_number; ///< per triangle, its number in the .ele
+    std::uint64_t node_first = 0;               ///< the .node's first vertex number
     std::string node_source;                    ///< the .node file beside it
     bool whole_hull = false;                    ///< a .node alone: no segments, the whole hull
 };
@@ -338,6 +340,7 @@ void read_node_ele(const std::string& ele_text, const std::string& ele_source, c
     in->node_source = node_path;
     std::uint64_t first = 0;
     const std::uint64_t count = read_node_vertices(read_input(node_path), node_path, in, &first);
+    in->node_first = first;
     TriangleFile ele(ele_text, ele_source);
     std::size_t line = 0;
     line = ele.next("header (triangle count, corners per triangle, attributes)");
@@ -348,6 +351,7 @@ void read_node_ele(const std::string& ele_text, const std::string& ele_source, c
         line = ele.next("triangles");
         ele.corners(line, 3, first, count, "corner", &in->triangles);
         in->triangle_line.push_back(line);
+        in->triangle_number.push_back(ele.whole(ele.v[0], line, "a triangle number"));
     }
     ele.end("triangles");
 }
@@ -619,6 +623,43 @@ void write_node_ele(const std::string& output, const hullkit::ConstrainedDelauna
     write_output(base + ".ele", ele);
 }
 
+/// A core message about a mesh read from .node/.ele with its triangle and point numbers (0-based
+/// positions) as the files number them: a number after "triangle(s)" (and after "and" or a comma
+/// that follows one) becomes that triangle's number in the .ele, one after "point(s)" or
+/// "corner(s)" that vertex's number in the .node.
+std::string numbered_as_in_files(const std::string& message, const Input& in) {
+    enum class Kind { None, Triangle, Point } kind = Kind::None;
+    std::string out;
+    std::size_t at = 0;
+    while (at < message.size()) {
+        const std::size_t end = std::min(message.find(' ', at), message.size());
+        const std::string token = message.substr(at, end - at);
+        // The word without the punctuation around it.
+        const std::size_t first = token.find_first_not_of("(");
+        const std::size_t last = token.find_last_not_of(",):;");
+        const std::string word = first == std::string::npos || last < first ? "" : token.substr(first, last - first + 1);
+        std::string replaced = token;
+        if (word == "triangle" || word == "triangles") {
+            kind = Kind::Triangle;
+        } else if (word == "point" || word == "points" || word == "corner" || word == "corners") {
+            kind = Kind::Point;
+        } else if (!word.empty() && word.find_first_not_of("0123456789") == std::string::npos && kind != Kind::None) {
+            const std::uint64_t k = std::stoull(word);
+            std::uint64_t number = k;
+            if (kind == Kind::Triangle && k < in.triangle_number.size()) number = in.triangle_number[k];
+            else if (kind == Kind::Point && k < in.xy.size() / 2) number = k + in.node_first;
+            replaced = token.substr(0, first) + std::to_string(number) + token.substr(last + 1);
+            if (token.find(')') != std::string::npos) kind = Kind::None;  // a list "(points a, b, c)" ends
+        } else if (word != "and") {
+            kind = Kind::None;
+        }
+        out += replaced;
+        if (end < message.size()) out += ' ';
+        at = end + 1;
+    }
+    return out;
+}
+
 /// The core's error with the input's line (and ring) for the point or segment it names.
 std::string located(const std::string& source, const Input& in, const hullkit::ConstrainedDelaunay& d) {
     std::string where = source;
@@ -637,7 +678,7 @@ std::string located(const std::string& source, const Input& in, const hullkit::C
     } else if (d.error_segment >= 0 && in.poly && static_cast<std::size_t>(d.error_segment) < in.segment_line.size()) {
         where += " line " + std::to_string(in.segment_line[static_cast<std::size_t>(d.error_segment)]);
     }
-    return where + ": " + d.error;
+    return where + ": " + (in.mesh ? numbered_as_in_files(d.error, in) : d.error);
 }
 
 }  // namespace

@@ -331,7 +331,7 @@ TEST_CASE("hullkit triangulate: a .ele mesh refined (Triangle's -r), --triangle-
     CHECK(largest_elsewhere > 0.2);  // the bound is triangle 1's alone
     // A .node alone: the Delaunay triangulation of its vertices, the whole hull.
     CHECK(checked_area(json_of(run_cli(dir, {"triangulate", dir.file("a.node"), "--format", "json"}))) == 16);
-    // Errors name the file and line.
+    // Errors name the file and line, and the triangles and vertices as the files number them.
     write_text(dir.file("bad.node"), read_text(dir.file("a.node")));
     write_text(dir.file("bad.ele"), "2 3 0\n1 1 2 9\n2 1 3 4\n");
     const RunResult range = run_cli(dir, {"triangulate", dir.file("bad.ele")});
@@ -340,9 +340,14 @@ TEST_CASE("hullkit triangulate: a .ele mesh refined (Triangle's -r), --triangle-
     write_text(dir.file("bad.ele"), "2 3 0\n1 1 2 6\n2 6 2 1\n");
     const RunResult overlap = run_cli(dir, {"triangulate", dir.file("bad.ele")});
     CHECK(overlap.exit_code == 2);
-    CHECK(overlap.err.find("bad.ele line 3: triangles 0 and 1 overlap") != std::string::npos);
+    CHECK(overlap.err.find("bad.ele line 3: triangles 1 and 2 overlap: both have the edge from point ") != std::string::npos);
+    CHECK(overlap.err.find("point 0") == std::string::npos);  // the .node's numbers (from 1)
     write_text(dir.file("bad.ele"), "1 3 0\n1 1 5 7\n");  // (0,0), (1,1), (3,3): collinear
-    CHECK(run_cli(dir, {"triangulate", dir.file("bad.ele")}).err.find("bad.ele line 2: triangle 0 (points 0, 4, 6) has no area") != std::string::npos);
+    CHECK(run_cli(dir, {"triangulate", dir.file("bad.ele")}).err.find("bad.ele line 2: triangle 1 (points 1, 5, 7) has no area") != std::string::npos);
+    // Numbered from 0 in the files, and triangles numbered on their own: the same numbers back.
+    write_text(dir.file("zero.node"), "3 2 0 0\n0 0 0\n1 1 1\n2 3 3\n");
+    write_text(dir.file("zero.ele"), "1 3 0\n7 0 1 2\n");
+    CHECK(run_cli(dir, {"triangulate", dir.file("zero.ele")}).err.find("zero.ele line 2: triangle 7 (points 0, 1, 2) has no area") != std::string::npos);
     write_text(dir.file("short.area"), "2\n1 0.5\n2 0.5\n");
     CHECK(run_cli(dir, {"triangulate", dir.file("a.ele"), "--triangle-areas", dir.file("short.area")}).err.find("2 areas for a mesh of 8 triangles") != std::string::npos);
     CHECK(run_cli(dir, {"triangulate", dir.file("rings.txt"), "--triangle-areas", dir.file("a.area")}).err.find("the input must be a Triangle .ele file") != std::string::npos);
