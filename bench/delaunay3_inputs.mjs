@@ -21,6 +21,9 @@
 //                in a cluster drawn at random
 //   grid-N       the integer grid {0, ..., k-1}^3 with k = round(cbrt(N)) (100^3 = 1e6, 46^3 for 1e5,
 //                10^3): cospherical everywhere, the case where flat tetrahedra can appear
+//   sphere-N     uniform on the unit sphere (the page's generator "sphere"): every five points
+//                cospherical up to the rounding of their coordinates (scipy and qdelaunay are not
+//                run on it: scipy had not finished 1e5 such points after 16 minutes)
 //   uniform-1e7  (uniform-1e6 in quick mode) the memory test
 import { createWriteStream, existsSync, mkdirSync, renameSync, statSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -55,6 +58,7 @@ const makers = {
   uniform: (n, seed) => generatePoints('cube', n, seed),
   gaussian: gaussianClusters,
   grid: (n) => generatePoints('grid', n, 0),
+  sphere: (n, seed) => generatePoints('sphere', n, seed),
 };
 
 const sizeName = (n) => `1e${Math.round(Math.log10(n))}`;
@@ -62,10 +66,10 @@ const pointCount = (kind, n) => (kind === 'grid' ? Math.round(Math.cbrt(n)) ** 3
 
 const INPUTS = {
   full: [
-    ['uniform', 1e5], ['uniform', 1e6], ['gaussian', 1e6], ['grid', 1e6], ['grid', 1e3], ['uniform', 1e7, 'memory'],
+    ['uniform', 1e5], ['uniform', 1e6], ['gaussian', 1e6], ['grid', 1e6], ['grid', 1e3], ['sphere', 1e6], ['uniform', 1e7, 'memory'],
   ],
   quick: [
-    ['uniform', 1e5], ['gaussian', 1e5], ['grid', 1e5], ['grid', 1e3], ['uniform', 1e6, 'memory'],
+    ['uniform', 1e5], ['gaussian', 1e5], ['grid', 1e5], ['grid', 1e3], ['sphere', 1e5], ['uniform', 1e6, 'memory'],
   ],
 };
 
