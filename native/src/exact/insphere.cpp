@@ -15,11 +15,11 @@
 //      below 2^9) are evaluated in plain doubles, which is then exact; otherwise stage C first
 //      (its tails are zero), then the determinant of the differences as an expansion (fixed
 //      arrays, exact);
-//   D  when C cannot decide, the full exact expansion from the exact differences (each of two components),
-//      compressed after every product (heap arrays: this path is rare).
 //   C  otherwise the rounded differences' determinant in double-word arithmetic plus the first-order
 //      term of their roundoffs, against a bound of order 400 eps^2 times the permanent (below);
-//      this decides points that are cospherical up to rounding (samples of a sphere's surface).
+//      this decides points that are cospherical up to rounding (samples of a sphere's surface);
+//   D  when C cannot decide, the full exact expansion from the exact differences (each of two
+//      components), compressed after every product (heap arrays: this path is rare).
 //
 // Valid range (kInsphereMinMagnitude = 2^-120 .. kInsphereMaxMagnitude = 2^+195), by the argument of
 // predicates.hpp for a polynomial of degree 5:
