@@ -336,29 +336,41 @@ inline int orient3d_semi_static(double bound, const double* a, const double* b, 
     return orient3d(a, b, c, d);
 }
 
-/// insphere's stage A value in floating point (hullkit's sign): rows relative to e, the
-/// determinant expanded by its lift column into four 3x3 minors, each from the six 2x2 minors of
-/// the x, y columns.
+/// insphere's determinant of the twelve differences x (aex, aey, aez, bex, ..., dez; hullkit's sign)
+/// in any arithmetic T with +, - and *: expanded by its lift column into four 3x3 minors, each from
+/// the six 2x2 minors of the x, y columns. Stage A runs it on doubles, insphere.cpp's stage C on
+/// double-word numbers and on dual numbers; with `absolute` every subtraction is an addition (for
+/// inputs given in absolute value: an error bound's program).
+template <class T, bool absolute = false>
+inline T insphere_formula(const T* x) {
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+    const auto minus = [](T p, T q) { return absolute ? p + q : p - q; };
+    const T aex = x[0], aey = x[1], aez = x[2], bex = x[3], bey = x[4], bez = x[5];
+    const T cex = x[6], cey = x[7], cez = x[8], dex = x[9], dey = x[10], dez = x[11];
+    const T ab = minus(aex * bey, bex * aey), bc = minus(bex * cey, cex * bey), cd = minus(cex * dey, dex * cey);
+    const T da = minus(dex * aey, aex * dey), ac = minus(aex * cey, cex * aey), bd = minus(bex * dey, dex * bey);
+    const T abc = minus(aez * bc, bez * ac) + cez * ab;
+    const T bcd = minus(bez * cd, cez * bd) + dez * bc;
+    const T cda = cez * da + dez * ac + aez * cd;
+    const T dab = dez * ab + aez * bd + bez * da;
+    const T alift = aex * aex + aey * aey + aez * aez;
+    const T blift = bex * bex + bey * bey + bez * bez;
+    const T clift = cex * cex + cey * cey + cez * cez;
+    const T dlift = dex * dex + dey * dey + dez * dez;
+    return minus(alift * bcd, blift * cda) + minus(clift * dab, dlift * abc);
+}
+
+/// insphere's stage A value in floating point: insphere_formula on the rows relative to e.
 inline double insphere_stage_a_det(const double* a, const double* b, const double* c, const double* d,
                                    const double* e) {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
-    const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
-    const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
-    const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
-    const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
-    const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez;
-    const double blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez;
-    const double dlift = dex * dex + dey * dey + dez * dez;
-    return (alift * bcd - blift * cda) + (clift * dab - dlift * abc);
+    const double x[12] = {a[0] - e[0], a[1] - e[1], a[2] - e[2], b[0] - e[0], b[1] - e[1], b[2] - e[2],
+                          c[0] - e[0], c[1] - e[1], c[2] - e[2], d[0] - e[0], d[1] - e[1], d[2] - e[2]};
+    return insphere_formula(x);
 }
 
 /// insphere's stage A: the value above and its permanent (the determinant's terms in absolute

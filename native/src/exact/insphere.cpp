@@ -217,26 +217,6 @@ inline Dual operator*(Dual a, Dual b) { return {a.v * b.v, a.t * b.v + a.v * b.t
 inline Dual operator+(Dual a, Dual b) { return {a.v + b.v, a.t + b.t}; }
 inline Dual operator-(Dual a, Dual b) { return {a.v - b.v, a.t - b.t}; }
 
-/// The determinant's formula (insphere_plain's) on the twelve differences in any arithmetic; with
-/// `absolute` every subtraction is an addition (for inputs given in absolute value: a bound's program).
-template <class T, bool absolute = false>
-T insphere_formula(const T* x) {
-    const auto minus = [](T a, T b) { return absolute ? a + b : a - b; };
-    const T aex = x[0], aey = x[1], aez = x[2], bex = x[3], bey = x[4], bez = x[5];
-    const T cex = x[6], cey = x[7], cez = x[8], dex = x[9], dey = x[10], dez = x[11];
-    const T ab = minus(aex * bey, bex * aey), bc = minus(bex * cey, cex * bey), cd = minus(cex * dey, dex * cey);
-    const T da = minus(dex * aey, aex * dey), ac = minus(aex * cey, cex * aey), bd = minus(bex * dey, dex * bey);
-    const T abc = minus(aez * bc, bez * ac) + cez * ab;
-    const T bcd = minus(bez * cd, cez * bd) + dez * bc;
-    const T cda = cez * da + dez * ac + aez * cd;
-    const T dab = dez * ab + aez * bd + bez * da;
-    const T alift = aex * aex + aey * aey + aez * aez;
-    const T blift = bex * bex + bey * bey + bez * bez;
-    const T clift = cex * cex + cey * cey + cez * cez;
-    const T dlift = dex * dex + dey * dey + dez * dez;
-    return minus(alift * bcd, blift * cda) + minus(clift * dab, dlift * abc);
-}
-
 /// Stage C: the sign of det(d + t) when the bound above decides it, else 0 (undecided).
 int insphere_stage_c(const double* d, const double* t, double permanent) {
     Word w[12];
@@ -246,9 +226,9 @@ int insphere_stage_c(const double* d, const double* t, double permanent) {
         x[i] = {d[i], t[i]};
         magnitude[i] = {std::fabs(d[i]), std::fabs(t[i])};
     }
-    const Word base = insphere_formula(w);
-    const double first = insphere_formula(x).t;
-    const double bound = insphere_formula<Dual, true>(magnitude).t;
+    const Word base = detail::insphere_formula(w);
+    const double first = detail::insphere_formula(x).t;
+    const double bound = detail::insphere_formula<Dual, true>(magnitude).t;
     const double value = base.hi + (base.lo + first);
     const double errbound = 2.0 * kEpsilon * (std::fabs(value) + std::fabs(base.lo) + std::fabs(first)) +
                             211.0 * kEpsilon * kEpsilon * permanent + 31.0 * kEpsilon * bound;
@@ -356,7 +336,7 @@ int insphere_adapt(const double* a, const double* b, const double* c, const doub
         // 18 * 2^45, the sum below 72 * 2^45).
         if (integers) {
             if (stage) *stage = 1;
-            return sign_of(insphere_formula(scaled));
+            return sign_of(detail::insphere_formula(scaled));
         }
     }
     // Stage C (with zero tails when the differences are exact: then its error is the double-word
