@@ -85,6 +85,20 @@ const bindingTable = markdownTable(
   }),
 );
 
+// Furthest-site (the upper 4D hull): scipy's Delaunay(furthest_site=True) and hullkit's, on the inputs
+// that have the rows; the same set of tetrahedra where the answer is unique (points in general position).
+const furthestInputs = compared.filter(({ name }) => get('hullkit-python-furthest', name) || get('scipy-furthest', name));
+const furthestTable = markdownTable(
+  [['input', 'l'], ['scipy furthest_site=True', 'r'], ['hullkit furthest_site=True', 'r'], ['hullkit / scipy', 'r'],
+    ['tetrahedra: scipy, hullkit', 'r'], ['same set', 'l'], ['peak memory: scipy, hullkit', 'r']],
+  furthestInputs.map(({ name }) => {
+    const [scipy, python] = ['scipy-furthest', 'hullkit-python-furthest'].map((impl) => get(impl, name));
+    const same = scipy?.fingerprint && python?.fingerprint ? (scipy.fingerprint === python.fingerprint ? 'yes' : 'no') : '–';
+    return [name, time(scipy), time(python), ratioText(ratio(python, scipy), 3), `${scipy?.tetrahedra ?? '–'}, ${python?.tetrahedra ?? '–'}`, same,
+      `${memory(scipy)}, ${memory(python)}`];
+  }),
+);
+
 // Tetrahedra: counts, flat ones, and whether the set is hullkit's (same fingerprint as hullkit on one thread).
 const peers = [['hullkit-t1', 'hullkit'], ['hullkit-t2', 'hullkit 2 threads'], ['cgal', 'CGAL'], ['tetgen-NFQ', 'TetGen'], ['qdelaunay', 'qdelaunay'],
   ['scipy', 'scipy'], ['hullkit-command', 'hullkit command'], ['hullkit-python', 'hullkit Python'], ['hullkit-wasm', 'hullkit wasm']];
@@ -187,6 +201,17 @@ const body = [
   '',
   ...pendingReasons.map((reason) => `- pending, ${reason}`),
   ...(pendingReasons.length ? [''] : []),
+  ...(furthestInputs.length ? [
+    '### Furthest-site',
+    '',
+    '`scipy.spatial.Delaunay(points, furthest_site=True)` against `hullkit.delaunay3(points, furthest_site=True)` (the',
+    'upper hull of the lifted points: every circumsphere holds every point), first calls in fresh processes. "same set":',
+    'the same tetrahedra (order-free hash); points on a sphere have many furthest-site tetrahedralizations, so there',
+    'the sets and counts may differ. No target names furthest-site; the rows show what a switching user meets.',
+    '',
+    ...furthestTable,
+    '',
+  ] : []),
   '## Tetrahedra',
   '',
   'Each cell: the number of tetrahedra, how many have zero volume (exactly: an int64 determinant on the integer',

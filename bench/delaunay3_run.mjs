@@ -202,14 +202,20 @@ for (const input of inputs) {
 
   // -- Python (first call in a fresh process): scipy through Debian's interpreter, hullkit's binding
   const tets = join(out, `tets-${input.name}.u32`);
-  const pythonRow = (impl, interpreter, lib, pythonRuns) => {
-    const line = jsonLine(impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', String(pythonRuns), '--budget', '45', '--tets', tets],
+  const pythonRow = (impl, interpreter, lib, pythonRuns, extra = []) => {
+    const line = jsonLine(impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', String(pythonRuns), '--budget', '45', '--tets', tets, ...extra],
       lib === 'scipy' ? scipyTimeout : undefined);
     return record('python', { ...line, impl, ...(line.error || line.pending ? {} : count(input, tets, 'u32')) });
   };
   if (input.kind === 'sphere') record('python', { impl: 'scipy', input: input.name, n: input.n, skipped: SLOW_PEERS_SKIPPED });
   else pythonRow('scipy', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'));
   pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n));
+  // Furthest-site (Delaunay(points, furthest_site=True)) on the uniform and sphere inputs: Qhull's
+  // upper hull finishes on the sphere where its lower hull does not (3.7 s at 1e5 points, one-off).
+  if (input.kind === 'uniform' || input.kind === 'sphere') {
+    pythonRow('scipy-furthest', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'), ['--furthest']);
+    pythonRow('hullkit-python-furthest', values.python, 'hullkit', runsFor(input.n), ['--furthest']);
+  }
 
   // -- wasm in Node: the public delaunay3() of wasm/hullkit.js
   const wasm = jsonLine('hullkit-wasm', input, process.execPath, ['--expose-gc', join(here, 'delaunay3_wasm_bench.mjs'), '--input', bin, '--runs', String(runsFor(input.n)), '--tets', tets]);
