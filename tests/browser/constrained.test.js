@@ -5,8 +5,9 @@
 // and the link keeps the drawing; a GeoJSON file and Triangle .poly files open (the .poly as
 // Triangle reads it: exterior and hole regions removed, or the whole hull when its segments
 // enclose nothing); bad files and a polygon hullkit rejects show their message with the rings
-// still drawn; the quality mesh meets a 20° minimum angle and a maximum area; nothing overflows
-// the phone's width.
+// still drawn; the quality mesh meets a 20° minimum angle and a maximum area, and with "Keep
+// segments whole: the boundary" (Triangle's -Y) splits no ring edge; nothing overflows the
+// phone's width.
 //
 //   node --test tests/browser/constrained.test.js
 //
@@ -355,6 +356,22 @@ test('the Delaunay view\'s constrained modes', { timeout: 300_000 }, async (t) =
         const q = new URL(page.url()).searchParams;
         assert.deepEqual([q.get('mode'), q.get('angle'), q.get('area')], ['quality', '28', '0.01']);
         assert.equal(await page.textContent('#dl-min-angle-value'), '28°');
+        // Keeping the boundary whole (Triangle's -Y): refinement splits no ring edge, so the
+        // constrained edges are the polygon's own; without it the area bound split some.
+        assert.ok(info.constrainedEdges > info.polygonEdges, `split ring edges: ${info.constrainedEdges} constrained, ${info.polygonEdges} polygon edges`);
+        before = info.run;
+        await page.selectOption('#dl-keep', 'boundary');
+        info = await nextResult(page, before, 'h.keepSegments === "boundary"');
+        t.diagnostic(`${name} quality, boundary kept: ${JSON.stringify(info)}`);
+        assert.equal(info.error, null, info.error);
+        assert.equal(info.constrainedEdges, info.polygonEdges, 'no point added on a ring edge');
+        assert.ok(info.steinerCount > 0 && info.largestArea <= 0.01 * (1 + 1e-9), 'still refined inside');
+        assert.match(await page.textContent('#dl-cdt-note'), /boundary's segments are kept whole/);
+        assert.equal(new URL(page.url()).searchParams.get('keep'), 'boundary');
+        before = info.run;
+        await page.selectOption('#dl-keep', 'none');
+        info = await nextResult(page, before, 'h.keepSegments === "none"');
+        assert.equal(new URL(page.url()).searchParams.get('keep'), null);
         // A .poly graph meshed within its segments, its hole left out.
         before = info.run;
         await page.fill('#dl-max-area', '');
@@ -367,9 +384,10 @@ test('the Delaunay view\'s constrained modes', { timeout: 300_000 }, async (t) =
       });
 
       await t.test(`${name}: the quality options come back from a link (made valid)`, async () => {
-        await page.goto(`${base}?view=delaunay&mode=quality&angle=50&area=-1`);
+        await page.goto(`${base}?view=delaunay&mode=quality&angle=50&area=-1&keep=sideways`);
         await settled(page);
         assert.equal(await page.inputValue('#dl-mode'), 'quality');
+        assert.equal(await page.inputValue('#dl-keep'), 'none', 'an unknown keep value is none');
         assert.equal(await page.inputValue('#dl-min-angle'), '34');
         assert.equal(await page.inputValue('#dl-max-area'), '');
         assert.equal(new URL(page.url()).searchParams.get('angle'), '34');

@@ -11,7 +11,7 @@
 //
 // Test hook: window.hullkitConstrained = {mode, source, rings, open, points, triangles, edges,
 // constrainedEdges, inputCount, addedCount, crossingCount, steinerCount, unrefinedCount,
-// polygonEdges, notDelaunay, smallestAngle, belowBound, angleBound, maxArea, largestArea, graph,
+// polygonEdges, notDelaunay, smallestAngle, belowBound, angleBound, maxArea, keepSegments, largestArea, graph,
 // wholeHull, error, run} after each result (or error) shown; non-enumerable `coords`,
 // `triangleList` and `constrainedList` (per half-edge) hold the arrays.
 import { fmtInt, fmtMs } from '../../app/format.js';
@@ -20,7 +20,7 @@ import { showError } from '../../app/panel.js';
 import { SAMPLE_RINGS, smallestAngle, countEdges } from '../../polygons.js';
 import { createConstrainedDrawing } from './draw.js';
 import { createRingEditor } from './rings.js';
-import { MODES, ANGLE_DEFAULT, polygonUi, parseAngle, parseArea, showModeElements, encodeRings, decodeRings } from './panel.js';
+import { MODES, ANGLE_DEFAULT, polygonUi, parseAngle, parseArea, parseKeep, showModeElements, encodeRings, decodeRings } from './panel.js';
 
 // A maximum area that asks for more triangles than this (the drawing's box over the area) is
 // refused before it reaches the worker, and refinement stops with hullkit's message after adding
@@ -105,6 +105,8 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
     const area = parseArea(pui.maxArea.value);
     if (area !== null) opts.maxArea = area;
     if (pui.conforming.checked) opts.conforming = true;
+    const keep = parseKeep(pui.keep.value);
+    if (keep !== 'none') opts.keepSegments = keep;
     return opts;
   }
 
@@ -249,7 +251,7 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
       triangles: count, edges, constrainedEdges, inputCount: msg.inputCount, addedCount: msg.addedCount,
       crossingCount: msg.crossingCount, steinerCount: msg.steinerCount, unrefinedCount: msg.unrefinedCount,
       polygonEdges: msg.polygonEdges, notDelaunay: msg.notDelaunay, smallestAngle: angle.degrees, belowBound: angle.below,
-      angleBound: bound, maxArea, largestArea, graph: msg.graph, wholeHull: msg.wholeHull, error: null,
+      angleBound: bound, maxArea, keepSegments: state.mode === 'quality' ? parseKeep(pui.keep.value) : null, largestArea, graph: msg.graph, wholeHull: msg.wholeHull, error: null,
     }, { coords, triangles, constrained });
     setState('ready');
     scene.requestRender();
@@ -275,8 +277,14 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
       let s = `Smallest angle ${Number.isFinite(angle.degrees) ? degrees(angle.degrees) : '—'} (bound ${bound}°)`;
       if (angle.below) s += `: ${plural(angle.below, 'triangle')} below it`;
       s += `; ${plural(steiner, 'Steiner point')} added by refinement`;
-      if (msg.unrefinedCount) s += `, ${plural(msg.unrefinedCount, 'triangle')} left below the bound at small input angles`;
+      if (msg.unrefinedCount) {
+        s += `, ${plural(msg.unrefinedCount, 'triangle')} left below the bound at small input angles${parseKeep(pui.keep.value) === 'none' ? '' : ' or next to segments kept whole'}`;
+      }
       parts.push(`${s}. Largest triangle area ${Number(largestArea.toPrecision(3))}${maxArea !== null ? ` (bound ${maxArea})` : ''}.`);
+      const keep = parseKeep(pui.keep.value);
+      if (keep !== 'none') {
+        parts.push(`${keep === 'all' ? 'Every segment is' : 'The boundary\'s segments are'} kept whole (no point added on ${keep === 'all' ? 'them' : 'the rings'}): next to them the angle bound is not guaranteed.`);
+      }
     }
     let cdt = `${plural(count, 'triangle')}, ${plural(constrainedEdges, 'constrained edge')}, `;
     cdt += msg.addedCount ? `${plural(msg.addedCount, 'point')} added${crossings ? ` (${fmtInt(crossings)} where constraints cross)` : ''}` : 'no points added';
@@ -439,6 +447,7 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
   pui.minAngle.addEventListener('change', () => compute({ push: true }));
   pui.maxArea.addEventListener('change', () => compute({ push: true }));
   pui.conforming.addEventListener('change', () => compute({ push: true }));
+  pui.keep.addEventListener('change', () => compute({ push: true }));
   ui.layout.addEventListener('change', () => redraw());
 
   /** The drawing again at the panes' new size (edge widths and markers are in pixels). */
@@ -484,6 +493,8 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
       p.angle = angle === ANGLE_DEFAULT ? undefined : angle;
       p.area = parseArea(pui.maxArea.value) ?? undefined;
       p.conforming = pui.conforming.checked ? 1 : undefined;
+      const keep = parseKeep(pui.keep.value);
+      p.keep = keep === 'none' ? undefined : keep;
     }
     if (model.source === 'drawn') Object.assign(p, encodeRings(model));
     return p;
@@ -496,6 +507,7 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
     pui.minAngleValue.textContent = `${angle}°`;
     pui.maxArea.value = String(parseArea(q.get('area')) ?? '');
     pui.conforming.checked = q.get('conforming') === '1';
+    pui.keep.value = parseKeep(q.get('keep'));
     correctUrl({ angle });
     const drawn = decodeRings(q.get('rings'), q.get('open'));
     const before = model;

@@ -13,9 +13,13 @@ export function polygonUi() {
   return {
     mode: $('dl-mode'), closeRing: $('dl-close-ring'), undoVertex: $('dl-undo-vertex'), clearRings: $('dl-clear-rings'),
     sample: $('dl-sample'), minAngle: $('dl-min-angle'), minAngleValue: $('dl-min-angle-value'), maxArea: $('dl-max-area'),
-    conforming: $('dl-conforming'), note: $('dl-cdt-note'), stepper: $('dl-stepper'),
+    conforming: $('dl-conforming'), keep: $('dl-keep'), note: $('dl-cdt-note'), stepper: $('dl-stepper'),
   };
 }
+
+/** Which segments refinement leaves whole (keepSegments): 'none' (the default), 'boundary' or 'all'. */
+export const KEEP_SEGMENTS = ['none', 'boundary', 'all'];
+export const parseKeep = (text) => (KEEP_SEGMENTS.includes(text) ? text : 'none');
 
 /** The minimum angle, whole or half degrees in [0, 34] (20 for anything else). */
 export const parseAngle = (text) => validNumber(text, { min: 0, max: ANGLE_MAX, round: (v) => Math.round(2 * v) / 2, fallback: ANGLE_DEFAULT });
