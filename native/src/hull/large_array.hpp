@@ -1,16 +1,26 @@
-// Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers) on
-// transparent huge pages where the system offers them.
+// Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers, the
+// 3D tetrahedralization's mesh): mapped on their own and given back to the system when freed, with
+// transparent huge pages an option (kHugePages) that is off.
 //
-// Why: a fresh process touches every page of these arrays for the first time, and each first
-// touch of a 4 KiB page is a page fault. Measured on the 2-core benchmark machine (Linux, THP in
-// "madvise" mode): the first hull of 1e6 points on a sphere spent about half its time in page
-// faults (2.3 s; 1.2 s with huge pages). One fault per 2 MiB page instead of 512 removes nearly
-// all of it. Only the memory's placement changes, never a value, so results stay bit-identical.
+// Why mapped: freed arrays below glibc's (rising) mmap threshold stayed in the heap, so that a
+// process hulling 1e6 points on a sphere five times peaked 80 MB above one that did it once.
+//
+// Why no huge pages (kHugePages = false since Dec 2026): a first call touches every page of these
+// arrays for the first time. On an earlier 2-core benchmark machine (Linux, THP in "madvise"
+// mode) the first hull of 1e6 points on a sphere spent about half its time in page faults (2.3 s;
+// 1.2 s with MADV_HUGEPAGE). On the benchmark machines since (virtual machines whose free 2 MiB
+// blocks the host takes back), a fresh huge page costs far more to touch than a recycled 4 KiB
+// one, and every first call got slower with huge pages: 1e6 uniform points tetrahedralized on one
+// thread 3.55-3.67 s against 3.11-3.18 s without, on two threads 2.36-2.40 s against 2.08-2.29 s,
+// the whole `hullkit delaunay3` command 2.9 s against 2.5 s, the hull of 1e6 points on a sphere
+// 0.68-0.72 s against 0.62-0.66 s (warm calls about even). On more than one thread the 3D mesh's
+// rows are still mapped in advance on the threads (Prefault), as they were with huge pages.
+// Only the memory's placement changes, never a value, so results stay bit-identical either way.
 //
 // How: arrays of at least kLargeArray bytes are mapped on their own (mmap), aligned to 2 MiB,
-// rounded up to whole 2 MiB pages, marked MADV_HUGEPAGE and unmapped when freed; smaller ones
-// come from operator new as usual. Elsewhere (WebAssembly, other systems, sanitizer builds) every
-// array comes from operator new.
+// rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE with kHugePages) and unmapped when freed;
+// smaller ones come from operator new as usual. Elsewhere (WebAssembly, other systems, sanitizer
+// builds) every array comes from operator new.
 //
 // A LargeArray's resize(n) and LargeArray(n) leave the new elements unwritten (the allocator
 // default-initializes them): each such array is written in full by its owner before any read,
@@ -46,9 +56,12 @@
 
 namespace hullkit::detail {
 
-/// Arrays this large (bytes) or larger go on huge pages: up to 2 MiB of the last page may be
-/// touched without being used, at most a third of such an array.
+/// Arrays this large (bytes) or larger are mapped on their own (on huge pages with kHugePages: up
+/// to 2 MiB of the last page may then be touched without being used, at most a third of such an
+/// array).
 inline constexpr std::size_t kLargeArray = std::size_t{4} << 20;
+/// Whether large arrays are advised onto transparent huge pages (see the top of this file).
+inline constexpr bool kHugePages = false;
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
 /// The bytes a large array of `bytes` takes: whole 2 MiB pages.
@@ -70,7 +83,7 @@ inline void* allocate_large(std::size_t bytes) {
     const std::uintptr_t tail = aligned + size, end = start + size + kHugePage;
     if (end > tail) munmap(reinterpret_cast<void*>(tail), end - tail);
     void* memory = reinterpret_cast<void*>(aligned);
-    madvise(memory, size, MADV_HUGEPAGE);  // a hint: without it the array works all the same
+    if (kHugePages) madvise(memory, size, MADV_HUGEPAGE);  // a hint: without it the array works all the same
     return memory;
 #else
     return ::operator new(bytes);
@@ -127,12 +140,12 @@ struct LargeArrayAllocator {
     bool operator!=(const LargeArrayAllocator<U>&) const noexcept { return false; }
 };
 
-/// Advises huge pages for the whole 2 MiB pages of [memory, memory + bytes) when that is large:
-/// for arrays that keep std::allocator (those a caller gets back), reserved and then filled.
-/// Pages already touched stay as they are.
+/// With kHugePages, advises huge pages for the whole 2 MiB pages of [memory, memory + bytes) when
+/// that is large: for arrays that keep std::allocator (those a caller gets back), reserved and
+/// then filled. Pages already touched stay as they are. Without, nothing.
 inline void advise_huge_pages(const void* memory, std::size_t bytes) {
 #if HULLKIT_HUGE_PAGES
-    if (bytes < kLargeArray) return;
+    if (!kHugePages || bytes < kLargeArray) return;
     const auto first = reinterpret_cast<std::uintptr_t>(memory);
     const std::uintptr_t begin = (first + kHugePage - 1) / kHugePage * kHugePage;
     const std::uintptr_t end = (first + bytes) / kHugePage * kHugePage;
