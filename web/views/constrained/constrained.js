@@ -274,14 +274,14 @@ export function createConstrainedMode({ ui, state, scene, drawing, worker, setSt
     const crossings = msg.crossingCount ?? 0;
     const steiner = msg.steinerCount ?? 0;
     if (state.mode === 'quality') {
+      const keep = parseKeep(pui.keep.value);
       let s = `Smallest angle ${Number.isFinite(angle.degrees) ? degrees(angle.degrees) : '—'} (bound ${bound}°)`;
       if (angle.below) s += `: ${plural(angle.below, 'triangle')} below it`;
       s += `; ${plural(steiner, 'Steiner point')} added by refinement`;
       if (msg.unrefinedCount) {
-        s += `, ${plural(msg.unrefinedCount, 'triangle')} left below the bound at small input angles${parseKeep(pui.keep.value) === 'none' ? '' : ' or next to segments kept whole'}`;
+        s += `, ${plural(msg.unrefinedCount, 'triangle')} left below the bound at small input angles${keep === 'none' ? '' : ' or next to segments kept whole'}`;
       }
       parts.push(`${s}. Largest triangle area ${Number(largestArea.toPrecision(3))}${maxArea !== null ? ` (bound ${maxArea})` : ''}.`);
-      const keep = parseKeep(pui.keep.value);
       if (keep !== 'none') {
         parts.push(`${keep === 'all' ? 'Every segment is' : 'The boundary\'s segments are'} kept whole (no point added on ${keep === 'all' ? 'them' : 'the rings'}): next to them the angle bound is not guaranteed.`);
       }
