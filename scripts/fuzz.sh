@@ -21,6 +21,9 @@
 #   fuzz_delaunay3 delaunay3() on bytes read as doubles or small integers, checked by
 #                  verify_delaunay3() (ties included), neighbours and hull faces, the reversed input,
 #                  and point location and nearest points at the input points
+#   fuzz_hull_nd   hull_nd, delaunay_nd and locate_nd in 2 to 6 dimensions on bytes read as doubles
+#                  or small integers: every facet checked against every point by orient_nd,
+#                  neighbours, oriented simplices, hull faces that support the hull, point location
 # A failed check aborts. Each target is built in build/fuzz with -fsanitize=fuzzer,address,undefined
 # and linked with every library source (native/src/{exact,hull,io,delaunay,delaunay3,route}/; objects in
 # build/fuzz/obj named FOLDER_FILE.o, rebuilt when the source or any

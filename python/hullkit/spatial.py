@@ -45,6 +45,20 @@ Qhull leaves out, are listed. A repeated point shares the region of the first po
 collinear or coplanar points give the diagram without vertices (see Voronoi).
 ``tsearch(tri, xi)`` is ``tri.find_simplex(xi)``.
 
+4 to 10 dimensions (ConvexHull; Delaunay and Voronoi up to 9), on the core's exact
+``hull_nd`` and ``delaunay_nd`` (quickhull on simplicial facets; Delaunay as the lower facets of
+the points lifted to the paraboloid, a point at infinity above them so that points all on one
+sphere triangulate too): ``simplices``, ``neighbors``, ``equations``, ``vertices``, ``volume``,
+``area`` for the hull (facets triangulated, as Qhull's Qt); ``simplices`` (positively oriented),
+``neighbors``, ``convex_hull``, ``find_simplex`` (exact: the lowest-indexed simplex holding the
+point), ``transform``, ``coplanar`` (repeated points), ``furthest_site`` for Delaunay; Voronoi's
+``vertices`` (circumcentres), ``ridge_points``, ``ridge_vertices``, ``regions`` and ``volumes``
+(bounded cells: the hull of their vertices). Points in a flat raise HullkitError saying how many
+dimensions they span (Qhull's QH6154); a Voronoi diagram of exactly cospherical points in these
+dimensions (where simplices would share vertices) raises HullkitError, and so does ConvexHull's
+QG, Qc or Qi. Unbounded ridges around a hull edge with one or two simplices, which Qhull leaves
+out, are listed.
+
 HalfspaceIntersection (2D, 3D): the intersection of halfspaces A x + b <= 0 through the exact
 hull of their dual points, scipy's attributes; ``chebyshev_center`` finds an interior point.
 
@@ -55,7 +69,8 @@ Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact;
 by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
 ``coplanar``), Fv by Voronoi; ConvexHull takes QGn and QG-n (``good``), Qc (``coplanar``: the
 points exactly on the boundary that are not vertices) and Qi (the points inside). Any other option raises
-HullkitError naming it; so do more than 3 dimensions.
+HullkitError naming it; so do more than 10 dimensions (9 for Delaunay and Voronoi, 3 for
+HalfspaceIntersection).
 ``furthest_site=True`` (Delaunay, Voronoi): the furthest-site triangulation of the hull's
 extreme points (every circumcircle or circumsphere holds every point) and its diagram, exactly: in
 2D by Lawson's flips with the exact in-circle test, in 3D by the core's tetrahedralization with
@@ -144,16 +159,37 @@ def _float64(values, what):
         raise HullkitError(f"{what} must be numbers convertible to float64: {error}") from None
 
 
+# The most dimensions each class takes: hulls up to 10 (the core's hull_nd), triangulations and
+# diagrams up to 9 (their lifted hulls have one more).
+_MAX_DIMENSIONS = {"ConvexHull": 10, "Delaunay": 9, "Voronoi": 9}
+
+
 def _checked_points(points, cls, many=None, what="points"):
-    """The points of a ``cls`` (ConvexHull, Delaunay, Voronoi) as a C-ordered float64 (n, 2) or
-    (n, 3) array, or HullkitError (``many``: what the message calls the object in more dimensions,
-    the class's name by default)."""
+    """The points of a ``cls`` (ConvexHull, Delaunay, Voronoi) as a C-ordered float64 (n, k)
+    array, 2 <= k <= _MAX_DIMENSIONS[cls], or HullkitError (``many``: what the message calls the
+    object in more dimensions, the class's name by default)."""
     array = _float64(points, what)
-    if array.ndim != 2 or array.shape[1] not in (2, 3):
-        if array.ndim == 2 and array.shape[1] > 3:
-            _not_supported(f"{many or cls} in {array.shape[1]} dimensions", cls)
-        raise HullkitError(f"{what} must have shape (n, 2) or (n, 3), got {array.shape}")
+    most = _MAX_DIMENSIONS[cls]
+    if array.ndim != 2 or not 2 <= array.shape[1] <= most:
+        if array.ndim == 2 and array.shape[1] > most:
+            _not_supported(f"{many or cls} in {array.shape[1]} dimensions (at most {most})", cls)
+        raise HullkitError(f"{what} must have shape (n, k) with 2 <= k <= {most}, got {array.shape}")
     return array
+
+
+def _nd_facet_planes(points, facets):
+    """Unit normals and offsets [n, c] of hull_nd's facets (m, k): outward (hull_nd's corners are
+    ordered so that det[[c_0, 1], ..., [c_k-1, 1], [q, 1]] > 0 beyond; that determinant is
+    (-1)^k n . (q - c_0) for the cofactor normal n of the edges c_i - c_0)."""
+    k = points.shape[1]
+    corners = points[facets]
+    first = corners[:, 0]
+    edges = corners[:, 1:] - first[:, None]  # (m, k - 1, k)
+    normal = _np.stack([-((-1) ** j) * _np.linalg.det(_np.delete(edges, j, axis=2)) for j in range(k)], axis=1)
+    with _np.errstate(all="ignore"):
+        normal /= _np.linalg.norm(normal, axis=1)[:, None]
+    offset = -_np.einsum("mi,mi->m", normal, first)
+    return _np.concatenate([normal, offset[:, None]], axis=1) if len(facets) else _np.zeros((0, k + 1))
 
 
 class _Incremental:
@@ -183,7 +219,7 @@ class _Incremental:
 
 
 class ConvexHull(_Incremental):
-    """The convex hull of points in 2 or 3 dimensions (see the module's documentation).
+    """The convex hull of points in 2 to 10 dimensions (see the module's documentation).
 
     Attributes (scipy's): points, vertices, simplices, neighbors, equations, coplanar (with the
     option Qc: the points exactly on the boundary that are not vertices, each with a facet whose
@@ -231,7 +267,11 @@ class ConvexHull(_Incremental):
                 raise HullkitError(f"QG{'' if visible else '-'}{seen_from}: there is no point {seen_from} "
                                    f"({self.npoints} points)")
             kept = _np.delete(array, seen_from, axis=0)
-        if self.ndim == 3:
+        if self.ndim > 3 and (self._good_option is not None or self._keep_coplanar or self._keep_interior):
+            _not_supported(f"the options QG, Qc and Qi in {self.ndim} dimensions")
+        if self.ndim > 3:
+            self._from_nd(kept)
+        elif self.ndim == 3:
             self._from_3d(hull(as_points(kept, 3)), kept)
         else:
             self._from_2d(kept)
@@ -278,6 +318,22 @@ class ConvexHull(_Incremental):
         distance = _np.linalg.norm(self.points[corners] - self.points[points][:, None, :], axis=2)
         nearest = corners[_np.arange(len(points)), distance.argmin(axis=1)]
         return _np.stack([points, facet, nearest], axis=1).astype(_np.int32)
+
+    # -- 4D and up -----------------------------------------------------------------------------
+    def _from_nd(self, points):
+        """The core's exact hull in k dimensions (hullkit::hull_nd): simplicial facets, each with its
+        neighbours (across from each corner); vertices ascending; volume and area from the facets."""
+        with _translated():
+            self.simplices, self.neighbors, self.vertices = _core.hull_nd(points)
+        self.dimension = k = self.ndim
+        self.equations = _nd_facet_planes(points, self.simplices)
+        corners = points[self.simplices]
+        inside = points[self.vertices].mean(axis=0)
+        factorial_k = float(_np.prod(_np.arange(1, k + 1)))
+        self.volume = float(_np.abs(_np.linalg.det(corners - inside)).sum() / factorial_k)
+        edges = corners[:, 1:] - corners[:, :1]
+        gram = _np.einsum("mik,mjk->mij", edges, edges)
+        self.area = float(_np.sqrt(_np.clip(_np.linalg.det(gram), 0, None)).sum() * k / factorial_k)
 
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, h, xyz):
@@ -332,8 +388,8 @@ class ConvexHull(_Incremental):
 
 
 class Delaunay(_Incremental):
-    """The Delaunay triangulation of points in 2D or tetrahedralization in 3D, exact (see the
-    module's documentation).
+    """The Delaunay triangulation of points in 2D, tetrahedralization in 3D or triangulation in 4 to 9
+    dimensions, exact (see the module's documentation).
 
     Attributes (scipy's): points, simplices, neighbors, equations, paraboloid_scale,
     paraboloid_shift, convex_hull, vertex_neighbor_vertices, vertex_to_simplex, transform,
@@ -380,7 +436,9 @@ class Delaunay(_Incremental):
         self.npoints, self.ndim = array.shape
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self._equations = None
-        if self.ndim == 3:
+        if self.ndim > 3:
+            self._from_nd(array)
+        elif self.ndim == 3:
             self._from_3d(array)
         else:
             self._from_2d(array)
@@ -473,6 +531,21 @@ class Delaunay(_Incremental):
         self.convex_hull = _np.stack([corners, _np.roll(corners, -1)], axis=1).astype(_np.int32)
         self._chain = self.convex_hull
 
+    # -- 4D and up -----------------------------------------------------------------------------
+    def _from_nd(self, points):
+        """The core's exact triangulation in k dimensions (hullkit::delaunay_nd: the lower, or with
+        furthest_site the upper, facets of the lifted hull); the hull's faces are the simplices'
+        faces without a neighbour."""
+        with _translated():
+            self._triangulation_nd = t = _core.TriangulationNd(points, self._furthest)
+        self.dimension = self.ndim
+        self._representative, self._duplicate_count = t.representative, t.duplicate_count
+        self.simplices, self.neighbors = t.simplices, t.neighbors
+        simplex, corner = _np.nonzero(self.neighbors == -1)
+        keep = _np.arange(self.ndim + 1)[None, :] != corner[:, None]
+        self.convex_hull = self.simplices[simplex][keep].reshape(-1, self.ndim).astype(_np.int32)
+        self._chain = self.convex_hull
+
     # -- 3D ------------------------------------------------------------------------------------
     def _from_3d(self, xyz):
         # furthest_site=True: the core's furthest-site tetrahedralization (its corners the hull's
@@ -505,6 +578,9 @@ class Delaunay(_Incremental):
         if array.shape[-1:] != (dims,):
             raise HullkitError(f"xi must have shape (..., {dims}), got {array.shape}")
         flat = as_points(array.reshape(-1, dims), dims, "xi")
+        if dims > 3:
+            with _translated():
+                return self._triangulation_nd.locate(flat).reshape(array.shape[:-1])
         if self._furthest and dims == 2:
             return self._furthest_find(flat).reshape(array.shape[:-1])
         if dims == 3:
@@ -641,7 +717,7 @@ def _offsets(sizes):
 
 
 class Voronoi(_Incremental):
-    """The Voronoi diagram of points in 2D or 3D, with scipy.spatial.Voronoi's attributes, on
+    """The Voronoi diagram of points in 2 to 9 dimensions, with scipy.spatial.Voronoi's attributes, on
     hullkit's exact Delaunay (which vertices, ridges and regions exist is decided exactly; the
     coordinates are rounded).
 
@@ -719,7 +795,9 @@ class Voronoi(_Incremental):
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self.furthest_site = self._furthest
         self._ridge_dict = self._ridge_vertices = self._regions = None
-        if self._furthest and self.ndim == 2:
+        if self.ndim > 3:
+            parts = self._from_nd(array)
+        elif self._furthest and self.ndim == 2:
             parts = self._furthest_2d(array)
         else:
             parts = self._from_3d(array) if self.ndim == 3 else self._from_2d(array)
@@ -866,6 +944,69 @@ class Voronoi(_Incremental):
         if d.dimension == 2:
             return self._coplanar_3d(xyz, d)
         return self._along_line(d.representative, d.vertices, (-1,))
+
+    def _from_nd(self, points):
+        """k dimensions from the core's triangulation (hullkit::delaunay_nd): a vertex per simplex
+        (its circumcentre), a ridge per Delaunay edge (its vertices: the simplices around the edge,
+        after a -1 when the edge lies on the hull), each point's cell the simplices around it
+        (after a -1 when the point is on the hull). Needs points in general position: exactly
+        cospherical ones (a grid) would share vertices and lose ridges, and raise HullkitError."""
+        if self._furthest:
+            _not_supported(f"furthest_site=True in {self.ndim} dimensions", "Voronoi")
+        k = self.ndim
+        with _translated():
+            t = _core.TriangulationNd(points)
+        group = t.group
+        if (group != _np.arange(len(group))).any():
+            s = int(_np.flatnonzero(group != _np.arange(len(group)))[0])
+            _not_supported(f"a diagram of cospherical points in {k} dimensions (the corners of simplices {int(group[s])} "
+                           f"and {s} lie on one sphere)", "Voronoi")
+        self.dimension = k
+        simplices = t.simplices.astype(_np.int64)
+        m, n = len(simplices), len(points)
+        corners = points[simplices]
+        first = corners[:, 0]
+        edges = corners[:, 1:] - first[:, None]
+        rhs = 0.5 * _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None])
+        self.vertices = _np.linalg.solve(edges, rhs[..., None])[..., 0] if m else _np.zeros((0, k))
+        neighbors = t.neighbors
+        on_hull = _np.zeros(n, dtype=bool)
+        simplex, corner = _np.nonzero(neighbors == -1)
+        keep = _np.arange(k + 1)[None, :] != corner[:, None]
+        hull_faces = simplices[simplex][keep].reshape(-1, k)
+        on_hull[hull_faces.ravel()] = True
+        # Cells: (point, simplex) pairs sorted, -1 first for a point on the hull.
+        size = m + 1
+        pairs = _np.concatenate([simplices.ravel() * size + _np.repeat(_np.arange(m), k + 1) + 1,
+                                 _np.flatnonzero(on_hull) * size])
+        pairs = _np.unique(pairs)
+        cells = pairs % size - 1
+        offsets = _offsets(_np.bincount(pairs // size, minlength=n))
+        # Ridges: each Delaunay edge with the simplices around it, -1 first when on the hull.
+        count = _np.int64(n)
+        corner_pairs = [(i, j) for i in range(k + 1) for j in range(i + 1, k + 1)]
+        lower = _np.concatenate([_np.minimum(simplices[:, i], simplices[:, j]) for i, j in corner_pairs])
+        higher = _np.concatenate([_np.maximum(simplices[:, i], simplices[:, j]) for i, j in corner_pairs])
+        owner = _np.tile(_np.arange(m), len(corner_pairs))
+        key = lower * count + higher
+        face_pairs = [(i, j) for i in range(k) for j in range(i + 1, k)]
+        hull_keys = _np.unique(_np.concatenate(
+            [_np.minimum(hull_faces[:, i], hull_faces[:, j]) * count + _np.maximum(hull_faces[:, i], hull_faces[:, j])
+             for i, j in face_pairs])) if len(hull_faces) else _np.zeros(0, dtype=_np.int64)
+        edge_keys, inverse = _np.unique(key, return_inverse=True)
+        unbounded = _np.isin(edge_keys, hull_keys)
+        entries = _np.concatenate([inverse * size + owner + 1, _np.flatnonzero(unbounded) * size])
+        entries = _np.unique(entries)
+        flat = entries % size - 1
+        ridge_offsets = _offsets(_np.bincount(entries // size, minlength=len(edge_keys)))
+        self._set_ridges(_np.stack([edge_keys // count, edge_keys % count], axis=1), flat, ridge_offsets)
+        # Volumes: bounded cells by the exact hull of their vertices; inf when unbounded.
+        volumes = _np.full(n, _np.inf)
+        for p in range(n):
+            cell = cells[offsets[p]: offsets[p + 1]]
+            if len(cell) and cell[0] >= 0:
+                volumes[p] = ConvexHull(self.vertices[cell]).volume
+        return (t.representative, cells, offsets, volumes)
 
     def _faces_3d(self, v, n):
         """Ridges from the core's faces; each point's cell vertices."""

@@ -27,6 +27,7 @@
 #include "hullkit/delaunay.hpp"
 #include "hullkit/delaunay3.hpp"
 #include "hullkit/hull.hpp"
+#include "hullkit/hull_nd.hpp"
 #include "hullkit/mesh_read.hpp"
 #include "hullkit/point_reader.hpp"
 #include "hullkit/predicates.hpp"
@@ -1412,6 +1413,68 @@ std::string json_rows(const py::array_t<T, py::array::c_style>& array) {
     return out;
 }
 
+/// (n, D) float64 points' dimension D (any D), or ValueError.
+int columns_of(const Points& points, const char* what) {
+    if (points.ndim() != 2) throw std::invalid_argument(std::string(what) + " must be a 2-D array");
+    return static_cast<int>(points.shape(1));
+}
+
+/// hullkit.hull_nd: (facets (m, D) int32, neighbors (m, D) int32, vertices int32).
+py::tuple hull_nd(const Points& points) {
+    const int dims = columns_of(points, "points");
+    const std::size_t n = static_cast<std::size_t>(points.shape(0));
+    hullkit::HullNd h;
+    {
+        py::gil_scoped_release unlocked;
+        h = hullkit::hull_nd(points.data(), n, dims);
+    }
+    if (!h.ok()) throw CoreError(h.error, h.error_point);
+    const auto m = static_cast<py::ssize_t>(h.facet_count());
+    std::vector<std::int32_t> facets(h.facets.begin(), h.facets.end()), vertices(h.vertices.begin(), h.vertices.end());
+    return py::make_tuple(owned(std::move(facets), {m, dims}), owned(std::move(h.neighbors), {m, dims}),
+                          owned(std::move(vertices)));
+}
+
+/// The Delaunay triangulation in d dimensions, kept for point location.
+class TriangulationNd {
+public:
+    TriangulationNd(const Points& points, bool furthest_site)
+        : points_(points.data(), points.data() + points.size()) {
+        const int dims = columns_of(points, "points");
+        const std::size_t n = static_cast<std::size_t>(points.shape(0));
+        {
+            py::gil_scoped_release unlocked;
+            d_ = hullkit::delaunay_nd(points_.data(), n, dims, furthest_site);
+        }
+        if (!d_.ok()) throw CoreError(d_.error, d_.error_point);
+    }
+    py::array_t<std::int32_t> simplices() const {
+        std::vector<std::int32_t> out(d_.simplices.begin(), d_.simplices.end());
+        return owned(std::move(out), {static_cast<py::ssize_t>(d_.simplex_count()), d_.dimension + 1});
+    }
+    py::array_t<std::int32_t> neighbors() const {
+        std::vector<std::int32_t> out(d_.neighbors);
+        return owned(std::move(out), {static_cast<py::ssize_t>(d_.simplex_count()), d_.dimension + 1});
+    }
+    py::array_t<std::int32_t> group() const { return owned(std::vector<std::int32_t>(d_.group)); }
+    py::array_t<std::uint32_t> representative() const { return owned(std::vector<std::uint32_t>(d_.representative)); }
+    std::size_t duplicate_count() const { return d_.duplicate_count; }
+    py::array_t<std::int32_t> locate(const Points& queries) const {
+        if (columns_of(queries, "xi") != d_.dimension) throw std::invalid_argument("xi has the wrong dimension");
+        const std::size_t q = static_cast<std::size_t>(queries.shape(0));
+        std::vector<std::int32_t> found;
+        {
+            py::gil_scoped_release unlocked;
+            found = hullkit::locate_nd(points_.data(), d_, queries.data(), q);
+        }
+        return owned(std::move(found));
+    }
+
+private:
+    std::vector<double> points_;
+    hullkit::DelaunayNd d_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -1428,6 +1491,20 @@ PYBIND11_MODULE(_core, m) {
     m.def("hull", &hull, py::arg("points"), py::arg("algorithm") = "quickhull", py::arg("merge_coplanar") = false,
           py::arg("threads") = 0u);
     m.def("verify_triangles", &verify_triangles);
+    m.def("hull_nd", &hull_nd);
+    m.def("orient_nd", [](const Points& rows) {
+        const int dims = columns_of(rows, "rows");
+        if (rows.shape(0) != dims + 1) throw std::invalid_argument("orient_nd needs D + 1 rows of D coordinates");
+        return hullkit::orient_nd(rows.data(), dims);
+    });
+    py::class_<TriangulationNd>(m, "TriangulationNd")
+        .def(py::init<const Points&, bool>(), py::arg("points"), py::arg("furthest_site") = false)
+        .def_property_readonly("simplices", &TriangulationNd::simplices)
+        .def_property_readonly("neighbors", &TriangulationNd::neighbors)
+        .def_property_readonly("group", &TriangulationNd::group)
+        .def_property_readonly("representative", &TriangulationNd::representative)
+        .def_property_readonly("duplicate_count", &TriangulationNd::duplicate_count)
+        .def("locate", &TriangulationNd::locate);
     m.def("surface_extras", &surface_extras);
     m.def("facet_sides", &facet_sides);
     m.def("facet_holding", &facet_holding);

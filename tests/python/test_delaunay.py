@@ -105,7 +105,7 @@ def test_bad_input_and_unsupported_options():
         Delaunay(points)
     assert caught.value.point == 3
     with pytest.raises(hullkit.HullkitError, match="not supported"):
-        Delaunay(np.zeros((5, 4)))  # 3D is supported (tests/python/test_spatial.py), 4D not
+        Delaunay(np.zeros((12, 10)))  # 2 to 9 dimensions (tests/python/test_spatial_nd.py), not 10
     for option, message in (({"qhull_options": "Qbb Qu"}, "Qhull option 'Qu' .* not supported"),
                             ({"qhull_options": "QG0"}, "Qhull option 'QG0' .* not supported by hullkit.spatial.Delaunay")):
         with pytest.raises(hullkit.HullkitError, match=message):

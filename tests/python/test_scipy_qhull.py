@@ -13,17 +13,13 @@ REPLACEMENTS = {
     "import scipy.spatial._qhull as qhull": "import hullkit.spatial as qhull",
     "from scipy.spatial import Voronoi": "from hullkit.spatial import Voronoi",
 }
-HIGHER = [f"random-{k}d" for k in range(4, 9)]  # DATASETS of more than 3 dimensions
 CHUNKS = (1, 4, 16)
 V, D, C, U, H = (f"test_qhull.py::{name}::" for name in
                  ("TestVoronoi", "TestDelaunay", "TestConvexHull", "TestUtilities", "Test_HalfspaceIntersection"))
 EXPECTED_FAILURES = {
-    # More than 3 dimensions: not supported (hullkit.spatial is 2D and 3D).
-    *(f"{V}test_ridges[{name}]" for name in HIGHER),
-    *(f"{C}test_hull_consistency_tri[{name}]" for name in HIGHER),
-    *(f"{cls}test_incremental[{name}-chunk-{k}]" for cls in (C, D) for name in HIGHER for k in CHUNKS),
-    f"{D}test_nd_simplex",  # 2 to 7 dimensions in one test: 2 and 3 pass, 4 raises
-    f"{U}test_more_barycentric_transforms",  # grids in 2 to 5 dimensions: 2 and 3 pass, 4 raises
+    # HalfspaceIntersection is 2D and 3D (ConvexHull, Delaunay and Voronoi take 4 to 8 dimensions
+    # and more: their tests of random-4d ... random-8d, test_nd_simplex and the grids of
+    # test_more_barycentric_transforms pass).
     f"{H}test_self_dual_polytope_intersection",  # a 4D polytope
     # The order of Qhull's output, which the tests compare item by item: a square's four cocircular
     # corners get the other diagonal of the two that are both Delaunay (test_find_simplex,
@@ -68,6 +64,6 @@ def test_scipy_test_qhull_passes_with_hullkit(tmp_path):
         f"test__plotutils.py::TestPlotting::test_{what}" for what in ("delaunay", "voronoi", "convex_hull")}
     assert not any("Test_Qhull" in name for name in outcomes)
     assert_failures_are(outcomes, EXPECTED_FAILURES)
-    # 109 of test_qhull.py's 177 pass (December 2026; 43 of the 68 failures are of more than 3
+    # 151 of test_qhull.py's 177 pass (6 December 2026; 109 before the classes took more than 3
     # dimensions), and the 3 of test__plotutils.py.
     assert sum(outcome == "passed" for outcome in outcomes.values()) == len(outcomes) - len(EXPECTED_FAILURES)

@@ -147,7 +147,7 @@ def test_bad_input_raises_hullkit_error_naming_the_point():
     with pytest.raises(hullkit.HullkitError, match=r"convertible to float64"):
         ConvexHull([["a", "b", "c"]])
     with pytest.raises(hullkit.HullkitError, match="not supported"):
-        ConvexHull(np.zeros((10, 4)))
+        ConvexHull(np.zeros((12, 11)))  # 2 to 10 dimensions
     for options in ("Qu", "Qt QR0", "QG", "QGx", "Fv"):
         with pytest.raises(hullkit.HullkitError, match="Qhull option .* not supported by hullkit.spatial.ConvexHull"):
             ConvexHull(np.random.default_rng(3).random((10, 3)), qhull_options=options)
