@@ -59,7 +59,8 @@ dimensions (where simplices would share vertices) raises HullkitError, and so do
 QG, Qc or Qi. Unbounded ridges around a hull edge with one or two simplices, which Qhull leaves
 out, are listed.
 
-HalfspaceIntersection (2D, 3D): the intersection of halfspaces A x + b <= 0 through the exact
+HalfspaceIntersection (2 to 10 dimensions; above 3 the dual hull's simplicial facets merged where
+exactly coplanar, each corner solved from the planes of one of them): the intersection of halfspaces A x + b <= 0 through the exact
 hull of their dual points, scipy's attributes; ``chebyshev_center`` finds an interior point.
 
 Incremental mode (``incremental=True``, ``add_points``, ``add_halfspaces``, ``close``) builds
@@ -69,8 +70,7 @@ Qz, Qx, Q11, Q12, Qs, Qv, Pp, Po) change nothing, since every decision is exact;
 by Delaunay, Voronoi and HalfspaceIntersection (Delaunay always lists its repeated points in
 ``coplanar``), Fv by Voronoi; ConvexHull takes QGn and QG-n (``good``), Qc (``coplanar``: the
 points exactly on the boundary that are not vertices) and Qi (the points inside). Any other option raises
-HullkitError naming it; so do more than 10 dimensions (9 for Delaunay and Voronoi, 3 for
-HalfspaceIntersection).
+HullkitError naming it; so do more than 10 dimensions (9 for Delaunay and Voronoi).
 ``furthest_site=True`` (Delaunay, Voronoi): the furthest-site triangulation of the hull's
 extreme points (every circumcircle or circumsphere holds every point) and its diagram, exactly: in
 2D by Lawson's flips with the exact in-circle test, in 3D by the core's tetrahedralization with
@@ -324,7 +324,7 @@ class ConvexHull(_Incremental):
         """The core's exact hull in k dimensions (hullkit::hull_nd): simplicial facets, each with its
         neighbours (across from each corner); vertices ascending; volume and area from the facets."""
         with _translated():
-            self.simplices, self.neighbors, self.vertices = _core.hull_nd(points)
+            self.simplices, self.neighbors, self.vertices, self._groups = _core.hull_nd(points)
         self.dimension = k = self.ndim
         self.equations = _nd_facet_planes(points, self.simplices)
         corners = points[self.simplices]
@@ -1114,11 +1114,11 @@ class Voronoi(_Incremental):
 
 def _checked_halfspaces(halfspaces, what="halfspaces"):
     array = _float64(halfspaces, what)
-    if array.ndim != 2 or array.shape[1] not in (3, 4):
-        if array.ndim == 2 and array.shape[1] > 4:
-            _not_supported(f"halfspaces in {array.shape[1] - 1} dimensions", "HalfspaceIntersection")
-        raise HullkitError(f"{what} must have shape (n, 3) or (n, 4) ([A; b] for A x + b <= 0 in 2D or 3D), "
-                           f"got {array.shape}")
+    if array.ndim != 2 or not 3 <= array.shape[1] <= 11:
+        if array.ndim == 2 and array.shape[1] > 11:
+            _not_supported(f"halfspaces in {array.shape[1] - 1} dimensions (at most 10)", "HalfspaceIntersection")
+        raise HullkitError(f"{what} must have shape (n, k + 1) with 2 <= k <= 10 ([A; b] for A x + b <= 0 in k "
+                           f"dimensions), got {array.shape}")
     bad = _np.flatnonzero(~_np.isfinite(array).all(axis=1))
     if len(bad):
         raise HullkitError(f"halfspace {bad[0]} has a non-finite coefficient: {array[bad[0]].tolist()}", int(bad[0]))
@@ -1147,7 +1147,7 @@ def _exact_signs(a, b, x):
 
 
 class HalfspaceIntersection:
-    """The intersection of halfspaces A x + b <= 0 in 2D or 3D (scipy.spatial's class): the
+    """The intersection of halfspaces A x + b <= 0 in 2 to 10 dimensions (scipy.spatial's class): the
     polar dual of the halfspaces about ``interior_point`` is hulled exactly, and each facet of that
     hull is one corner of the intersection.
 
@@ -1230,6 +1230,9 @@ class HalfspaceIntersection:
                                f"(A x + b = {value[i]!r} there): choose one further inside", i)
         if self.nineq <= k:
             raise HullkitError(f"{self.nineq} halfspaces cannot bound a region in {k}D: the intersection is unbounded")
+        if k > 3:
+            self._build_nd(a, b)
+            return
         if k == 2:
             dual = ConvexHull(self.dual_points)
             self.dual_vertices, self.dual_volume, self.dual_area = dual.vertices, dual.volume, dual.area
@@ -1258,6 +1261,42 @@ class HalfspaceIntersection:
             raise HullkitError("the intersection of the halfspaces is unbounded: their normals do not surround the "
                                "interior point (its dual hull does not contain it strictly)")
         self.intersections = self._corners(a, b, flat, offsets)
+
+    def _build_nd(self, a, b):
+        """4 to 10 dimensions: the dual points' exact hull (hull_nd), its simplicial facets merged
+        into the flat pieces of its boundary (exactly coplanar neighbours), one corner each."""
+        k = self.ndim
+        try:
+            dual = ConvexHull(self.dual_points)
+        except HullkitError as error:
+            if "flat" not in str(error):
+                raise
+            raise HullkitError("the intersection of the halfspaces is unbounded: their normals span fewer than "
+                               f"{k} dimensions ({error})") from None
+        self.dual_vertices, self.dual_volume, self.dual_area = dual.vertices, dual.volume, dual.area
+        # The origin (the interior point) strictly inside the dual hull, exactly: against every facet.
+        origin = _np.zeros((1, k))
+        for facet in dual.simplices:
+            with _translated():
+                side = _core.orient_nd(_np.concatenate([self.dual_points[facet], origin]))
+            if side >= 0:
+                raise HullkitError("the intersection of the halfspaces is unbounded: their normals do not surround "
+                                   "the interior point (its dual hull does not contain it strictly)")
+        groups = dual._groups
+        pieces = _np.unique(groups)
+        sizes, flat = [], []
+        for piece in pieces.tolist():
+            corners = _np.unique(dual.simplices[groups == piece])
+            sizes.append(len(corners))
+            flat.append(corners)
+        flat = _np.concatenate(flat).astype(_np.int64)
+        offsets = _offsets(sizes)
+        self.dual_facets = _grouped(flat, offsets)
+        self.dual_equations = dual.equations[pieces]
+        # Each corner from k of its planes: those of the piece's first simplicial facet, whose dual
+        # points are affinely independent off the origin, so their normals are independent.
+        rows = dual.simplices[pieces]
+        self.intersections = _np.linalg.solve(a[rows], -b[rows][:, :, None])[:, :, 0] + 0.0
 
     def _corners(self, a, b, flat, offsets):
         """Each facet's corner: where its halfspaces' planes meet, solved from the halfspaces

@@ -1419,7 +1419,8 @@ int columns_of(const Points& points, const char* what) {
     return static_cast<int>(points.shape(1));
 }
 
-/// hullkit.hull_nd: (facets (m, D) int32, neighbors (m, D) int32, vertices int32).
+/// hullkit.hull_nd: (facets (m, D) int32, neighbors (m, D) int32, vertices int32, group int32: each
+/// facet's flat piece of the boundary, by its lowest facet).
 py::tuple hull_nd(const Points& points) {
     const int dims = columns_of(points, "points");
     const std::size_t n = static_cast<std::size_t>(points.shape(0));
@@ -1432,7 +1433,7 @@ py::tuple hull_nd(const Points& points) {
     const auto m = static_cast<py::ssize_t>(h.facet_count());
     std::vector<std::int32_t> facets(h.facets.begin(), h.facets.end()), vertices(h.vertices.begin(), h.vertices.end());
     return py::make_tuple(owned(std::move(facets), {m, dims}), owned(std::move(h.neighbors), {m, dims}),
-                          owned(std::move(vertices)));
+                          owned(std::move(vertices)), owned(std::move(h.group)));
 }
 
 /// The Delaunay triangulation in d dimensions, kept for point location.

@@ -358,3 +358,33 @@ TEST_CASE("hull_nd and delaunay_nd: a fuzz input of doubles from 1e-150 to 1e150
         REQUIRE(!t.ok());
     }
 }
+
+TEST_CASE("hull_nd: the flat pieces of the boundary (group) are exactly the coplanar neighbours", "[hull_nd]") {
+    // A 4-cube: 8 cubic facets, each triangulated; with a point inside one face's plane.
+    std::vector<double> p;
+    for (std::uint32_t mask = 0; mask < 16; ++mask)
+        for (int j = 0; j < 4; ++j) p.push_back(mask >> j & 1 ? 1.0 : 0.0);
+    const hullkit::HullNd h = hullkit::hull_nd(p.data(), 16, 4);
+    check_hull(p, 4, h);
+    std::map<std::int32_t, std::set<std::uint32_t>> pieces;
+    for (std::size_t f = 0; f < h.facet_count(); ++f) {
+        REQUIRE(h.group[f] <= static_cast<std::int32_t>(f));
+        REQUIRE(h.group[static_cast<std::size_t>(h.group[f])] == h.group[f]);
+        pieces[h.group[f]].insert(&h.facets[f * 4], &h.facets[f * 4] + 4);
+    }
+    REQUIRE(pieces.size() == 8);
+    for (const auto& piece : pieces) {
+        REQUIRE(piece.second.size() == 8);  // a cube's corners: one coordinate fixed
+        int fixed = 0;
+        for (int j = 0; j < 4; ++j) {
+            std::set<double> values;
+            for (std::uint32_t c : piece.second) values.insert(p[c * 4 + static_cast<std::size_t>(j)]);
+            fixed += values.size() == 1;
+        }
+        REQUIRE(fixed == 1);
+    }
+    // Random points: every facet its own piece.
+    const std::vector<double> r = random_points(30, 5, 8);
+    const hullkit::HullNd g = hullkit::hull_nd(r.data(), 30, 5);
+    for (std::size_t f = 0; f < g.facet_count(); ++f) REQUIRE(g.group[f] == static_cast<std::int32_t>(f));
+}

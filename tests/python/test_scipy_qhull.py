@@ -17,10 +17,6 @@ CHUNKS = (1, 4, 16)
 V, D, C, U, H = (f"test_qhull.py::{name}::" for name in
                  ("TestVoronoi", "TestDelaunay", "TestConvexHull", "TestUtilities", "Test_HalfspaceIntersection"))
 EXPECTED_FAILURES = {
-    # HalfspaceIntersection is 2D and 3D (ConvexHull, Delaunay and Voronoi take 4 to 8 dimensions
-    # and more: their tests of random-4d ... random-8d, test_nd_simplex and the grids of
-    # test_more_barycentric_transforms pass).
-    f"{H}test_self_dual_polytope_intersection",  # a 4D polytope
     # The order of Qhull's output, which the tests compare item by item: a square's four cocircular
     # corners get the other diagonal of the two that are both Delaunay (test_find_simplex,
     # test_2d_square) and so another hull edge order (test_convex_hull); ConvexHull's facets come
@@ -64,6 +60,6 @@ def test_scipy_test_qhull_passes_with_hullkit(tmp_path):
         f"test__plotutils.py::TestPlotting::test_{what}" for what in ("delaunay", "voronoi", "convex_hull")}
     assert not any("Test_Qhull" in name for name in outcomes)
     assert_failures_are(outcomes, EXPECTED_FAILURES)
-    # 151 of test_qhull.py's 177 pass (6 December 2026; 109 before the classes took more than 3
-    # dimensions), and the 3 of test__plotutils.py.
+    # 152 of test_qhull.py's 177 pass (6 December 2026; 109 before the classes took more than 3
+    # dimensions: every test in 4 to 8 dimensions passes now), and the 3 of test__plotutils.py.
     assert sum(outcome == "passed" for outcome in outcomes.values()) == len(outcomes) - len(EXPECTED_FAILURES)

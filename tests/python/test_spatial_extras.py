@@ -244,8 +244,8 @@ def test_halfspace_errors_name_the_problem():
             HalfspaceIntersection(square, np.array(point))
     with pytest.raises(HullkitError, match="halfspace 1 has a non-finite"):
         HalfspaceIntersection(np.vstack([square[:1], [[np.nan, 0, 0]], square[1:]]), [0.5, 0.5])
-    with pytest.raises(HullkitError, match="halfspaces in 4 dimensions is not supported"):
-        HalfspaceIntersection(np.zeros((6, 5)), np.zeros(4))
+    with pytest.raises(HullkitError, match=r"halfspaces in 11 dimensions \(at most 10\) is not supported"):
+        HalfspaceIntersection(np.zeros((13, 12)), np.zeros(11))
     with pytest.raises(HullkitError, match="Qhull option 'QG0'"):
         HalfspaceIntersection(square, [0.5, 0.5], qhull_options="QG0")
 

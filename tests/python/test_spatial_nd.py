@@ -183,3 +183,26 @@ def test_incremental_in_5d_is_the_single_call():
     grown = Delaunay(points[:10], incremental=True)
     grown.add_points(points[10:])
     assert as_sets(grown.simplices) == as_sets(Delaunay(points).simplices)
+
+
+def test_halfspace_intersection_of_a_4d_cube_and_cross_polytope():
+    from hullkit.spatial import HalfspaceIntersection
+    # The 4-cube |x_i| <= 1: 8 halfspaces, 16 corners where 4 planes meet.
+    cube = np.hstack([np.vstack([np.eye(4), -np.eye(4)]), -np.ones((8, 1))])
+    hs = HalfspaceIntersection(cube, np.zeros(4))
+    assert sorted(map(tuple, hs.intersections.tolist())) == sorted(itertools.product((-1.0, 1.0), repeat=4))
+    assert all(len(f) == 4 for f in hs.dual_facets) and len(hs.dual_facets) == 16
+    assert hs.dual_volume == pytest.approx(2 ** 4 / 24)  # the dual: the cross-polytope of radius 1
+    # The cross-polytope sum |x_i| <= 1: 16 halfspaces, 8 corners where 8 planes meet (merged facets).
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=4)))
+    cross = np.hstack([signs, -np.ones((16, 1))])
+    hs = HalfspaceIntersection(cross, np.zeros(4))  # dual points exactly the signs: 8 exactly coplanar per facet
+    corners = sorted(map(tuple, np.round(hs.intersections, 12).tolist()))
+    assert corners == sorted(map(tuple, np.vstack([np.eye(4), -np.eye(4)]).tolist()))
+    assert sorted(len(f) for f in hs.dual_facets) == [8] * 8
+    # Every corner lies on exactly its facet's planes, inside all the others.
+    for corner, facet in zip(hs.intersections, hs.dual_facets):
+        values = cross[:, :4] @ corner + cross[:, 4]
+        assert np.allclose(values[facet], 0) and (np.delete(values, facet) < -1e-9).all()
+    with pytest.raises(hullkit.HullkitError, match="unbounded"):
+        HalfspaceIntersection(cube[:7], np.zeros(4))

@@ -39,6 +39,8 @@ struct HullNd {
                                         ///< when det[[c_0, 1], ..., [c_{D-1}, 1], [q, 1]] > 0
     std::vector<std::int32_t> neighbors;  ///< D per facet: the facet sharing all corners but corner k
     std::vector<std::uint32_t> vertices;  ///< the hull's vertices, ascending
+    std::vector<std::int32_t> group;      ///< per facet: the lowest facet of its flat piece of the
+                                          ///< boundary (neighbours in one hyperplane, exactly)
     std::string error;                    ///< empty on success
     std::int64_t error_point = -1;        ///< the offending point, -1 if none
     bool ok() const { return error.empty(); }

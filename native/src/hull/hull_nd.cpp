@@ -953,6 +953,39 @@ private:
 };
 
 
+/// Per facet (rows of `width` corners, neighbours across each corner; -1 for none): the lowest
+/// facet joined to it through neighbours whose far corner lies on the facet's hyperplane, exactly
+/// (the flat pieces of a hull's boundary; the cospherical groups of a triangulation).
+std::vector<std::int32_t> coplanar_groups(const Quickhull& hull, const std::vector<std::uint32_t>& facets,
+                                          const std::vector<std::int32_t>& neighbors, std::size_t width,
+                                          const std::vector<std::uint32_t>* hull_facet = nullptr) {
+    const std::size_t m = facets.size() / width;
+    const std::vector<std::uint32_t> live = hull_facet ? std::vector<std::uint32_t>() : hull.live();
+    const std::vector<std::uint32_t>& id = hull_facet ? *hull_facet : live;
+    std::vector<std::int32_t> parent(m);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](std::int32_t x) {
+        while (parent[static_cast<std::size_t>(x)] != x)
+            x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+        return x;
+    };
+    for (std::size_t s = 0; s < m; ++s) {
+        for (std::size_t k = 0; k < width; ++k) {
+            const std::int32_t t = neighbors[s * width + k];
+            if (t < static_cast<std::int32_t>(s)) continue;  // each pair once (and none across -1)
+            std::size_t back = 0;
+            while (neighbors[static_cast<std::size_t>(t) * width + back] != static_cast<std::int32_t>(s)) ++back;
+            if (hull.facet_side(id[s], facets[static_cast<std::size_t>(t) * width + back]) == 0) {
+                const std::int32_t a = find(static_cast<std::int32_t>(s)), b = find(t);
+                parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+            }
+        }
+    }
+    std::vector<std::int32_t> group(m);
+    for (std::size_t s = 0; s < m; ++s) group[s] = find(static_cast<std::int32_t>(s));
+    return group;
+}
+
 /// An error for a non-finite coordinate, or empty.
 std::string check_finite(const double* points, std::size_t count, int d, std::int64_t* blamed) {
     for (std::size_t i = 0; i < count; ++i)
@@ -1000,6 +1033,7 @@ HullNd hull_nd(const double* points, std::size_t count, int dimension) {
         return out;
     }
     hull.result(&out.facets, &out.neighbors);
+    out.group = coplanar_groups(hull, out.facets, out.neighbors, static_cast<std::size_t>(dimension));
     out.vertices = out.facets;
     std::sort(out.vertices.begin(), out.vertices.end());
     out.vertices.erase(std::unique(out.vertices.begin(), out.vertices.end()), out.vertices.end());
@@ -1090,29 +1124,9 @@ DelaunayNd delaunay_nd(const double* points, std::size_t count, int dimension, b
             std::swap(out.neighbors[at], out.neighbors[at + 1]);
         }
     }
-    // Cospherical neighbours (the neighbour's far corner on the simplex's sphere, exactly) joined.
-    const std::size_t m = static_cast<std::size_t>(kept);
-    std::vector<std::int32_t> parent(m);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](std::int32_t x) {
-        while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-        return x;
-    };
-    for (std::size_t s = 0; s < m; ++s) {
-        for (std::size_t k = 0; k < corners; ++k) {
-            const std::int32_t t = out.neighbors[s * corners + k];
-            if (t < static_cast<std::int32_t>(s)) continue;  // each pair once (and not across the hull)
-            std::size_t back = 0;
-            while (out.neighbors[static_cast<std::size_t>(t) * corners + back] != static_cast<std::int32_t>(s)) ++back;
-            // The far corner on the lifted facet's hyperplane: on the circumsphere.
-            if (hull.facet_side(kept_facet[s], out.simplices[static_cast<std::size_t>(t) * corners + back]) == 0) {
-                const std::int32_t a = find(static_cast<std::int32_t>(s)), b = find(t);
-                parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-            }
-        }
-    }
-    out.group.resize(m);
-    for (std::size_t s = 0; s < m; ++s) out.group[s] = find(static_cast<std::int32_t>(s));
+    // Cospherical neighbours (the neighbour's far corner on the simplex's sphere: on the lifted
+    // facet's hyperplane, exactly) joined.
+    out.group = coplanar_groups(hull, out.simplices, out.neighbors, corners, &kept_facet);
     return out;
 }
 
