@@ -53,7 +53,8 @@ sphere triangulate too): ``simplices``, ``neighbors``, ``equations``, ``vertices
 ``neighbors``, ``convex_hull``, ``find_simplex`` (exact: the lowest-indexed simplex holding the
 point), ``transform``, ``coplanar`` (repeated points), ``furthest_site`` for Delaunay; Voronoi's
 ``vertices`` (circumcentres), ``ridge_points``, ``ridge_vertices``, ``regions`` and ``volumes``
-(bounded cells: the hull of their vertices). Points in a flat raise HullkitError saying how many
+(bounded cells: the exact hull of their vertices, made on first use and slow: about 17 ms a cell
+in 4D). Points in a flat raise HullkitError saying how many
 dimensions they span (Qhull's QH6154); a Voronoi diagram of exactly cospherical points in these
 dimensions (where simplices would share vertices) raises HullkitError, and so does ConvexHull's
 QG, Qc or Qi. Unbounded ridges around a hull edge with one or two simplices, which Qhull leaves
@@ -795,6 +796,7 @@ class Voronoi(_Incremental):
         self.min_bound, self.max_bound = _bounds(array, self.ndim)
         self.furthest_site = self._furthest
         self._ridge_dict = self._ridge_vertices = self._regions = None
+        self._volumes = self._volume_parts = None
         if self.ndim > 3:
             parts = self._from_nd(array)
         elif self._furthest and self.ndim == 2:
@@ -812,7 +814,27 @@ class Voronoi(_Incremental):
         region[distinct] = _np.arange(first, len(distinct) + first)
         self.point_region = region[representative]
         self._region_lists = (cells, offsets, distinct)
-        self.volumes = volumes[representative]
+        if volumes is None:  # 4D and up: computed on first use (see volumes)
+            self._volumes, self._volume_parts = None, (cells, offsets, representative)
+        else:
+            self.volumes = volumes[representative]
+
+    @property
+    def volumes(self):
+        """Each point's cell area (2D) or volume, inf when unbounded (a repeated point: its
+        representative's). Above 3 dimensions made on first use: the exact hull of each bounded
+        cell's vertices (_core.cell_volumes_nd), its volume from the facets in floating point."""
+        if self._volumes is None and self._volume_parts is not None:
+            cells, offsets, representative = self._volume_parts
+            with _translated():
+                volumes = _core.cell_volumes_nd(_np.ascontiguousarray(self.vertices), _np.ascontiguousarray(cells, dtype=_np.int64),
+                                                _np.ascontiguousarray(offsets, dtype=_np.int64))
+            self._volumes = volumes[_np.asarray(representative, dtype=_np.intp)]
+        return self._volumes
+
+    @volumes.setter
+    def volumes(self, value):
+        self._volumes = value
 
     # The lists are made on first use, from flat arrays (millions of small Python lists cost more
     # time and memory than the diagram; a user who reads only the vertices, ridge_points,
@@ -1000,13 +1022,7 @@ class Voronoi(_Incremental):
         flat = entries % size - 1
         ridge_offsets = _offsets(_np.bincount(entries // size, minlength=len(edge_keys)))
         self._set_ridges(_np.stack([edge_keys // count, edge_keys % count], axis=1), flat, ridge_offsets)
-        # Volumes: bounded cells by the exact hull of their vertices; inf when unbounded.
-        volumes = _np.full(n, _np.inf)
-        for p in range(n):
-            cell = cells[offsets[p]: offsets[p + 1]]
-            if len(cell) and cell[0] >= 0:
-                volumes[p] = ConvexHull(self.vertices[cell]).volume
-        return (t.representative, cells, offsets, volumes)
+        return (t.representative, cells, offsets, None)  # volumes on first use
 
     def _faces_3d(self, v, n):
         """Ridges from the core's faces; each point's cell vertices."""

@@ -1436,6 +1436,40 @@ py::tuple hull_nd(const Points& points) {
                           owned(std::move(vertices)), owned(std::move(h.group)));
 }
 
+/// The volume of each cell: the hull of vertices[cells[offsets[i]:offsets[i + 1]]] (hullkit::
+/// hull_nd_volume), inf for a cell that lists -1 (unbounded), NaN for an empty one.
+py::array_t<double> cell_volumes_nd(const Points& vertices, const py::array_t<std::int64_t, py::array::c_style>& cells,
+                                    const py::array_t<std::int64_t, py::array::c_style>& offsets) {
+    const int dims = columns_of(vertices, "vertices");
+    const std::size_t count = static_cast<std::size_t>(offsets.size()) - 1;
+    std::vector<double> volume(count, std::numeric_limits<double>::quiet_NaN());
+    const double* xyz = vertices.data();
+    const std::int64_t* cell = cells.data();
+    const std::int64_t* offset = offsets.data();
+    const auto n = static_cast<std::int64_t>(vertices.shape(0));
+    for (std::size_t i = 0; i <= count; ++i)
+        if (offset[i] < 0 || offset[i] > cells.size() || (i && offset[i] < offset[i - 1]))
+            throw std::invalid_argument("cell_volumes_nd: offsets out of order or range");
+    {
+        py::gil_scoped_release unlocked;
+        std::vector<double> corners;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (offset[i] == offset[i + 1]) continue;
+            if (cell[offset[i]] < 0) {
+                volume[i] = std::numeric_limits<double>::infinity();
+                continue;
+            }
+            corners.clear();
+            for (std::int64_t k = offset[i]; k < offset[i + 1]; ++k) {
+                if (cell[k] < 0 || cell[k] >= n) throw std::invalid_argument("cell_volumes_nd: a vertex index out of range");
+                corners.insert(corners.end(), xyz + cell[k] * dims, xyz + (cell[k] + 1) * dims);
+            }
+            volume[i] = hullkit::hull_nd_volume(corners.data(), corners.size() / static_cast<std::size_t>(dims), dims);
+        }
+    }
+    return owned(std::move(volume));
+}
+
 /// The Delaunay triangulation in d dimensions, kept for point location.
 class TriangulationNd {
 public:
@@ -1493,6 +1527,7 @@ PYBIND11_MODULE(_core, m) {
           py::arg("threads") = 0u);
     m.def("verify_triangles", &verify_triangles);
     m.def("hull_nd", &hull_nd);
+    m.def("cell_volumes_nd", &cell_volumes_nd);
     m.def("orient_nd", [](const Points& rows) {
         const int dims = columns_of(rows, "rows");
         if (rows.shape(0) != dims + 1) throw std::invalid_argument("orient_nd needs D + 1 rows of D coordinates");

@@ -51,6 +51,11 @@ struct HullNd {
 /// row after row. Needs D + 1 points not in one hyperplane.
 HullNd hull_nd(const double* points, std::size_t count, int dimension);
 
+/// The volume of the convex hull of `count` points of `dimension` coordinates (hull_nd's facets
+/// fanned from the vertices' centroid, each simplex's determinant in floating point); NaN when
+/// hull_nd reports an error (flat or too few points).
+double hull_nd_volume(const double* points, std::size_t count, int dimension);
+
 struct DelaunayNd {
     int dimension = 0;                     ///< d, the points' dimension
     std::vector<std::uint32_t> simplices;  ///< d + 1 corners per simplex, each positively oriented:

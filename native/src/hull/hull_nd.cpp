@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -494,7 +495,16 @@ private:
                     any = true;
                 }
         }
-        std::vector<std::vector<Big>> a(static_cast<std::size_t>(n), std::vector<Big>(static_cast<std::size_t>(n)));
+        // The matrix's storage kept between calls (per thread); every cell is set below.
+        thread_local std::vector<std::vector<Big>> a;
+        if (a.size() < static_cast<std::size_t>(n)) a.resize(static_cast<std::size_t>(n));
+        for (auto& r : a) {
+            if (r.size() < static_cast<std::size_t>(n)) r.resize(static_cast<std::size_t>(n));
+            for (Big& cell : r) {
+                cell.limb.clear();
+                cell.negative = false;
+            }
+        }
         for (int r = 0; r < n; ++r) {
             if (rows[r] == count_) {  // the point at infinity: only its lift, +-1
                 for (int c = 0; c < n; ++c)
@@ -1038,6 +1048,43 @@ HullNd hull_nd(const double* points, std::size_t count, int dimension) {
     std::sort(out.vertices.begin(), out.vertices.end());
     out.vertices.erase(std::unique(out.vertices.begin(), out.vertices.end()), out.vertices.end());
     return out;
+}
+
+double hull_nd_volume(const double* points, std::size_t count, int dimension) {
+    const HullNd h = hull_nd(points, count, dimension);
+    if (!h.ok()) return std::numeric_limits<double>::quiet_NaN();
+    const std::size_t d = static_cast<std::size_t>(dimension);
+    std::vector<double> centre(d, 0.0);
+    for (const std::uint32_t v : h.vertices)
+        for (std::size_t j = 0; j < d; ++j) centre[j] += points[v * d + j];
+    for (double& x : centre) x /= static_cast<double>(h.vertices.size());
+    double total = 0, factorial = 1;
+    for (std::size_t k = 2; k <= d; ++k) factorial *= static_cast<double>(k);
+    std::vector<double> a(d * d);
+    for (std::size_t f = 0; f < h.facet_count(); ++f) {
+        for (std::size_t r = 0; r < d; ++r)
+            for (std::size_t j = 0; j < d; ++j) a[r * d + j] = points[h.facets[f * d + r] * d + j] - centre[j];
+        // |det| by Gaussian elimination with partial pivoting.
+        double det = 1;
+        for (std::size_t c = 0; c < d && det != 0; ++c) {
+            std::size_t best = c;
+            for (std::size_t r = c + 1; r < d; ++r)
+                if (std::fabs(a[r * d + c]) > std::fabs(a[best * d + c])) best = r;
+            if (a[best * d + c] == 0) {
+                det = 0;
+                break;
+            }
+            if (best != c)
+                for (std::size_t j = 0; j < d; ++j) std::swap(a[best * d + j], a[c * d + j]);
+            det *= a[c * d + c];
+            for (std::size_t r = c + 1; r < d; ++r) {
+                const double factor = a[r * d + c] / a[c * d + c];
+                for (std::size_t j = c; j < d; ++j) a[r * d + j] -= factor * a[c * d + j];
+            }
+        }
+        total += std::fabs(det);
+    }
+    return total / factorial;
 }
 
 DelaunayNd delaunay_nd(const double* points, std::size_t count, int dimension, bool furthest_site) {
