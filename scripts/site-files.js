@@ -24,6 +24,7 @@ export const SITE_FILES = Object.freeze([
   'wasm/internal.js',
   'wasm/delaunay.js',
   'wasm/delaunay3.js',
+  'wasm/nd.js',
   'wasm/constrained.js',
   'wasm/route.js',
   // The Emscripten loader and the module it fetches next to itself.

@@ -483,6 +483,45 @@ export interface Hullkit {
    */
   voronoi3(xyz: Float64Array | ArrayLike<number>, triangulation: Delaunay3Triangulation): Voronoi3Result;
   /**
+   * The exact convex hull of points in `dimension` dimensions (2 to 10; `hull` is faster in 3D):
+   * quickhull on simplicial facets, every side test exact. Points in a facet's hyperplane that see
+   * no facet are not vertices.
+   *
+   * @example
+   * const h = hullkit.hullNd([[0, 0, 0, 0], [1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], 4);
+   * h.facets.length / 4; // 5 facets of 4 corners
+   *
+   * @throws {HullkitError} for points that span fewer dimensions ("lie in a flat of k dimensions"),
+   *   fewer than dimension + 1 points, a non-finite coordinate (with `pointIndex`) or a dimension out of range.
+   * @throws {TypeError} for points that are not numbers.
+   */
+  hullNd(points: Float64Array | ArrayLike<number> | ArrayLike<ArrayLike<number>>, dimension: number): HullNdResult;
+  /**
+   * The exact Delaunay triangulation of points in `dimension` dimensions (1 to 9; `delaunay` and
+   * `delaunay3` are faster in 2D and 3D): the lower facets of the points lifted to the paraboloid
+   * (`furthestSite`: the upper ones). Every distinct point is a corner; cospherical points (cube
+   * corners, grids) get one of their triangulations, no simplex flat.
+   *
+   * @throws {HullkitError} as hullNd, and for fewer than dimension + 1 distinct points.
+   */
+  delaunayNd(
+    points: Float64Array | ArrayLike<number> | ArrayLike<ArrayLike<number>>,
+    dimension: number,
+    options?: { furthestSite?: boolean },
+  ): DelaunayNdResult;
+  /**
+   * The simplex of `triangulation` (delaunayNd's result for `points`) holding each query, exactly:
+   * on a shared face the lowest-indexed simplex holding it; -1 outside the hull (and for a query
+   * with a non-finite coordinate).
+   *
+   * @throws {HullkitError} for a triangulation whose arrays do not fit the points.
+   */
+  locateNd(
+    points: Float64Array | ArrayLike<number> | ArrayLike<ArrayLike<number>>,
+    triangulation: DelaunayNdResult,
+    queries: Float64Array | ArrayLike<number> | ArrayLike<ArrayLike<number>>,
+  ): Int32Array;
+  /**
    * Checks a traverse moved along the scene's route against its obstacles, one check per leg. A
    * straight translation: the convex hull of each part at both ends of a leg contains all it
    * sweeps (no contact missed), and an exact narrow phase on the swept triangles where that hull
@@ -811,6 +850,37 @@ export interface Delaunay3Options {
    * one (the diagram's cells are then all unbounded). Default false.
    */
   furthestSite?: boolean;
+}
+
+/** hullNd's result: `dimension` corners per facet, in flat arrays. */
+export interface HullNdResult {
+  dimension: number;
+  /**
+   * `dimension` point indices per facet, ordered so that a point q is strictly outside when the
+   * determinant of the rows [corner, 1] ... and [q, 1] is positive.
+   */
+  facets: Uint32Array;
+  /** `dimension` per facet: `neighbors[d * f + k]` shares every corner of facet f but its k-th. */
+  neighbors: Int32Array;
+  /** The hull's vertices, ascending. */
+  vertices: Uint32Array;
+  /** Per facet: the lowest facet of its flat piece of the boundary (exactly coplanar neighbours). */
+  group: Int32Array;
+}
+
+/** delaunayNd's result: `dimension + 1` corners per simplex, in flat arrays. */
+export interface DelaunayNdResult {
+  dimension: number;
+  /** `dimension + 1` point indices per simplex, positively oriented (det of the rows [corner, 1] > 0). */
+  simplices: Uint32Array;
+  /** `dimension + 1` per simplex: across from each corner, -1 on the hull. */
+  neighbors: Int32Array;
+  /** Per simplex: the lowest simplex with exactly the same circumsphere reachable through neighbours. */
+  group: Int32Array;
+  /** Per point: the lowest index of an equal point. */
+  representative: Uint32Array;
+  duplicateCount: number;
+  furthestSite: boolean;
 }
 
 /**

@@ -6,6 +6,7 @@ import { delaunay, delaunayFind, delaunayLocate, delaunayVoronoi, delaunayVorono
 import { delaunay3, verifyDelaunay3, locate3, voronoi3 } from './delaunay3.js';
 import { constrainedDelaunay, refineMesh, triangulatePolygon, FILL_RULES } from './constrained.js';
 import { checkRoute, RouteChecker } from './route.js';
+import { delaunayNd, hullNd, locateNd } from './nd.js';
 
 export { HullkitError };
 
@@ -53,6 +54,9 @@ export default async function createHullkit() {
     verifyDelaunay3: (xyz, tetrahedra, options) => verifyDelaunay3(core, xyz, tetrahedra, options),
     locate3: (xyz, triangulation, queries, options) => locate3(core, xyz, triangulation, queries, options),
     voronoi3: (xyz, triangulation) => voronoi3(core, xyz, triangulation),
+    hullNd: (points, dimension) => hullNd(core, points, dimension),
+    delaunayNd: (points, dimension, options) => delaunayNd(core, points, dimension, options),
+    locateNd: (points, triangulation, queries) => locateNd(core, points, triangulation, queries),
     checkRoute: (scene, options) => checkRoute(core, scene, options),
     RouteChecker: class extends RouteChecker {
       constructor(scene, options) {

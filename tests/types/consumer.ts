@@ -4,7 +4,7 @@
 // runtime objects are compared. Needs no lib beyond ES2020: no DOM, no @types/node.
 import createHullkit, { HullkitError } from 'hullkit';
 import type {
-  ConstrainedResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions, MeshRefineOptions,
+  ConstrainedResult, DelaunayNdResult, HullNdResult, Delaunay3Options, Delaunay3Result, Delaunay3VerifyReport, DelaunayResult, GiftwrapTrace, HullResult, Hullkit, Locate3Result, LocateOptions, MeshRefineOptions,
   LocateResult, MeshData, PolygonOptions,
   RouteChecker, RouteLeg, RouteReport, RouteWaypoint, RouteScene, Vec3, VerifyReport, Voronoi3Result, VoronoiCells, VoronoiDiagram,
 } from 'hullkit';
@@ -135,6 +135,13 @@ check(planar.dimension === 2 && planar.triangles.length === 6 && up[2] === 1 && 
 const checked: Delaunay3VerifyReport = hullkit.verifyDelaunay3(cubeAndCentre, tetrahedra, { perturbed: true });
 check(checked.ok && checked.problemCount === 0 && checked.distinctPoints === 9 && checked.hullTriangles === 12, 'verifyDelaunay3');
 check(tetrahedralization.duplicateCount === 0 && tetrahedralization.representative.length === 9, 'delaunay3 duplicates');
+// Any dimension: the 4-simplex's hull and triangulation, a query inside and one outside
+const simplex4 = [[0, 0, 0, 0], [1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]];
+const hull4: HullNdResult = hullkit.hullNd(simplex4, 4);
+check(hull4.facets.length === 20 && hull4.vertices.length === 5 && hull4.group.length === 5, 'hullNd');
+const tri4: DelaunayNdResult = hullkit.delaunayNd(simplex4, 4, { furthestSite: false });
+const where4: Int32Array = hullkit.locateNd(simplex4, tri4, [0.1, 0.1, 0.1, 0.1, 2, 2, 2, 2]);
+check(tri4.simplices.length === 5 && where4[0] === 0 && where4[1] === -1, 'delaunayNd and locateNd');
 // Furthest-site: only the cube's eight corners, never its centre; flagged on the result
 const furthestOptions: Delaunay3Options = { furthestSite: true };
 const furthestTetrahedra: Delaunay3Result = hullkit.delaunay3(cubeAndCentre, furthestOptions);

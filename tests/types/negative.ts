@@ -23,6 +23,9 @@ hullkit.locate(xyz, hullkit.delaunay(xyz), [[0, 0]]); // error
 hullkit.locate(xyz, hullkit.delaunay(xyz), xyz, { threads: 1 }); // error
 const inside: Uint32Array = hullkit.locate(xyz, hullkit.delaunay(xyz), xyz).triangle; // error
 hullkit.delaunay3([[0, 0, 0]]); // error
+hullkit.hullNd(xyz); // error
+hullkit.delaunayNd(xyz, 4, { furthest: true }); // error
+hullkit.locateNd(xyz, hullkit.delaunayNd(xyz, 3).simplices, xyz); // error
 hullkit.delaunay3(xyz, { threads: 2 }); // error
 hullkit.delaunay3(xyz, { furthestSite: 1 }); // error
 const flat: Uint32Array = hullkit.delaunay3(xyz).neighbors; // error
