@@ -207,6 +207,17 @@ inline Wide wide_add(Wide a, Wide b) {
     if (shift < -1100) return a;  // below 2^-1099 of a: far under its rounding
     return wide_of(a.m + std::ldexp(b.m, static_cast<int>(shift)), a.e);
 }
+inline Wide operator*(const Wide& a, const Wide& b) { return wide_mul(a, b); }
+inline Wide operator+(const Wide& a, const Wide& b) { return wide_add(a, b); }
+inline Wide operator-(Wide a) {
+    a.m = -a.m;
+    return a;
+}
+inline Wide magnitude(Wide a) {
+    a.m = std::fabs(a.m);
+    return a;
+}
+inline double magnitude(double a) { return std::fabs(a); }
 /// |a| > |b|
 inline bool wide_greater(const Wide& a, const Wide& b) {
     if (a.m == 0) return false;
@@ -215,26 +226,49 @@ inline bool wide_greater(const Wide& a, const Wide& b) {
     return std::fabs(a.m) > std::fabs(b.m);
 }
 
-/// The expansion by minors in floating point: for every column subset `mask` below `end`, f[mask]
-/// the determinant of the last |mask| rows of `a` on those columns and g[mask] its permanent
-/// (the same products in absolute value, which bound the rounding of f).
-void expand_minors(const double (*a)[kMaxRows], int n, std::uint32_t end, double* f, double* g) {
-    f[0] = g[0] = 1.0;
+/// The expansion by minors in floating point (double, or Wide): for every column subset `mask`
+/// below `end`, f[mask] the determinant of the last |mask| rows of `a` on those columns and
+/// g[mask] its permanent (the same products in absolute value, which bound the rounding of f).
+template <typename T>
+void expand_minors(const T (*a)[kMaxRows], int n, std::uint32_t end, T one, T* f, T* g) {
+    f[0] = g[0] = one;
     for (std::uint32_t mask = 1; mask < end; ++mask) {
         const int row = n - bits(mask);
-        double sum = 0, bound = 0;
+        T sum{}, bound{};
         int position = 0;
         for (int j = 0; j < n; ++j) {
             if (!(mask >> j & 1)) continue;
             const std::uint32_t minor = mask ^ (1u << j);
-            const double t = a[row][j] * f[minor];
-            sum += (position & 1) ? -t : t;
-            bound += std::fabs(a[row][j]) * g[minor];
+            const T t = a[row][j] * f[minor];
+            sum = sum + ((position & 1) ? -t : t);
+            bound = bound + magnitude(a[row][j]) * g[minor];
             ++position;
         }
         f[mask] = sum;
         g[mask] = bound;
     }
+}
+
+/// The determinant of the n x n matrix `a` (row-major) in floating point, by Gaussian elimination
+/// with partial pivoting (`a` is overwritten): a measurement or an order, never a decision.
+double float_det(double* a, int n) {
+    double det = 1;
+    for (int c = 0; c < n; ++c) {
+        int best = c;
+        for (int r = c + 1; r < n; ++r)
+            if (std::fabs(a[r * n + c]) > std::fabs(a[best * n + c])) best = r;
+        if (a[best * n + c] == 0) return 0;
+        if (best != c) {
+            for (int k = 0; k < n; ++k) std::swap(a[best * n + k], a[c * n + k]);
+            det = -det;
+        }
+        det *= a[c * n + c];
+        for (int r = c + 1; r < n; ++r) {
+            const double factor = a[r * n + c] / a[c * n + c];
+            for (int k = c; k < n; ++k) a[r * n + k] -= factor * a[c * n + k];
+        }
+    }
+    return det;
 }
 
 /// The bound on the rounding error of an n x n expansion by minors whose permanent is `permanent`
@@ -293,6 +327,22 @@ public:
 
     /// The row of point i (i < count) or of the query row `query` (i == kQuery).
     static constexpr std::uint32_t kQuery = 0xffffffffu;
+
+    /// The floating (scaled) value of row r (a point, the point at infinity or the query) in
+    /// column `col` (a coordinate, kLiftColumn or kOnesColumn).
+    double entry(std::uint32_t r, int col) const {
+        if (r == kQuery) return col >= 0 ? query_scaled_[static_cast<std::size_t>(col)] : col == kLiftColumn ? query_lift_ : 1.0;
+        if (col >= 0) return scaled(r, col);
+        return col == kLiftColumn ? lift_[r] : (r == count_ ? 0.0 : 1.0);
+    }
+
+    /// The columns of an orientation: the coordinates, the lift when `lifted`, the ones; their count.
+    int orientation_columns(bool lifted, int* columns) const {
+        for (int c = 0; c < d_; ++c) columns[c] = c;
+        if (lifted) columns[d_] = kLiftColumn;
+        columns[d_ + (lifted ? 1 : 0)] = kOnesColumn;
+        return d_ + (lifted ? 2 : 1);
+    }
     void set_query(const double* q) {
         query_raw_ = q;
         query_exact_copy_ = true;
@@ -310,21 +360,15 @@ public:
     int sign(const std::uint32_t* rows, int n, const int* columns, double* value = nullptr) const {
         double a[kMaxRows][kMaxRows];
         bool filter = true;
-        bool lifted = false;
+        const bool lifted = std::find(columns, columns + n, kLiftColumn) != columns + n;
         for (int r = 0; r < n; ++r) {
-            const bool query = rows[r] == kQuery;
-            if (query ? !query_exact_copy_ : !exact_copy_[rows[r]]) filter = false;
-            const double* s = query ? query_scaled_.data() : &scaled_[rows[r] * static_cast<std::size_t>(d_)];
-            const double lift = query ? query_lift_ : lift_[rows[r]];
-            for (int c = 0; c < n; ++c) {
-                const int col = columns[c];
-                a[r][c] = col >= 0 ? s[col] : col == kLiftColumn ? (lifted = true, lift) : (rows[r] == count_ ? 0.0 : 1.0);
-            }
+            if (rows[r] == kQuery ? !query_exact_copy_ : !exact_copy_[rows[r]]) filter = false;
+            for (int c = 0; c < n; ++c) a[r][c] = entry(rows[r], columns[c]);
         }
         if (filter) {
             double f[1 << kMaxRows], g[1 << kMaxRows];
             const std::uint32_t all = (1u << n) - 1;
-            expand_minors(a, n, all + 1, f, g);
+            expand_minors(a, n, all + 1, 1.0, f, g);
             const double error = rounding_bound(n, lifted, d_, g[all]);
             if (value) *value = f[all];
             if (std::isfinite(f[all]) && std::isfinite(error)) {
@@ -334,14 +378,20 @@ public:
         } else if (value) {
             *value = 0;
         }
-        const int wide = wide_sign(rows, n, columns, lifted);
-        if (wide != 2) return wide;
-        return exact_rows(rows, n, columns);
+        return decide(rows, n, columns);
     }
 
+    /// The sign where the doubles could not tell: the Wide stage, then the big integers.
+    int decide(const std::uint32_t* rows, int n, const int* columns) const {
+        const int wide = wide_sign(rows, n, columns);
+        return wide != 2 ? wide : exact(rows, n, columns);
+    }
+
+private:
     /// The expansion by minors with Wide numbers on the unscaled coordinates, and its error bound
     /// (the doubles' without the allowance for underflow); 2 when it cannot tell.
-    int wide_sign(const std::uint32_t* rows, int n, const int* columns, bool lifted) const {
+    int wide_sign(const std::uint32_t* rows, int n, const int* columns) const {
+        const bool lifted = std::find(columns, columns + n, kLiftColumn) != columns + n;
         Wide a[kMaxRows][kMaxRows];
         for (int r = 0; r < n; ++r) {
             if (rows[r] == count_) {
@@ -366,55 +416,28 @@ public:
             }
         }
         std::vector<Wide> f(std::size_t{1} << n), g(std::size_t{1} << n);
-        f[0] = g[0] = wide_of(1.0, 0);
-        for (std::uint32_t mask = 1; mask < (1u << n); ++mask) {
-            const int row = n - bits(mask);
-            Wide sum, bound;
-            int position = 0;
-            for (int j = 0; j < n; ++j) {
-                if (!(mask >> j & 1)) continue;
-                const std::uint32_t minor = mask ^ (1u << j);
-                Wide t = wide_mul(a[row][j], f[minor]);
-                if (position & 1) t.m = -t.m;
-                sum = wide_add(sum, t);
-                Wide magnitude = a[row][j];
-                magnitude.m = std::fabs(magnitude.m);
-                bound = wide_add(bound, wide_mul(magnitude, g[minor]));
-                ++position;
-            }
-            f[mask] = sum;
-            g[mask] = bound;
-        }
         const std::uint32_t all = (1u << n) - 1;
+        expand_minors(a, n, all + 1, wide_of(1.0, 0), f.data(), g.data());
         const Wide error = wide_mul(g[all], wide_of(rounding_factor(n, lifted, d_), 0));
         if (wide_greater(f[all], error)) return f[all].m > 0 ? 1 : -1;
         return 2;
     }
 
-    /// The sign of det [[p_r, 1] for each of the d + 1 rows] in the points' own d dimensions.
-    int orient(const std::uint32_t* rows, double* value = nullptr) const {
+public:
+    /// The sign of det [[p_r, 1] for each of the d + 1 rows] in the points' own d dimensions, or
+    /// with `lifted` of the d + 2 rows [p, |p|^2, 1].
+    int orient(const std::uint32_t* rows, double* value = nullptr, bool lifted = false) const {
         int columns[kMaxRows];
-        for (int c = 0; c < d_; ++c) columns[c] = c;
-        columns[d_] = kOnesColumn;
-        return sign(rows, d_ + 1, columns, value);
-    }
-
-    /// The same for the lifted points: d + 2 rows [p, |p|^2, 1].
-    int orient_lifted(const std::uint32_t* rows, double* value = nullptr) const {
-        int columns[kMaxRows];
-        for (int c = 0; c < d_; ++c) columns[c] = c;
-        columns[d_] = kLiftColumn;
-        columns[d_ + 1] = kOnesColumn;
-        return sign(rows, d_ + 2, columns, value);
+        const int n = orientation_columns(lifted, columns);
+        return sign(rows, n, columns, value);
     }
 
     /// The floating row of point i in the columns of an orientation (coordinates, lift if
     /// `lifted`, ones): n = d + 1 or d + 2 values.
     void row_values(std::uint32_t i, bool lifted, double* out) const {
-        const double* s = &scaled_[i * static_cast<std::size_t>(d_)];
-        for (int j = 0; j < d_; ++j) out[j] = s[j];
-        if (lifted) out[d_] = lift_[i];
-        out[d_ + (lifted ? 1 : 0)] = i == count_ ? 0.0 : 1.0;
+        int columns[kMaxRows];
+        const int n = orientation_columns(lifted, columns);
+        for (int c = 0; c < n; ++c) out[c] = entry(i, columns[c]);
     }
     bool exact_copy(std::uint32_t i) const { return exact_copy_[i] != 0; }
 
@@ -428,7 +451,7 @@ public:
         for (int r = 1; r < n; ++r) row_values(corners[r - 1], lifted, a[r]);
         double f[1 << kMaxRows], g[1 << kMaxRows];
         const std::uint32_t all = (1u << n) - 1;
-        expand_minors(a, n, all, f, g);  // every subset but all: they use rows 1 .. n - 1 only
+        expand_minors(a, n, all, 1.0, f, g);  // every subset but all: they use rows 1 .. n - 1 only
         for (int j = 0; j < n; ++j) {
             f_out[j] = f[all ^ (1u << j)];
             g_out[j] = g[all ^ (1u << j)];
@@ -453,18 +476,16 @@ public:
         return 2;
     }
 
-    int exact(const std::uint32_t* rows, int n, const int* columns) const;
-
 private:
     const double* row_raw(std::uint32_t r) const {
         return r == kQuery ? query_raw_ : raw_ + r * static_cast<std::size_t>(d_);
     }
 
-    int exact_rows(const std::uint32_t* rows, int n, const int* columns) const {
+    /// The sign by big integers.
+    int exact(const std::uint32_t* rows, int n, const int* columns) const {
         // Each coordinate column scaled by its own power of two; the lift and its coordinates by
         // one shared power (the lift is their sum of squares).
-        bool lifted = false;
-        for (int c = 0; c < n; ++c) lifted |= columns[c] == kLiftColumn;
+        const bool lifted = std::find(columns, columns + n, kLiftColumn) != columns + n;
         int lowest[kMaxRows];
         int shared = 0;
         bool any = false;
@@ -555,7 +576,6 @@ private:
     bool query_exact_copy_ = false;
 };
 
-int Predicate::exact(const std::uint32_t* rows, int n, const int* columns) const { return exact_rows(rows, n, columns); }
 
 /// Quickhull over the points `ids` of a Predicate, in its d dimensions or (lifted) d + 1.
 class Quickhull {
@@ -563,13 +583,11 @@ public:
     Quickhull(const Predicate& predicate, bool lifted)
         : p_(predicate), lifted_(lifted), D_(predicate.dimension() + (lifted ? 1 : 0)) {}
 
-    int dimension() const { return D_; }
-
     /// Builds the hull of `ids`; false (with `spanned` set) when they lie in a flat of lower
     /// dimension, or more precisely when no D + 1 of them are affinely independent.
-    bool build(const std::vector<std::uint32_t>& ids, int* spanned, std::int64_t* blamed) {
+    bool build(const std::vector<std::uint32_t>& ids, int* spanned) {
         std::vector<std::uint32_t> simplex;
-        if (!initial_simplex(ids, &simplex, spanned, blamed)) return false;
+        if (!initial_simplex(ids, &simplex, spanned)) return false;
         const int D = D_;
         for (int k = 0; k <= D; ++k) {
             std::uint32_t corners[kMaxRows];
@@ -654,15 +672,12 @@ public:
             if (s != 2) return (D_ & 1) ? -s : s;
             if (value && (D_ & 1)) *value = -*value;
         }
+        // The plane could not tell (or its rows are not exact copies): the later stages.
         std::uint32_t rows[kMaxRows];
         std::copy(&corners_[f * static_cast<std::size_t>(D_)], &corners_[f * static_cast<std::size_t>(D_)] + D_, rows);
         rows[D_] = q;
         int columns[kMaxRows];
-        const int d = p_.dimension();
-        for (int c = 0; c < d; ++c) columns[c] = c;
-        if (lifted_) columns[d] = kLiftColumn;
-        columns[D_] = kOnesColumn;
-        return p_.exact(rows, D_ + 1, columns);
+        return p_.decide(rows, p_.orientation_columns(lifted_, columns), columns);
     }
 
     /// The sign of q against the facet with these D corners (positive: strictly outside).
@@ -670,7 +685,7 @@ public:
         std::uint32_t rows[kMaxRows];
         std::copy(corners, corners + D_, rows);
         rows[D_] = q;
-        return lifted_ ? p_.orient_lifted(rows, value) : p_.orient(rows, value);
+        return p_.orient(rows, value, lifted_);
     }
 
 private:
@@ -799,8 +814,7 @@ private:
 
     /// Some D + 1 affinely independent points of `ids`, chosen in floating point (largest distance
     /// from the span so far) and confirmed exactly.
-    bool initial_simplex(const std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>* simplex, int* spanned,
-                         std::int64_t* blamed) {
+    bool initial_simplex(const std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>* simplex, int* spanned) {
         const int D = D_;
         const int d = p_.dimension();
         // The point at infinity (if any) as a point far above (below) the others: an order only.
@@ -816,19 +830,23 @@ private:
         std::vector<std::vector<double>> basis;  // orthonormal directions of the span so far
         std::vector<std::pair<double, std::uint32_t>> order;
         std::vector<double> v(static_cast<std::size_t>(D));
+        // v = q - the first point, less its parts along the basis; returns |v|^2.
+        auto residual = [&](std::uint32_t q) {
+            for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] = coordinate(q, j) - coordinate((*simplex)[0], j);
+            for (const auto& b : basis) {
+                double dot = 0;
+                for (int j = 0; j < D; ++j) dot += v[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(j)];
+                for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] -= dot * b[static_cast<std::size_t>(j)];
+            }
+            double norm = 0;
+            for (double x : v) norm += x * x;
+            return norm;
+        };
         for (int k = 1; k <= D; ++k) {
             order.clear();
-            const std::uint32_t origin = (*simplex)[0];
             std::size_t best = 0;
             for (const std::uint32_t q : ids) {
-                for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] = coordinate(q, j) - coordinate(origin, j);
-                for (const auto& b : basis) {
-                    double dot = 0;
-                    for (int j = 0; j < D; ++j) dot += v[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(j)];
-                    for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] -= dot * b[static_cast<std::size_t>(j)];
-                }
-                double norm = 0;
-                for (double x : v) norm += x * x;
+                const double norm = residual(q);
                 if (order.empty() || norm > -order[best].first) best = order.size();
                 order.push_back({-norm, q});
             }
@@ -856,19 +874,10 @@ private:
             }
             if (!found) {
                 *spanned = k - 1;
-                *blamed = -1;
                 return false;
             }
             // The new direction, orthonormalised (floating point: it only orders the candidates).
-            for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] = coordinate(simplex->back(), j) - coordinate(origin, j);
-            for (const auto& b : basis) {
-                double dot = 0;
-                for (int j = 0; j < D; ++j) dot += v[static_cast<std::size_t>(j)] * b[static_cast<std::size_t>(j)];
-                for (int j = 0; j < D; ++j) v[static_cast<std::size_t>(j)] -= dot * b[static_cast<std::size_t>(j)];
-            }
-            double norm = 0;
-            for (double x : v) norm += x * x;
-            norm = std::sqrt(norm);
+            const double norm = std::sqrt(residual(simplex->back()));
             if (norm > 0)
                 for (double& x : v) x /= norm;
             basis.push_back(v);
@@ -880,19 +889,15 @@ private:
     /// (columns: any of the coordinates, with the ones) is nonzero, exactly.
     bool independent(const std::vector<std::uint32_t>& points) const {
         const int n = static_cast<int>(points.size());
-        const int d = p_.dimension();
-        std::vector<int> all;
-        for (int j = 0; j < d; ++j) all.push_back(j);
-        if (lifted_) all.push_back(kLiftColumn);
-        all.push_back(kOnesColumn);
-        const int total = static_cast<int>(all.size());
+        int all[kMaxRows];
+        const int total = p_.orientation_columns(lifted_, all);
         // Column subsets of size n; the floating estimates first, the exact signs if none decides.
         std::vector<std::vector<int>> subsets;
         std::vector<int> pick(static_cast<std::size_t>(n));
         std::iota(pick.begin(), pick.end(), 0);
         while (true) {
             std::vector<int> columns;
-            for (int i : pick) columns.push_back(all[static_cast<std::size_t>(i)]);
+            for (int i : pick) columns.push_back(all[i]);
             subsets.push_back(std::move(columns));
             int i = n - 1;
             while (i >= 0 && pick[static_cast<std::size_t>(i)] == total - n + i) --i;
@@ -903,47 +908,15 @@ private:
         // Largest floating estimate first: with the exact sign it usually settles at once.
         std::vector<std::pair<double, std::size_t>> ranked;
         for (std::size_t s = 0; s < subsets.size(); ++s) {
-            double value = 0;
-            estimate(points, subsets[s], &value);
-            ranked.push_back({-std::fabs(value), s});
+            double a[kMaxRows * kMaxRows];
+            for (int r = 0; r < n; ++r)
+                for (int c = 0; c < n; ++c) a[r * n + c] = p_.entry(points[static_cast<std::size_t>(r)], subsets[s][static_cast<std::size_t>(c)]);
+            ranked.push_back({-std::fabs(float_det(a, n)), s});
         }
         std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& r : ranked)
             if (p_.sign(points.data(), n, subsets[r.second].data()) != 0) return true;
         return false;
-    }
-
-    void estimate(const std::vector<std::uint32_t>& points, const std::vector<int>& columns, double* value) const {
-        // Floating point only (an order for the exact tests).
-        const int n = static_cast<int>(points.size());
-        double a[kMaxRows][kMaxRows];
-        for (int r = 0; r < n; ++r)
-            for (int c = 0; c < n; ++c) {
-                const int col = columns[static_cast<std::size_t>(c)];
-                a[r][c] = col >= 0 ? scaled(points[static_cast<std::size_t>(r)], col)
-                                   : col == kLiftColumn ? lift(points[static_cast<std::size_t>(r)]) : 1.0;
-            }
-        // Gaussian elimination with partial pivoting.
-        double det = 1;
-        for (int c = 0; c < n; ++c) {
-            int best = c;
-            for (int r = c + 1; r < n; ++r)
-                if (std::fabs(a[r][c]) > std::fabs(a[best][c])) best = r;
-            if (a[best][c] == 0) {
-                det = 0;
-                break;
-            }
-            if (best != c) {
-                for (int k = 0; k < n; ++k) std::swap(a[best][k], a[c][k]);
-                det = -det;
-            }
-            det *= a[c][c];
-            for (int r = c + 1; r < n; ++r) {
-                const double factor = a[r][c] / a[c][c];
-                for (int k = c; k < n; ++k) a[r][k] -= factor * a[c][k];
-            }
-        }
-        *value = det;
     }
 
     double scaled(std::uint32_t i, int j) const { return p_.scaled(i, j); }
@@ -963,15 +936,14 @@ private:
 };
 
 
-/// Per facet (rows of `width` corners, neighbours across each corner; -1 for none): the lowest
+/// Per facet (rows of `width` corners, neighbours across each corner; -1 for none; `id` its facet
+/// of `hull`): the lowest
 /// facet joined to it through neighbours whose far corner lies on the facet's hyperplane, exactly
 /// (the flat pieces of a hull's boundary; the cospherical groups of a triangulation).
-std::vector<std::int32_t> coplanar_groups(const Quickhull& hull, const std::vector<std::uint32_t>& facets,
-                                          const std::vector<std::int32_t>& neighbors, std::size_t width,
-                                          const std::vector<std::uint32_t>* hull_facet = nullptr) {
+std::vector<std::int32_t> coplanar_groups(const Quickhull& hull, const std::vector<std::uint32_t>& id,
+                                          const std::vector<std::uint32_t>& facets,
+                                          const std::vector<std::int32_t>& neighbors, std::size_t width) {
     const std::size_t m = facets.size() / width;
-    const std::vector<std::uint32_t> live = hull_facet ? std::vector<std::uint32_t>() : hull.live();
-    const std::vector<std::uint32_t>& id = hull_facet ? *hull_facet : live;
     std::vector<std::int32_t> parent(m);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](std::int32_t x) {
@@ -996,8 +968,14 @@ std::vector<std::int32_t> coplanar_groups(const Quickhull& hull, const std::vect
     return group;
 }
 
-/// An error for a non-finite coordinate, or empty.
-std::string check_finite(const double* points, std::size_t count, int d, std::int64_t* blamed) {
+/// An error for input `name` (hull_nd, delaunay_nd) takes no further: a dimension outside
+/// lowest .. highest, too many points or a non-finite coordinate (its point in `blamed`); or empty.
+std::string check_input(const char* name, int lowest, int highest, const double* points, std::size_t count, int d,
+                        std::int64_t* blamed) {
+    if (d < lowest || d > highest)
+        return std::string(name) + " takes " + std::to_string(lowest) + " to " + std::to_string(highest) +
+               " dimensions, not " + std::to_string(d);
+    if (count >= (std::size_t{1} << 31)) return "more than 2^31 points";
     for (std::size_t i = 0; i < count; ++i)
         for (int j = 0; j < d; ++j)
             if (!std::isfinite(points[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(j)])) {
@@ -1017,16 +995,7 @@ std::string flat_message(int spanned, int dimension, const char* what) {
 HullNd hull_nd(const double* points, std::size_t count, int dimension) {
     HullNd out;
     out.dimension = dimension;
-    if (dimension < 2 || dimension > kMaxHullNdDimension) {
-        out.error = "hull_nd takes 2 to " + std::to_string(kMaxHullNdDimension) + " dimensions, not " +
-                    std::to_string(dimension);
-        return out;
-    }
-    if (count >= (std::size_t{1} << 31)) {
-        out.error = "more than 2^31 points";
-        return out;
-    }
-    out.error = check_finite(points, count, dimension, &out.error_point);
+    out.error = check_input("hull_nd", 2, kMaxHullNdDimension, points, count, dimension, &out.error_point);
     if (!out.ok()) return out;
     if (count < static_cast<std::size_t>(dimension) + 1) {
         out.error = "a hull in " + std::to_string(dimension) + " dimensions needs at least " +
@@ -1038,12 +1007,12 @@ HullNd hull_nd(const double* points, std::size_t count, int dimension) {
     std::vector<std::uint32_t> ids(count);
     std::iota(ids.begin(), ids.end(), 0u);
     int spanned = 0;
-    if (!hull.build(ids, &spanned, &out.error_point)) {
+    if (!hull.build(ids, &spanned)) {
         out.error = flat_message(spanned, dimension, "a hull");
         return out;
     }
     hull.result(&out.facets, &out.neighbors);
-    out.group = coplanar_groups(hull, out.facets, out.neighbors, static_cast<std::size_t>(dimension));
+    out.group = coplanar_groups(hull, hull.live(), out.facets, out.neighbors, static_cast<std::size_t>(dimension));
     out.vertices = out.facets;
     std::sort(out.vertices.begin(), out.vertices.end());
     out.vertices.erase(std::unique(out.vertices.begin(), out.vertices.end()), out.vertices.end());
@@ -1064,25 +1033,7 @@ double hull_nd_volume(const double* points, std::size_t count, int dimension) {
     for (std::size_t f = 0; f < h.facet_count(); ++f) {
         for (std::size_t r = 0; r < d; ++r)
             for (std::size_t j = 0; j < d; ++j) a[r * d + j] = points[h.facets[f * d + r] * d + j] - centre[j];
-        // |det| by Gaussian elimination with partial pivoting.
-        double det = 1;
-        for (std::size_t c = 0; c < d && det != 0; ++c) {
-            std::size_t best = c;
-            for (std::size_t r = c + 1; r < d; ++r)
-                if (std::fabs(a[r * d + c]) > std::fabs(a[best * d + c])) best = r;
-            if (a[best * d + c] == 0) {
-                det = 0;
-                break;
-            }
-            if (best != c)
-                for (std::size_t j = 0; j < d; ++j) std::swap(a[best * d + j], a[c * d + j]);
-            det *= a[c * d + c];
-            for (std::size_t r = c + 1; r < d; ++r) {
-                const double factor = a[r * d + c] / a[c * d + c];
-                for (std::size_t j = c; j < d; ++j) a[r * d + j] -= factor * a[c * d + j];
-            }
-        }
-        total += std::fabs(det);
+        total += std::fabs(float_det(a.data(), dimension));
     }
     return total / factorial;
 }
@@ -1091,16 +1042,7 @@ DelaunayNd delaunay_nd(const double* points, std::size_t count, int dimension, b
     DelaunayNd out;
     out.dimension = dimension;
     const int d = dimension;
-    if (d < 1 || d > kMaxHullNdDimension - 1) {
-        out.error = "delaunay_nd takes 1 to " + std::to_string(kMaxHullNdDimension - 1) + " dimensions, not " +
-                    std::to_string(d);
-        return out;
-    }
-    if (count >= (std::size_t{1} << 31)) {
-        out.error = "more than 2^31 points";
-        return out;
-    }
-    out.error = check_finite(points, count, d, &out.error_point);
+    out.error = check_input("delaunay_nd", 1, kMaxHullNdDimension - 1, points, count, d, &out.error_point);
     if (!out.ok()) return out;
     // Repeated points: the lowest index represents each group of equal points.
     auto row = [&](std::uint32_t i) { return points + i * static_cast<std::size_t>(d); };
@@ -1133,7 +1075,7 @@ DelaunayNd delaunay_nd(const double* points, std::size_t count, int dimension, b
     Quickhull hull(predicate, true);
     int spanned = 0;
     distinct.push_back(predicate.infinity());
-    if (!hull.build(distinct, &spanned, &out.error_point)) {
+    if (!hull.build(distinct, &spanned)) {
         // The lifted points span one dimension more than the points.
         out.error = flat_message(spanned - 1, d, "a Delaunay triangulation");
         return out;
@@ -1173,7 +1115,7 @@ DelaunayNd delaunay_nd(const double* points, std::size_t count, int dimension, b
     }
     // Cospherical neighbours (the neighbour's far corner on the simplex's sphere: on the lifted
     // facet's hyperplane, exactly) joined.
-    out.group = coplanar_groups(hull, out.simplices, out.neighbors, corners, &kept_facet);
+    out.group = coplanar_groups(hull, kept_facet, out.simplices, out.neighbors, corners);
     return out;
 }
 
