@@ -30,13 +30,7 @@ say() { printf 'python bench: %s\n' "$*" >&2; }
 cleanup() { rm -rf "$work/ply"; }
 trap cleanup EXIT
 
-venv=build/python-bench-venv
-if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ] || [ ! -x "$venv/bin/python" ]; then
-  say "installing hullkit from ./python into $venv (Debian's /usr/bin/python3, its numpy, scipy, dask)"
-  rm -rf "$venv" python/build python/hullkit.egg-info
-  /usr/bin/python3 -m venv --system-site-packages "$venv"
-  HULLKIT_BUILD_JOBS=$(nproc) "$venv/bin/pip" install --quiet --no-build-isolation --no-index ./python
-fi
+. bench/python_venv.sh
 py() { (cd build && "../$venv/bin/python" ../bench/python_bench.py "$@"); }
 
 if [ "$quick" = 1 ]; then

@@ -12,13 +12,7 @@ quick=${HULLKIT_BENCH_QUICK:-0}
 work=bench/out/spatial-nd
 mkdir -p "$work"
 say() { printf 'spatial-nd bench: %s\n' "$*" >&2; }
-venv=build/python-bench-venv
-if [ "${HULLKIT_BENCH_NO_BUILD:-0}" != 1 ] || [ ! -x "$venv/bin/python" ]; then
-  say "installing hullkit from ./python into $venv (Debian's /usr/bin/python3, its numpy and scipy)"
-  rm -rf "$venv" python/build python/hullkit.egg-info
-  /usr/bin/python3 -m venv --system-site-packages "$venv"
-  HULLKIT_BUILD_JOBS=$(nproc) "$venv/bin/pip" install --quiet --no-build-isolation --no-index ./python
-fi
+. bench/python_venv.sh
 py() { (cd build && "../$venv/bin/python" ../bench/spatial_nd_bench.py "$@"); }
 if [ "$quick" = 1 ]; then
   procs=1 scale=10 report=$work/results-spatial-nd.md

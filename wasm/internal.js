@@ -62,9 +62,10 @@ function described(value) {
  * count must fit uint32. Non-finite numbers are passed on (the core names their point).
  */
 export function toFloat64(coordinates, where, dimension = 3) {
-  const axes = dimension === 2 ? ['x', 'y'] : ['x', 'y', 'z'];
-  const flatLayout = dimension === 2 ? 'x0 y0 x1 y1 ...' : 'x0 y0 z0 x1 y1 z1 ...';
-  const pointLayout = dimension === 2 ? '[x, y] or {x, y}' : '[x, y, z] or {x, y, z}';
+  // Above 3 dimensions points are arrays of `dimension` numbers (no named axes for objects).
+  const axes = dimension === 2 ? ['x', 'y'] : dimension === 3 ? ['x', 'y', 'z'] : null;
+  const flatLayout = dimension === 2 ? 'x0 y0 x1 y1 ...' : dimension === 3 ? 'x0 y0 z0 x1 y1 z1 ...' : `${dimension} numbers per point`;
+  const pointLayout = axes ? `[${axes.join(', ')}] or {${axes.join(', ')}}` : `[${dimension} numbers]`;
   const what = `pass a flat Float64Array (or array of numbers) ${flatLayout}, or an array of points ${pointLayout}`;
   let points = coordinates;
   if (!(coordinates instanceof Float64Array)) {
@@ -73,7 +74,7 @@ export function toFloat64(coordinates, where, dimension = 3) {
     }
     const first = coordinates[0];
     points = coordinates.length > 0 && first !== null && typeof first === 'object' && !ArrayBuffer.isView(coordinates)
-      ? flattenPoints(coordinates, where, axes, what)
+      ? flattenPoints(coordinates, where, axes, what, dimension)
       : flatNumbers(coordinates, where, what);
   }
   if (points.length % dimension !== 0) {
@@ -98,9 +99,8 @@ function flatNumbers(values, where, what) {
   return Float64Array.from(values);
 }
 
-/** An array of points ([x, y, z] arrays or typed arrays, or {x, y, z} objects) flattened. */
-function flattenPoints(points, where, axes, what) {
-  const d = axes.length;
+/** An array of points ([x, y, z] arrays or typed arrays, or {x, y, z} objects when `axes` names them) flattened, d per point. */
+function flattenPoints(points, where, axes, what, d = axes.length) {
   const out = new Float64Array(d * points.length);
   const fail = (i, problem) => new HullkitError(`${where}: points[${i}]${problem}; ${what}`, { pointIndex: i });
   for (let i = 0; i < points.length; i++) {
@@ -114,7 +114,7 @@ function flattenPoints(points, where, axes, what) {
         if (typeof v !== 'number') throw fail(i, `[${k}] is ${described(v)}, not a number`);
         out[d * i + k] = v;
       }
-    } else if (p !== null && typeof p === 'object') {
+    } else if (axes && p !== null && typeof p === 'object') {
       for (let k = 0; k < d; k++) {
         const v = p[axes[k]];
         if (typeof v !== 'number') throw fail(i, ` has no numeric ${axes[k]} (${axes[k]} is ${v === undefined ? 'missing' : described(v)})`);

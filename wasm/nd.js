@@ -3,42 +3,16 @@
 // go in flat (a Float64Array or an array of numbers, `dimension` coordinates per point) or as an
 // array of points (arrays of `dimension` numbers); every result array is a fresh typed array the
 // caller owns (copied out of the WebAssembly heap after the call).
-import { HullkitError, checkOptions, copyIn, toInt32, toUint32 } from './internal.js';
+import { HullkitError, checkOptions, copyIn, toFloat64, toInt32, toUint32 } from './internal.js';
 
 const DELAUNAY_ND_OPTIONS = ['furthestSite'];
 
-/** The points as a Float64Array of `dimension` coordinates each, or an error naming the problem. */
+/** The points as a Float64Array of `dimension` coordinates each (toFloat64), or an error naming the problem. */
 function pointsNd(values, dimension, where, what = 'points') {
   if (!Number.isInteger(dimension) || dimension < 1) {
     throw new HullkitError(`${where}: dimension must be a positive integer, got ${String(dimension)}`);
   }
-  let flat = values;
-  if (!(values instanceof Float64Array)) {
-    if (values == null || typeof values.length !== 'number' || typeof values === 'string') {
-      throw new TypeError(`${where}: ${what} must be a Float64Array, an array of numbers (${dimension} per point) or an array of points`);
-    }
-    if (values.length > 0 && (Array.isArray(values[0]) || ArrayBuffer.isView(values[0]))) {
-      flat = new Float64Array(values.length * dimension);
-      for (let i = 0; i < values.length; i++) {
-        const p = values[i];
-        if (!(Array.isArray(p) || ArrayBuffer.isView(p)) || p.length !== dimension) {
-          throw new HullkitError(`${where}: ${what} ${i} must have ${dimension} coordinates, got ${p == null ? String(p) : p.length}`);
-        }
-        for (let j = 0; j < dimension; j++) {
-          if (typeof p[j] !== 'number') throw new HullkitError(`${where}: ${what} ${i} has a non-number coordinate ${j} (${String(p[j])})`);
-          flat[i * dimension + j] = p[j];
-        }
-      }
-    } else {
-      for (let i = 0; i < values.length; i++) {
-        if (typeof values[i] !== 'number') throw new HullkitError(`${where}: entry ${i} of ${what} is not a number (${String(values[i])})`);
-      }
-      flat = Float64Array.from(values);
-    }
-  }
-  if (flat.length % dimension !== 0) {
-    throw new HullkitError(`${where}: ${flat.length} coordinates is not a whole number of ${dimension}D ${what}`);
-  }
+  const flat = toFloat64(values, what === 'queries' ? `${where}: queries` : where, dimension);
   if (flat.length / dimension > 0x7fffffff) throw new HullkitError(`${where}: too many ${what}, at most 2147483647`);
   return flat;
 }

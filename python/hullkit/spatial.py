@@ -178,6 +178,19 @@ def _checked_points(points, cls, many=None, what="points"):
     return array
 
 
+def _cofactor_normals(rows):
+    """The normal of each set of k - 1 rows in k dimensions ((m, k - 1, k) in, (m, k) out): the
+    generalised cross product, (-1)^j det(rows without column j); unnormalised."""
+    return _np.stack([(-1) ** j * _np.linalg.det(_np.delete(rows, j, axis=2)) for j in range(rows.shape[2])], axis=1)
+
+
+def _faces_without_neighbour(simplices, neighbors):
+    """The faces of (m, k + 1) simplices across which ``neighbors`` is -1 (the hull's), (f, k)."""
+    simplex, corner = _np.nonzero(neighbors == -1)
+    keep = _np.arange(simplices.shape[1])[None, :] != corner[:, None]
+    return simplices[simplex][keep].reshape(-1, simplices.shape[1] - 1)
+
+
 def _nd_facet_planes(points, facets):
     """Unit normals and offsets [n, c] of hull_nd's facets (m, k): outward (hull_nd's corners are
     ordered so that det[[c_0, 1], ..., [c_k-1, 1], [q, 1]] > 0 beyond; that determinant is
@@ -186,7 +199,7 @@ def _nd_facet_planes(points, facets):
     corners = points[facets]
     first = corners[:, 0]
     edges = corners[:, 1:] - first[:, None]  # (m, k - 1, k)
-    normal = _np.stack([-((-1) ** j) * _np.linalg.det(_np.delete(edges, j, axis=2)) for j in range(k)], axis=1)
+    normal = -_cofactor_normals(edges)
     with _np.errstate(all="ignore"):
         normal /= _np.linalg.norm(normal, axis=1)[:, None]
     offset = -_np.einsum("mi,mi->m", normal, first)
@@ -488,7 +501,7 @@ class Delaunay(_Incremental):
             heights = _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None]) * self.paraboloid_scale
             rows = _np.concatenate([edges, heights[:, :, None]], axis=2)  # (m, k, k + 1)
             # The normal of the k rows in k + 1 dimensions: its cofactors (the generalised cross product).
-            normal = _np.stack([(-1) ** j * _np.linalg.det(_np.delete(rows, j, axis=2)) for j in range(k + 1)], axis=1)
+            normal = _cofactor_normals(rows)
             with _np.errstate(all="ignore"):  # a flat simplex (none here) would give NaN, not a warning
                 normal /= _np.linalg.norm(normal, axis=1)[:, None]
             normal *= _np.sign(normal[:, -1:]) * (1 if self._furthest else -1)  # up for the upper hull
@@ -542,9 +555,7 @@ class Delaunay(_Incremental):
         self.dimension = self.ndim
         self._representative, self._duplicate_count = t.representative, t.duplicate_count
         self.simplices, self.neighbors = t.simplices, t.neighbors
-        simplex, corner = _np.nonzero(self.neighbors == -1)
-        keep = _np.arange(self.ndim + 1)[None, :] != corner[:, None]
-        self.convex_hull = self.simplices[simplex][keep].reshape(-1, self.ndim).astype(_np.int32)
+        self.convex_hull = _faces_without_neighbour(self.simplices, self.neighbors).astype(_np.int32)
         self._chain = self.convex_hull
 
     # -- 3D ------------------------------------------------------------------------------------
@@ -991,11 +1002,8 @@ class Voronoi(_Incremental):
         edges = corners[:, 1:] - first[:, None]
         rhs = 0.5 * _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None])
         self.vertices = _np.linalg.solve(edges, rhs[..., None])[..., 0] if m else _np.zeros((0, k))
-        neighbors = t.neighbors
         on_hull = _np.zeros(n, dtype=bool)
-        simplex, corner = _np.nonzero(neighbors == -1)
-        keep = _np.arange(k + 1)[None, :] != corner[:, None]
-        hull_faces = simplices[simplex][keep].reshape(-1, k)
+        hull_faces = _faces_without_neighbour(simplices, t.neighbors)
         on_hull[hull_faces.ravel()] = True
         # Cells: (point, simplex) pairs sorted, -1 first for a point on the hull.
         size = m + 1
