@@ -418,20 +418,22 @@ TEST_CASE("delaunay3: non-finite coordinates are errors naming the point", "[del
 }
 
 TEST_CASE("delaunay3: 1, 2, 3 and 8 threads give identical arrays", "[delaunay3][threads]") {
-    // Large enough for rounds to be cut into partitions (a round of at least 32768 points).
-    const std::vector<double> xyz = uniform(70000, 41);
-    const Delaunay3 one = run(xyz, 1);
-    REQUIRE(one.ok());
-    for (unsigned threads : {2u, 3u, 8u}) {
-        const Delaunay3 other = run(xyz, threads);
-        REQUIRE(other.tetrahedra == one.tetrahedra);
-        REQUIRE(other.neighbors == one.neighbors);
-        REQUIRE(other.hull == one.hull);
+    // Large enough for rounds to be cut into partitions (rounds of 8192 points and more); the
+    // clusters defer enough points in the first pass for the slab passes to run as well.
+    for (const auto& xyz : {uniform(70000, 41), hullkit_test::clustered3(100000, 20, 0.02, 47)}) {
+        const Delaunay3 one = run(xyz, 1);
+        REQUIRE(one.ok());
+        for (unsigned threads : {2u, 3u, 8u}) {
+            const Delaunay3 other = run(xyz, threads);
+            REQUIRE(other.tetrahedra == one.tetrahedra);
+            REQUIRE(other.neighbors == one.neighbors);
+            REQUIRE(other.hull == one.hull);
+        }
     }
 }
 
 TEST_CASE("delaunay3: large uniform and grid inputs verify, on threads", "[delaunay3][threads][heavy]") {
-    for (const auto& xyz : {uniform(100000, 43), grid3(30)}) {
+    for (const auto& xyz : {uniform(100000, 43), grid3(30), hullkit_test::clustered3(100000, 20, 0.02, 47)}) {
         const Delaunay3 one = run(xyz, 1);
         check_tetrahedralization(xyz, one);
         const Delaunay3 two = run(xyz, 2);

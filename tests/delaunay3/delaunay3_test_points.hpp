@@ -25,6 +25,23 @@ inline std::vector<double> grid3(int n) {
     return xyz;
 }
 
+/// n points in `clusters` Gaussian clusters (standard deviation `sigma`) around centres uniform in
+/// the unit cube: large rounds of these leave enough points along the first pass's partition
+/// boundaries for the later (slab) passes of the threaded insertion to run.
+inline std::vector<double> clustered3(std::size_t n, int clusters, double sigma, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::normal_distribution<double> normal(0, sigma);
+    std::vector<double> centres(3 * static_cast<std::size_t>(clusters));
+    for (double& c : centres) c = unit(rng);
+    std::vector<double> xyz(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t c = static_cast<std::size_t>(unit(rng) * clusters) % static_cast<std::size_t>(clusters);
+        for (int k = 0; k < 3; ++k) xyz[3 * i + k] = centres[3 * c + k] + normal(rng);
+    }
+    return xyz;
+}
+
 /// The points of `xyz` in a random order: point i of the result is point perm[i] of `xyz`.
 inline std::vector<double> shuffled3(const std::vector<double>& xyz, std::vector<std::uint32_t>& perm, std::uint64_t seed) {
     perm.resize(xyz.size() / 3);

@@ -11,18 +11,23 @@
 // (a small hash table, cleared after each point).
 //
 // Partitions (after Marot, Pellerin & Remacle, "One machine, one minute, three billion tetrahedra",
-// IJNME 2019, made deterministic). A large round's points, in Hilbert order, are cut into P ranges
-// of the curve, P depending only on the round's size (never on the thread count). Partition i owns
-// the tetrahedra whose finite corners all lie in its range (local index = curve position); it
-// walks, grows cavities and writes only there, taking new slots from its own free list and a block
-// of slots reserved for it before the pass. A point whose walk or cavity reaches a tetrahedron it
-// does not own (or that would overrun the block) is deferred, untouched. Neighbours of an owned
-// tetrahedron are owned by the same partition or by none (they share three corners), and
-// tetrahedra owned by none are never changed during a pass except for the one face entry that a
-// single owner rewrites; so partitions never read what another writes, and each partition's work
-// depends only on the mesh at the start of the pass and on its own points. Deferred points are
-// retried in a pass whose ranges are shifted by half a range, the last few serially. The mesh is
-// therefore the same, slot for slot, for every thread count and platform.
+// IJNME 2019, made deterministic). Each pass labels every point with a partition, by rules that
+// depend only on the points and the round (never on the thread count): the first pass cuts the
+// round's points, in Hilbert order, into P equal ranges of the curve (P from the round's size);
+// the later ones cut space into P slabs across an oblique direction at quantiles of the points
+// still pending (the first pass defers points along its ranges' boundaries, which are made of the
+// curve's axis-aligned cells; oblique slabs cross those in lines only, so most of them are inside a
+// slab in the next pass). Partition i owns the tetrahedra whose finite corners are all labelled i;
+// it walks, grows cavities and writes only there, taking new slots from its own free list and a
+// block of slots reserved for it before the pass. A point whose walk or cavity reaches a
+// tetrahedron it does not own (or that would overrun the block) is deferred, untouched. Neighbours
+// of an owned tetrahedron are owned by the same partition or by none (they share three corners),
+// and tetrahedra owned by none are never changed during a pass except for the one face entry that
+// a single owner rewrites; so partitions never read what another writes, and each partition's
+// work depends only on the mesh at the start of the pass and on its own points. What the passes
+// leave is inserted serially, as are small rounds and every round after a pass that deferred most
+// of its points (cavities reaching across partitions: points on a sphere). The mesh is therefore
+// the same, slot for slot, for every thread count and platform.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -47,7 +52,7 @@ constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
                                              {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
 
 /// A pass over fewer than 2 x this many points is left to the serial insertion.
-constexpr std::size_t kPartitionPoints = 16384;
+constexpr std::size_t kPartitionPoints = 4096;
 constexpr std::size_t kMaxPartitions = 8;
 constexpr int kMaxPasses = 3;
 
@@ -61,6 +66,8 @@ struct Shared {
     /// Per point, its number + 1 on the boundary of the cavity being filled (0 otherwise); each
     /// partition numbers only its own points (a cavity's corners are its own).
     std::vector<std::uint32_t> vertex_id;
+    /// Per point, the partition it belongs to in the current pass.
+    std::vector<std::uint8_t> part;
 };
 
 /// One partition's (or the serial) insertion: its workspace and, in a pass, its range of owned
@@ -78,13 +85,12 @@ public:
         free_ = free_slots;
         block_next_ = block_end_ = 0;
     }
-    /// Owns the corners [lo, hi) (and the vertex at infinity), with these free slots and the fresh
-    /// slots [block_begin, block_end).
-    void own_range(std::uint32_t lo, std::uint32_t hi, std::uint32_t start, std::vector<std::uint32_t>* free_slots,
-                   std::uint32_t block_begin, std::uint32_t block_end) {
+    /// Owns the tetrahedra whose finite corners all carry the label `part` (shared.part), with
+    /// these free slots and the fresh slots [block_begin, block_end).
+    void own_part(std::uint8_t part, std::uint32_t start, std::vector<std::uint32_t>* free_slots,
+                  std::uint32_t block_begin, std::uint32_t block_end) {
         restricted_ = true;
-        lo_ = lo;
-        hi_ = hi;
+        part_ = part;
         last_ = start;
         free_ = free_slots;
         block_next_ = block_begin;
@@ -92,10 +98,10 @@ public:
     }
     bool owns(std::uint32_t t) const {
         const std::uint32_t* c = shared_.mesh.corner.data() + 4 * static_cast<std::size_t>(t);
-        // c in [lo, hi) as one unsigned comparison; the vertex at infinity belongs to everyone.
-        const std::uint32_t width = hi_ - lo_;
-        return ((c[0] - lo_ < width) & (c[1] - lo_ < width) & (c[2] - lo_ < width) &
-                ((c[3] - lo_ < width) | (c[3] == kGhost))) != 0;
+        const std::uint8_t* label = shared_.part.data();
+        // The vertex at infinity belongs to everyone: a ghost asks its corner 0 twice.
+        const std::uint32_t last = c[3] == kGhost ? c[0] : c[3];
+        return ((label[c[0]] == part_) & (label[c[1]] == part_) & (label[c[2]] == part_) & (label[last] == part_)) != 0;
     }
     /// Fresh slots of the block not used (returned to the shared free list after a pass).
     std::uint32_t block_next() const { return block_next_; }
@@ -364,7 +370,7 @@ private:
 
     Shared& shared_;
     bool restricted_ = false;
-    std::uint32_t lo_ = 0, hi_ = 0;
+    std::uint8_t part_ = 0;
     std::uint32_t last_ = 0;
     std::vector<std::uint32_t>* free_ = nullptr;
     std::uint32_t block_next_ = 0, block_end_ = 0;
@@ -403,6 +409,7 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     mesh.corner.resize(20);
     mesh.adjacent.resize(20);
     shared.vertex_id.assign(m, 0);
+    shared.part.assign(m, 0);
     for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
     // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
     auto face_set = [&](int t, int k) {
@@ -436,27 +443,20 @@ public:
     }
 
     void insert_round(std::vector<std::uint32_t> pending) {
-        // The partitions' ranges of corners: the round's points cut into equal counts, the cuts moved
-        // by a fraction of a range each pass (0, 1/2, 1/4), so that the points deferred near one
-        // pass's cuts lie inside a range in the next.
-        // Every pass's cuts are taken from the whole round before the first pass (no copy of it kept).
-        constexpr double kShift[kMaxPasses] = {0.0, 0.5, 0.25};
         const std::size_t all = pending.size();
-        // Larger partitions defer fewer points (their boundary layer is a smaller share): 2 ranges
+        // Larger partitions defer fewer points (their boundary layer is a smaller share): 2 parts
         // below 2^17 points, 4 below 2^20, then 8. Never the thread count.
         const std::size_t parts = all < (std::size_t{1} << 17) ? 2 : all < (std::size_t{1} << 20) ? 4 : 8;
-        std::vector<std::uint32_t> bounds[kMaxPasses];
-        for (int pass = 0; pass < kMaxPasses; ++pass) {
-            bounds[pass].push_back(0);
-            for (std::size_t i = 0; i < parts; ++i) {
-                const std::size_t at = static_cast<std::size_t>((static_cast<double>(i) + kShift[pass]) *
-                                                                static_cast<double>(all) / static_cast<double>(parts));
-                if (at > 0 && pending[at] > bounds[pass].back()) bounds[pass].push_back(pending[at]);
-            }
-            bounds[pass].push_back(kGhost);
+        for (int pass = 0; pass < kMaxPasses && !serial_only_ && pending.size() >= 2 * kPartitionPoints; ++pass) {
+            label_points(pending, parts, pass);
+            const std::size_t before = pending.size();
+            pending = pass_over(std::move(pending), parts);
+            // Cavities that reach across the partitions (points on or near a sphere, where every
+            // circumsphere is nearly the sphere itself) defer almost every point: from then on
+            // the partitions would only cost time, so the rest is inserted serially. (Counts
+            // only: the same decision for every thread count.)
+            if (pending.size() > before - before / 4) serial_only_ = true;
         }
-        for (int pass = 0; pass < kMaxPasses && pending.size() >= 2 * kPartitionPoints; ++pass)
-            pending = pass_over(std::move(pending), bounds[pass]);
         serial_.own_all(last_, &free_);
         for (const std::uint32_t p : pending) {
             const bool inserted = serial_.insert(p);
@@ -466,19 +466,52 @@ public:
     }
 
 private:
-    /// One parallel pass over `pending` with the ranges [bounds[i], bounds[i + 1]); returns the
-    /// deferred points, in curve order.
-    std::vector<std::uint32_t> pass_over(std::vector<std::uint32_t> pending, const std::vector<std::uint32_t>& bounds) {
-        const std::size_t parts = bounds.size() - 1;
-        std::vector<std::vector<std::uint32_t>> lists(parts);
-        {
-            std::size_t i = 0;
-            for (const std::uint32_t p : pending) {
-                while (p >= bounds[i + 1]) ++i;
-                lists[i].push_back(p);
+    /// Labels every point with its partition for this pass (shared.part). The first pass cuts the
+    /// pending points (in curve order) into `parts` equal ranges of the curve. The points it defers
+    /// lie along the boundaries of those ranges, which are made of axis-aligned squares (the
+    /// curve's cells), so later passes cut space into slabs across an oblique direction instead
+    /// (x + y + z, then x - y + z: sums only, the same roundings everywhere), at quantiles of the
+    /// pending points: the new boundaries cross the old ones in lines only.
+    void label_points(const std::vector<std::uint32_t>& pending, std::size_t parts, int pass) {
+        std::uint8_t* label = shared_.part.data();
+        const std::size_t m = shared_.part.size();
+        if (pass == 0) {
+            std::size_t from = 0;
+            for (std::size_t i = 0; i < parts; ++i) {
+                const std::size_t to = i + 1 == parts ? m : pending[(i + 1) * pending.size() / parts];
+                std::fill(label + from, label + std::max(from, to), static_cast<std::uint8_t>(i));
+                from = std::max(from, to);
             }
-            pending = std::vector<std::uint32_t>();  // the lists hold them now
+            return;
         }
+        const double sign_y = pass == 1 ? 1.0 : -1.0;
+        const Predicates& predicates = shared_.predicates;
+        auto key = [&](std::uint32_t v) {
+            const double* q = predicates.p(v);
+            return q[0] + sign_y * q[1] + q[2];
+        };
+        std::vector<double> keys(pending.size());
+        for (std::size_t k = 0; k < pending.size(); ++k) keys[k] = key(pending[k]);
+        std::sort(keys.begin(), keys.end());
+        double cuts[kMaxPartitions];
+        for (std::size_t i = 1; i < parts; ++i) cuts[i - 1] = keys[i * keys.size() / parts];
+        constexpr std::size_t kBlock = std::size_t{1} << 16;
+        detail::parallel_for(threads_, (m + kBlock - 1) / kBlock, [&](std::size_t block) {
+            for (std::size_t v = block * kBlock; v < std::min(m, (block + 1) * kBlock); ++v) {
+                const double k = key(static_cast<std::uint32_t>(v));
+                std::uint8_t part = 0;
+                for (std::size_t i = 0; i + 1 < parts; ++i) part += cuts[i] <= k;
+                label[v] = part;
+            }
+        });
+    }
+
+    /// One parallel pass over `pending` (in curve order) with the partitions labelled in
+    /// shared.part; returns the deferred points, in curve order.
+    std::vector<std::uint32_t> pass_over(std::vector<std::uint32_t> pending, std::size_t parts) {
+        std::vector<std::vector<std::uint32_t>> lists(parts);
+        for (const std::uint32_t p : pending) lists[shared_.part[p]].push_back(p);
+        pending = std::vector<std::uint32_t>();  // the lists hold them now
         // Starting tetrahedra (serially): the one holding a point of the partition's list that it
         // owns, trying positions 0, 1, 3, 7, 15, ... (the list's first points lie at the range's
         // boundary, where tetrahedra often have corners in the next range). The points before the
@@ -487,11 +520,14 @@ private:
         std::vector<std::size_t> first(parts, 0);
         serial_.own_all(last_, &free_);
         for (std::size_t i = 0; i < parts; ++i) {
-            workers_[i].own_range(bounds[i], bounds[i + 1], 0, nullptr, 0, 0);
+            workers_[i].own_part(static_cast<std::uint8_t>(i), 0, nullptr, 0, 0);
             for (std::size_t k = 0; k < lists[i].size() && start[i] == kNoStart; k = 2 * k + 1) {
-                // (Furthest-site: every walk ends at a ghost, outside the hull, which may start one.)
+                // A ghost (the walk of a point outside the hull: every point of a furthest-site
+                // tetrahedralization, most points on a sphere) starts one when the finite side of
+                // its hull face is owned too: the partition's walks begin there.
                 const std::uint32_t t = serial_.walk(lists[i][k]);
-                if ((shared_.furthest || shared_.mesh.corner[4 * t + 3] != kGhost) && workers_[i].owns(t)) {
+                const bool ghost = shared_.mesh.corner[4 * t + 3] == kGhost;
+                if (workers_[i].owns(t) && (!ghost || workers_[i].owns(shared_.mesh.links()[4 * t + 3] >> 2))) {
                     start[i] = t;
                     first[i] = k;
                 }
@@ -523,7 +559,7 @@ private:
                 return;
             }
             Worker& w = workers_[i];
-            w.own_range(bounds[i], bounds[i + 1], start[i], &free[i], block_begin[i], block_end[i]);
+            w.own_part(static_cast<std::uint8_t>(i), start[i], &free[i], block_begin[i], block_end[i]);
             const std::vector<std::uint32_t>& list = lists[i];
             deferred[i].assign(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(first[i]));
             for (std::size_t k = first[i]; k < list.size(); ++k)
@@ -539,6 +575,7 @@ private:
             next.insert(next.end(), deferred[i].begin(), deferred[i].end());
             if (lasts[i] != kNoStart) last_ = lasts[i];
         }
+        std::sort(next.begin(), next.end());  // slabs list their points slab by slab
         return next;
     }
 
@@ -564,6 +601,7 @@ private:
     std::vector<Worker> workers_;
     std::vector<std::uint32_t> free_;  ///< free slots, shared between passes
     std::uint32_t last_ = 0;
+    bool serial_only_ = false;  ///< a pass deferred most of its points: no more partitions
 };
 
 }  // namespace
