@@ -14,7 +14,7 @@
 // IJNME 2019, made deterministic). Each pass labels every point with a partition, by rules that
 // depend only on the points and the round (never on the thread count): the first pass cuts the
 // round's points, in Hilbert order, into P equal ranges of the curve (P from the round's size);
-// the later ones cut space into P slabs across an oblique direction at quantiles of the points
+// the later ones cut space into P slabs across oblique directions at quantiles of the points
 // still pending (the first pass defers points along its ranges' boundaries, which are made of the
 // curve's axis-aligned cells; oblique slabs cross those in lines only, so most of them are inside a
 // slab in the next pass). Partition i owns the tetrahedra whose finite corners are all labelled i;
@@ -24,7 +24,10 @@
 // of an owned tetrahedron are owned by the same partition or by none (they share three corners),
 // and tetrahedra owned by none are never changed during a pass except for the one face entry that
 // a single owner rewrites; so partitions never read what another writes, and each partition's
-// work depends only on the mesh at the start of the pass and on its own points. What the passes
+// work depends only on the mesh at the start of the pass and on its own points. A walk that would
+// leave the partition is tried once more from the anchor of the point's cell of the curve (the
+// last tetrahedron the partition made for a point there, or one it owns from earlier passes): a
+// jump between clusters no longer defers every point after it. What the passes
 // leave is inserted serially, as are small rounds and every round after a pass that deferred most
 // of its points (cavities reaching across partitions: points on a sphere). The mesh is therefore
 // the same, slot for slot, for every thread count and platform.
@@ -54,7 +57,9 @@ constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
 /// A pass over fewer than 2 x this many points is left to the serial insertion.
 constexpr std::size_t kPartitionPoints = 4096;
 constexpr std::size_t kMaxPartitions = 8;
-constexpr int kMaxPasses = 3;
+constexpr int kMaxPasses = 4;
+constexpr std::size_t kCells = 4096;
+constexpr std::uint32_t kNoAnchor = 0xffffffffu;
 
 /// What the partitions share: the points and the mesh.
 struct Shared {
@@ -68,6 +73,11 @@ struct Shared {
     std::vector<std::uint32_t> vertex_id;
     /// Per point, the partition it belongs to in the current pass.
     std::vector<std::uint8_t> part;
+    /// Per cell of the curve (kCells equal ranges of local indices), a tetrahedron made when a
+    /// point of that cell was last inserted in a pass (kNoAnchor: none); partitions restart a walk
+    /// there (Worker::insert).
+    std::vector<std::uint32_t> anchor;
+    std::uint32_t cell_shift = 0;  ///< local index >> cell_shift = its cell
 };
 
 /// One partition's (or the serial) insertion: its workspace and, in a pass, its range of owned
@@ -110,11 +120,42 @@ public:
 
     /// Inserts p; false when p must be deferred (nothing was changed).
     bool insert(std::uint32_t p) {
-        const std::uint32_t t0 = walk(p);
-        if (t0 == kDefer) return false;
+        std::uint32_t t0 = walk(p);
+        if (t0 == kDefer) {
+            // The walk from the last new tetrahedron left the partition (a jump along the curve
+            // between clusters, or across a slab): once more from the anchor of p's cell, a
+            // tetrahedron of this partition made for a point near p, when there is one.
+            const std::uint32_t cell = p >> shared_.cell_shift;
+            const std::uint32_t a = anchor_[cell];
+            if (a == kNoAnchor || a == last_ || shared_.mesh.corner[4 * std::size_t{a} + 3] == kFree) return false;
+            last_ = a;
+            t0 = walk(p);
+            if (t0 == kDefer) return false;
+        }
         if (!grow_cavity(t0, p)) return false;
-        return fill_cavity();
+        if (!fill_cavity()) return false;
+        if (restricted_) {
+            const std::uint32_t cell = p >> shared_.cell_shift;
+            if (anchor_[cell] == kNoAnchor) anchored_.push_back(cell);
+            anchor_[cell] = last_;
+        }
+        return true;
     }
+
+    /// Forgets the anchors (before a pass).
+    void reset_anchors() {
+        if (anchor_.empty()) anchor_.assign(kCells, kNoAnchor);
+        for (const std::uint32_t cell : anchored_) anchor_[cell] = kNoAnchor;
+        anchored_.clear();
+    }
+    /// Starts this pass with `t` as the anchor of `cell` (a finite tetrahedron this partition owns).
+    void seed_anchor(std::uint32_t cell, std::uint32_t t) {
+        if (anchor_[cell] == kNoAnchor) anchored_.push_back(cell);
+        anchor_[cell] = t;
+    }
+    /// The anchors set in this pass, for Shared::anchor afterwards.
+    const std::vector<std::uint32_t>& anchored() const { return anchored_; }
+    std::uint32_t anchor(std::uint32_t cell) const { return anchor_[cell]; }
 
     /// A tetrahedron that conflicts with p: one holding it, or a ghost whose hull face p sees;
     /// kDefer when the walk would leave the owned tetrahedra.
@@ -381,6 +422,10 @@ private:
     std::vector<std::uint32_t> numbered_;  ///< the vertices numbered for the current cavity
     std::uint32_t ghost_id_ = 0;
     std::uint32_t random_ = 0x9e3779b9u;
+    /// Per cell, the tetrahedron this partition last made for a point there in this pass (or
+    /// seeded from Shared::anchor), each a slot only this partition writes during the pass;
+    /// `anchored_` lists the cells set.
+    std::vector<std::uint32_t> anchor_, anchored_;
 };
 
 /// The first tetrahedron from the first four affinely independent points in insertion order and
@@ -410,6 +455,8 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     mesh.adjacent.resize(20);
     shared.vertex_id.assign(m, 0);
     shared.part.assign(m, 0);
+    shared.anchor.assign(kCells, kNoAnchor);
+    while ((m >> shared.cell_shift) >= kCells) ++shared.cell_shift;
     for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
     // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
     auto face_set = [&](int t, int k) {
@@ -470,8 +517,8 @@ private:
     /// pending points (in curve order) into `parts` equal ranges of the curve. The points it defers
     /// lie along the boundaries of those ranges, which are made of axis-aligned squares (the
     /// curve's cells), so later passes cut space into slabs across an oblique direction instead
-    /// (x + y + z, then x - y + z: sums only, the same roundings everywhere), at quantiles of the
-    /// pending points: the new boundaries cross the old ones in lines only.
+    /// (x + y + z, then x - y + z, then x + y - z; sums only, the same roundings everywhere) at
+    /// quantiles of the pending points: the new boundaries cross the old ones in lines only.
     void label_points(const std::vector<std::uint32_t>& pending, std::size_t parts, int pass) {
         std::uint8_t* label = shared_.part.data();
         const std::size_t m = shared_.part.size();
@@ -484,11 +531,12 @@ private:
             }
             return;
         }
-        const double sign_y = pass == 1 ? 1.0 : -1.0;
+        // (Products by +-1 are exact: fused or not, the same keys.)
+        const double sign_y = pass == 2 ? -1.0 : 1.0, sign_z = pass == 3 ? -1.0 : 1.0;
         const Predicates& predicates = shared_.predicates;
         auto key = [&](std::uint32_t v) {
             const double* q = predicates.p(v);
-            return q[0] + sign_y * q[1] + q[2];
+            return q[0] + sign_y * q[1] + sign_z * q[2];
         };
         std::vector<double> keys(pending.size());
         for (std::size_t k = 0; k < pending.size(); ++k) keys[k] = key(pending[k]);
@@ -533,6 +581,15 @@ private:
                 }
             }
         }
+        // Each partition starts with the anchors (of earlier passes) that are finite tetrahedra it owns.
+        for (std::size_t i = 0; i < parts; ++i) workers_[i].reset_anchors();
+        const std::uint32_t* corner = shared_.mesh.corner.data();
+        for (std::uint32_t cell = 0; cell < kCells; ++cell) {
+            const std::uint32_t t = shared_.anchor[cell];
+            if (t == kNoAnchor || corner[4 * std::size_t{t} + 3] >= kFree) continue;  // ghost or free
+            const std::uint8_t owner = shared_.part[corner[4 * std::size_t{t}]];
+            if (owner < parts && workers_[owner].owns(t)) workers_[owner].seed_anchor(cell, t);
+        }
         // Free slots shared out in order, then a block of fresh slots each.
         std::vector<std::vector<std::uint32_t>> free(parts);
         std::vector<std::uint32_t> block_begin(parts), block_end(parts);
@@ -566,6 +623,8 @@ private:
                 if (!w.insert(list[k])) deferred[i].push_back(list[k]);
             lasts[i] = w.last();
         });
+        for (std::size_t i = 0; i < parts; ++i)
+            for (const std::uint32_t cell : workers_[i].anchored()) shared_.anchor[cell] = workers_[i].anchor(cell);
         // Unused slots back to the shared free list, in partition order.
         std::vector<std::uint32_t> next;
         for (std::size_t i = 0; i < parts; ++i) {
