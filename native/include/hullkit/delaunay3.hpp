@@ -25,13 +25,14 @@
 // order and thread count; it is the one CGAL's Delaunay_triangulation_3 builds with its default
 // perturbation. Coplanar hull faces are triangulated by the same rule.
 //
-// Threads: large rounds of the insertion are cut into ranges of the Hilbert curve inserted on their
-// own threads; the cut depends only on the points, so every thread count builds the same mesh.
+// Threads: large rounds of the insertion are cut into partitions inserted on their own threads
+// (ranges of the Hilbert curve, then slabs across oblique directions for the points the ranges
+// defer); the cuts depend only on the points, so every thread count builds the same mesh.
 //
 // Memory: the working mesh is two arrays of 16 bytes per tetrahedron (corners, neighbours), about
 // 6.9 slots per point for uniform points (6.75 tetrahedra, the rest free); the output reuses them
 // (no second copy). With the points' scaled copy (24 bytes) and four 4-byte indices per point,
-// about 260 bytes per point at the peak, the input not counted.
+// about 260 bytes per point at the peak (and 1 byte for the partition label), the input not counted.
 #pragma once
 
 #include <cstddef>
