@@ -826,20 +826,21 @@ class Voronoi(_Incremental):
         self.point_region = region[representative]
         self._region_lists = (cells, offsets, distinct)
         if volumes is None:  # 4D and up: computed on first use (see volumes)
-            self._volumes, self._volume_parts = None, (cells, offsets, representative)
+            self._volumes, self._volume_parts = None, (self._triangulation_nd, representative)
+            self._triangulation_nd = None
         else:
             self.volumes = volumes[representative]
 
     @property
     def volumes(self):
         """Each point's cell area (2D) or volume, inf when unbounded (a repeated point: its
-        representative's). Above 3 dimensions made on first use: the exact hull of each bounded
-        cell's vertices (_core.cell_volumes_nd), its volume from the facets in floating point."""
+        representative's). Above 3 dimensions made on first use, in floating point, from the
+        Delaunay triangulation's faces and their circumcentres (hullkit::voronoi_nd_volumes: each
+        cell a signed sum of orthoschemes, every face visited once)."""
         if self._volumes is None and self._volume_parts is not None:
-            cells, offsets, representative = self._volume_parts
+            triangulation, representative = self._volume_parts
             with _translated():
-                volumes = _core.cell_volumes_nd(_np.ascontiguousarray(self.vertices), _np.ascontiguousarray(cells, dtype=_np.int64),
-                                                _np.ascontiguousarray(offsets, dtype=_np.int64))
+                volumes = triangulation.cell_volumes()
             self._volumes = volumes[_np.asarray(representative, dtype=_np.intp)]
         return self._volumes
 
@@ -995,6 +996,7 @@ class Voronoi(_Incremental):
             _not_supported(f"a diagram of cospherical points in {k} dimensions (the corners of simplices {int(group[s])} "
                            f"and {s} lie on one sphere)", "Voronoi")
         self.dimension = k
+        self._triangulation_nd = t  # for the volumes, on first use
         simplices = t.simplices.astype(_np.int64)
         m, n = len(simplices), len(points)
         corners = points[simplices]

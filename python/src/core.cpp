@@ -1436,41 +1436,7 @@ py::tuple hull_nd(const Points& points) {
                           owned(std::move(vertices)), owned(std::move(h.group)));
 }
 
-/// The volume of each cell: the hull of vertices[cells[offsets[i]:offsets[i + 1]]] (hullkit::
-/// hull_nd_volume), inf for a cell that lists -1 (unbounded), NaN for an empty one.
-py::array_t<double> cell_volumes_nd(const Points& vertices, const py::array_t<std::int64_t, py::array::c_style>& cells,
-                                    const py::array_t<std::int64_t, py::array::c_style>& offsets) {
-    const int dims = columns_of(vertices, "vertices");
-    const std::size_t count = static_cast<std::size_t>(offsets.size()) - 1;
-    std::vector<double> volume(count, std::numeric_limits<double>::quiet_NaN());
-    const double* xyz = vertices.data();
-    const std::int64_t* cell = cells.data();
-    const std::int64_t* offset = offsets.data();
-    const auto n = static_cast<std::int64_t>(vertices.shape(0));
-    for (std::size_t i = 0; i <= count; ++i)
-        if (offset[i] < 0 || offset[i] > cells.size() || (i && offset[i] < offset[i - 1]))
-            throw std::invalid_argument("cell_volumes_nd: offsets out of order or range");
-    {
-        py::gil_scoped_release unlocked;
-        std::vector<double> corners;
-        for (std::size_t i = 0; i < count; ++i) {
-            if (offset[i] == offset[i + 1]) continue;
-            if (cell[offset[i]] < 0) {
-                volume[i] = std::numeric_limits<double>::infinity();
-                continue;
-            }
-            corners.clear();
-            for (std::int64_t k = offset[i]; k < offset[i + 1]; ++k) {
-                if (cell[k] < 0 || cell[k] >= n) throw std::invalid_argument("cell_volumes_nd: a vertex index out of range");
-                corners.insert(corners.end(), xyz + cell[k] * dims, xyz + (cell[k] + 1) * dims);
-            }
-            volume[i] = hullkit::hull_nd_volume(corners.data(), corners.size() / static_cast<std::size_t>(dims), dims);
-        }
-    }
-    return owned(std::move(volume));
-}
-
-/// The Delaunay triangulation in d dimensions, kept for point location.
+/// The Delaunay triangulation in d dimensions, kept for point location and the Voronoi volumes.
 class TriangulationNd {
 public:
     TriangulationNd(const Points& points, bool furthest_site)
@@ -1494,6 +1460,17 @@ public:
     py::array_t<std::int32_t> group() const { return owned(std::vector<std::int32_t>(d_.group)); }
     py::array_t<std::uint32_t> representative() const { return owned(std::vector<std::uint32_t>(d_.representative)); }
     std::size_t duplicate_count() const { return d_.duplicate_count; }
+    /// Each point's Voronoi cell volume (hullkit::voronoi_nd_volumes): inf when unbounded, NaN
+    /// for a repeated point (its representative has the cell).
+    py::array_t<double> cell_volumes() const {
+        std::vector<double> volume;
+        {
+            py::gil_scoped_release unlocked;
+            volume = hullkit::voronoi_nd_volumes(points_.data(), d_.representative.size(), d_.dimension, d_.simplices.data(),
+                                                 d_.simplex_count());
+        }
+        return owned(std::move(volume));
+    }
     py::array_t<std::int32_t> locate(const Points& queries) const {
         if (columns_of(queries, "xi") != d_.dimension) throw std::invalid_argument("xi has the wrong dimension");
         const std::size_t q = static_cast<std::size_t>(queries.shape(0));
@@ -1527,7 +1504,6 @@ PYBIND11_MODULE(_core, m) {
           py::arg("threads") = 0u);
     m.def("verify_triangles", &verify_triangles);
     m.def("hull_nd", &hull_nd);
-    m.def("cell_volumes_nd", &cell_volumes_nd);
     m.def("orient_nd", [](const Points& rows) {
         const int dims = columns_of(rows, "rows");
         if (rows.shape(0) != dims + 1) throw std::invalid_argument("orient_nd needs D + 1 rows of D coordinates");
@@ -1540,7 +1516,8 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("group", &TriangulationNd::group)
         .def_property_readonly("representative", &TriangulationNd::representative)
         .def_property_readonly("duplicate_count", &TriangulationNd::duplicate_count)
-        .def("locate", &TriangulationNd::locate);
+        .def("locate", &TriangulationNd::locate)
+        .def("cell_volumes", &TriangulationNd::cell_volumes);
     m.def("surface_extras", &surface_extras);
     m.def("facet_sides", &facet_sides);
     m.def("facet_holding", &facet_holding);

@@ -430,3 +430,24 @@ TEST_CASE("refine: random graphs with crossing segments, whole hull and Triangle
         REQUIRE(below <= d.unrefined_count);
     }
 }
+
+TEST_CASE("refine: added points are ones the output can hold, where the input's units are subnormal (fuzz regression)", "[refine]") {
+    // tests/data/fuzz/constrained-steiner-points-subnormal-in-input-units.bin: a triangle with x
+    // coordinates near 1e-319. The points are scaled up while triangulated; the Steiner points,
+    // divided back, lost bits in the subnormal range and made a flat triangle of the output. Each
+    // new point is now rounded to one the output holds exactly.
+    const std::vector<double> xy = {4.0711009217318715e-320, 0, 0, 0, 3.1873162944510497e-319, 1.3328545234157988e-259};
+    const std::vector<std::uint32_t> segs = {0, 1};
+    hullkit::ConstrainedOptions options;
+    options.quality.min_angle = 4;
+    options.quality.conforming = true;
+    options.quality.max_steiner_points = 3000;
+    const ConstrainedDelaunay d = hullkit::constrained_delaunay(PointSpan2(xy), segs.data(), segs.size() / 2, options);
+    verified(d, true);
+    REQUIRE(d.steiner_count > 0);
+    // The triangles cover the input triangle up to the rounding of the points added on its sides
+    // (whose coordinates, as the output holds them, are multiples of 2^-1074: coarse here).
+    const mpq_class expected = (q(xy[2]) - q(xy[0])) * (q(xy[5]) - q(xy[1])) - (q(xy[3]) - q(xy[1])) * (q(xy[4]) - q(xy[0]));
+    const mpq_class error = abs(abs(twice_area(d)) - abs(expected)) / abs(expected);
+    CHECK(error.get_d() < 0.05);
+}

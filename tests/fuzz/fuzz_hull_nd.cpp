@@ -1,11 +1,12 @@
-// libFuzzer target: hullkit::hull_nd, delaunay_nd and locate_nd in 2 to 6 dimensions. The first
-// byte picks the dimension, the second how the rest is read: little-endian doubles (NaN,
-// infinities, huge and tiny magnitudes) or small signed integers (grids, repeats, cospherical and
-// flat sets). A hull must hold every point on the inner side of (or on) every facet, each facet
-// with a point strictly inside, neighbours across the right ridges and the vertices its corners;
-// a triangulation positively oriented simplices, neighbours sharing all corners but one, its
-// faces without neighbour supporting the hull, and each input point located in a simplex that has
-// it (or its representative) as a corner. Errors are one line.
+// libFuzzer target: hullkit::hull_nd, delaunay_nd, locate_nd and voronoi_nd_volumes in 2 to 6
+// dimensions. The first byte picks the dimension, the second how the rest is read: little-endian
+// doubles (NaN, infinities, huge and tiny magnitudes) or small signed integers (grids, repeats,
+// cospherical and flat sets). A hull must hold every point on the inner side of (or on) every
+// facet, each facet with a point strictly inside, neighbours across the right ridges and the
+// vertices its corners; a triangulation positively oriented simplices, neighbours sharing all
+// corners but one, its faces without neighbour supporting the hull, and each input point located
+// in a simplex that has it (or its representative) as a corner; the Voronoi volumes inf on the
+// hull and NaN for repeated points. Errors are one line.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -110,12 +111,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         if (above && below) std::abort();
     }
-    if (faces.size() < h.facets.size()) std::abort();  // at least as many pieces as the hull's facets
+    // At least as many pieces as the hull's facets: the Delaunay boundary triangulates each flat
+    // piece of the hull with all its points, the hull with its vertices only. Only up to 3D: a
+    // flat piece of a 4D hull is a 3D polytope, whose triangulations need not have the same
+    // number of tetrahedra (a cube: 5 or 6), and more points can mean fewer (a fuzz find).
+    if (d <= 3 && faces.size() < h.facets.size()) std::abort();
     const std::vector<std::int32_t> found = hullkit::locate_nd(p.data(), t, p.data(), count);
     for (std::size_t q = 0; q < count; ++q) {
         if (found[q] < 0) std::abort();
         const std::uint32_t* s = &t.simplices[static_cast<std::size_t>(found[q]) * c];
         if (std::count(s, s + c, t.representative[q]) != 1) std::abort();
     }
+    // Voronoi volumes: inf for every point on the hull (a corner of a face without neighbour), NaN
+    // for a repeated point (in no simplex); the rest in floating point, only computed.
+    const std::vector<double> volume = hullkit::voronoi_nd_volumes(p.data(), count, d, t.simplices.data(), m);
+    if (volume.size() != count) std::abort();
+    for (const std::uint32_t v : faces)
+        if (!(volume[v] > 1e308)) std::abort();
+    for (std::size_t q = 0; q < count; ++q)
+        if (t.representative[q] != q && volume[q] == volume[q]) std::abort();
     return 0;
 }

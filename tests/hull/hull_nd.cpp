@@ -12,6 +12,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "hullkit/hull_nd.hpp"
@@ -331,16 +332,26 @@ TEST_CASE("hull_nd and delaunay_nd: errors name what is wrong", "[hull_nd]") {
             "a Delaunay triangulation in 5 dimensions needs at least 6 distinct points, got 1");
 }
 
+namespace {
+
+/// The bytes of tests/data/fuzz/NAME (fuzz_hull_nd's inputs: at most 4096 bytes).
+std::vector<unsigned char> fuzz_bytes(const std::string& name) {
+    std::FILE* file = std::fopen((std::string(HULLKIT_TEST_DATA "/fuzz/") + name).c_str(), "rb");
+    REQUIRE(file != nullptr);
+    std::vector<unsigned char> bytes(4096);
+    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
+    std::fclose(file);
+    return bytes;
+}
+
+}  // namespace
+
 TEST_CASE("hull_nd and delaunay_nd: a fuzz input of doubles from 1e-150 to 1e150 in 5D (exact, fast)", "[hull_nd]") {
     // tests/data/fuzz/hull_nd-wide-exponents.bin as fuzz_hull_nd reads it: the first byte the
     // dimension (2 + 123 % 5), the second doubles, then 72 doubles: 14 points whose exact
     // determinants spanned 11 000 bits (over 10 s under the sanitizers before the entries' zero
     // limbs were skipped and the wide floating stage was added).
-    std::FILE* file = std::fopen(HULLKIT_TEST_DATA "/fuzz/hull_nd-wide-exponents.bin", "rb");
-    REQUIRE(file != nullptr);
-    std::vector<unsigned char> bytes(4096);
-    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
-    std::fclose(file);
+    const std::vector<unsigned char> bytes = fuzz_bytes("hull_nd-wide-exponents.bin");
     REQUIRE(bytes.size() == 581);
     const int d = 2 + bytes[0] % 5;
     REQUIRE(d == 5);
@@ -357,6 +368,30 @@ TEST_CASE("hull_nd and delaunay_nd: a fuzz input of doubles from 1e-150 to 1e150
         REQUIRE(h.error.find("flat") != std::string::npos);
         REQUIRE(!t.ok());
     }
+}
+
+TEST_CASE("hull_nd and delaunay_nd: a 4D boundary piece triangulated with more points in fewer simplices (fuzz input)", "[hull_nd]") {
+    // tests/data/fuzz/hull_nd-4d-boundary-fewer-pieces.bin as fuzz_hull_nd reads it: 4D (2 + 27 %
+    // 5), small integers (the second byte odd), 16 points. Flat pieces of the hull are 3D
+    // polytopes: the hull triangulates them with its vertices in 50 facets, the Delaunay
+    // triangulation's boundary with every point in 49 faces (a cube takes 5 or 6 tetrahedra).
+    // Both are exact; the fuzz target's count check now holds only up to 3D.
+    const std::vector<unsigned char> bytes = fuzz_bytes("hull_nd-4d-boundary-fewer-pieces.bin");
+    const int d = 2 + bytes[0] % 5;
+    REQUIRE(d == 4);
+    REQUIRE((bytes[1] & 1) == 1);
+    std::vector<double> p;
+    for (std::size_t k = 2; k < bytes.size(); ++k) p.push_back(static_cast<double>(static_cast<std::int8_t>(bytes[k]) % 4));
+    const std::size_t n = p.size() / 4;
+    p.resize(n * 4);
+    const hullkit::HullNd h = hullkit::hull_nd(p.data(), n, d);
+    const hullkit::DelaunayNd t = hullkit::delaunay_nd(p.data(), n, d);
+    REQUIRE(h.ok());
+    REQUIRE(t.ok());
+    check_hull(p, d, h);
+    check_delaunay(p, d, t, true);
+    const auto boundary = static_cast<std::size_t>(std::count(t.neighbors.begin(), t.neighbors.end(), -1));
+    CHECK(boundary < h.facet_count());
 }
 
 TEST_CASE("hull_nd: the flat pieces of the boundary (group) are exactly the coplanar neighbours", "[hull_nd]") {
@@ -387,4 +422,116 @@ TEST_CASE("hull_nd: the flat pieces of the boundary (group) are exactly the copl
     const std::vector<double> r = random_points(30, 5, 8);
     const hullkit::HullNd g = hullkit::hull_nd(r.data(), 30, 5);
     for (std::size_t f = 0; f < g.facet_count(); ++f) REQUIRE(g.group[f] == static_cast<std::int32_t>(f));
+}
+
+namespace {
+
+/// The circumcentre of simplex s of t, exactly (GMP, Gaussian elimination on the bisector
+/// equations 2 (c_k - c_0) . x = |c_k|^2 - |c_0|^2), rounded once.
+std::vector<double> exact_circumcentre(const std::vector<double>& p, int d, const hullkit::DelaunayNd& t, std::size_t s) {
+    const auto D = static_cast<std::size_t>(d);
+    Rows a(D, std::vector<mpq_class>(D + 1));
+    const std::uint32_t* c = &t.simplices[s * (D + 1)];
+    for (std::size_t k = 1; k <= D; ++k) {
+        mpq_class rhs = 0;
+        for (std::size_t j = 0; j < D; ++j) {
+            const mpq_class x(p[c[k] * D + j]), y(p[c[0] * D + j]);
+            a[k - 1][j] = 2 * (x - y);
+            rhs += x * x - y * y;
+        }
+        a[k - 1][D] = rhs;
+    }
+    for (std::size_t col = 0; col < D; ++col) {
+        std::size_t pivot = col;
+        while (a[pivot][col] == 0) ++pivot;
+        std::swap(a[col], a[pivot]);
+        for (std::size_t r = 0; r < D; ++r) {
+            if (r == col || a[r][col] == 0) continue;
+            const mpq_class f = a[r][col] / a[col][col];
+            for (std::size_t j = col; j <= D; ++j) a[r][j] -= f * a[col][j];
+        }
+    }
+    std::vector<double> out(D);
+    for (std::size_t j = 0; j < D; ++j) out[j] = mpq_class(a[j][D] / a[j][j]).get_d();
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("voronoi_nd_volumes: a line, and grid cells that are unit cubes in 2 to 5 dimensions", "[hull_nd][voronoi]") {
+    const std::vector<double> line = {0, 3, 1};
+    const hullkit::DelaunayNd segments = hullkit::delaunay_nd(line.data(), 3, 1);
+    REQUIRE(segments.ok());
+    const std::vector<double> lengths = hullkit::voronoi_nd_volumes(line.data(), 3, 1, segments.simplices.data(), segments.simplex_count());
+    REQUIRE(std::isinf(lengths[0]));
+    REQUIRE(std::isinf(lengths[1]));
+    REQUIRE(lengths[2] == 1.5);  // from 0.5 to 2
+    for (int d = 2; d <= 5; ++d) {
+        const int side = d == 5 ? 3 : 4;
+        std::vector<double> grid;
+        std::size_t count = 1;
+        for (int k = 0; k < d; ++k) count *= static_cast<std::size_t>(side);
+        for (std::size_t i = 0; i < count; ++i)
+            for (std::size_t j = 0, rest = i; j < static_cast<std::size_t>(d); ++j, rest /= static_cast<std::size_t>(side))
+                grid.push_back(static_cast<double>(rest % static_cast<std::size_t>(side)));
+        const hullkit::DelaunayNd t = hullkit::delaunay_nd(grid.data(), count, d);
+        REQUIRE(t.ok());
+        const std::vector<double> volume = hullkit::voronoi_nd_volumes(grid.data(), count, d, t.simplices.data(), t.simplex_count());
+        INFO("grid in " << d << " dimensions");
+        std::size_t interior = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            bool inside = true;
+            for (int j = 0; j < d; ++j) inside = inside && grid[i * d + j] > 0 && grid[i * d + j] < side - 1;
+            INFO("point " << i);
+            if (inside) {
+                REQUIRE(std::fabs(volume[i] - 1.0) < 1e-12);  // its cell: the unit cube about it
+                ++interior;
+            } else {
+                REQUIRE(std::isinf(volume[i]));
+            }
+        }
+        REQUIRE(interior > 0);
+    }
+}
+
+TEST_CASE("voronoi_nd_volumes: random points, each bounded cell against the hull of its exact vertices", "[hull_nd][voronoi]") {
+    for (int d = 2; d <= 5; ++d) {
+        const std::size_t n = d == 5 ? 60 : d == 4 ? 80 : 120;
+        const std::vector<double> p = random_points(n, d, 40 + static_cast<unsigned>(d));
+        const hullkit::DelaunayNd t = hullkit::delaunay_nd(p.data(), n, d);
+        REQUIRE(t.ok());
+        const std::vector<double> volume = hullkit::voronoi_nd_volumes(p.data(), n, d, t.simplices.data(), t.simplex_count());
+        // Points on the hull (in a facet without a neighbour) have unbounded cells.
+        std::vector<char> on_hull(n, 0);
+        std::vector<std::vector<std::size_t>> around(n);
+        for (std::size_t s = 0; s < t.simplex_count(); ++s)
+            for (int k = 0; k <= d; ++k) {
+                around[t.simplices[s * (d + 1) + k]].push_back(s);
+                if (t.neighbors[s * (d + 1) + k] < 0)
+                    for (int j = 0; j <= d; ++j)
+                        if (j != k) on_hull[t.simplices[s * (d + 1) + j]] = 1;
+            }
+        std::vector<std::vector<double>> centre(t.simplex_count());  // each once, exactly, when needed
+        std::size_t bounded = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            INFO("d " << d << " point " << i);
+            if (on_hull[i]) {
+                REQUIRE(std::isinf(volume[i]));
+                continue;
+            }
+            REQUIRE(std::isfinite(volume[i]));
+            // The hull of rounded circumcentres is slow above 3D: a few cells there.
+            if (d > 3 && bounded >= (d == 4 ? 8u : 2u)) continue;
+            std::vector<double> vertices;
+            for (const std::size_t s : around[i]) {
+                if (centre[s].empty()) centre[s] = exact_circumcentre(p, d, t, s);
+                vertices.insert(vertices.end(), centre[s].begin(), centre[s].end());
+            }
+            const double expected = hullkit::hull_nd_volume(vertices.data(), around[i].size(), d);
+            REQUIRE(std::isfinite(volume[i]));
+            REQUIRE(std::fabs(volume[i] - expected) <= 1e-9 * expected);
+            ++bounded;
+        }
+        REQUIRE(bounded > 0);
+    }
 }

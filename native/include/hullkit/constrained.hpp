@@ -23,7 +23,9 @@
 //     rounding of crossings; a simpler rule than Hobby's snap rounding, with the same aim: an exact
 //     CDT of the rounded graph). A rounded point that lands exactly on another segment splits it;
 //     one that lands on an existing point is that point. Every added point is within half a unit in
-//     the last place (per coordinate) of an exact crossing of two pieces.
+//     the last place (per coordinate) of an exact crossing of two pieces; where that coordinate is
+//     subnormal (inputs near 1e-310), within one unit of the subnormal spacing: added points, like
+//     the refinement's, are rounded to values the output holds exactly.
 // The triangulation is therefore a valid, exact CDT of the rounded graph: no triangle has zero area,
 // no segment is crossed, every edge that is not on a segment is locally Delaunay.
 //

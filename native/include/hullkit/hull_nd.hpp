@@ -56,6 +56,15 @@ HullNd hull_nd(const double* points, std::size_t count, int dimension);
 /// hull_nd reports an error (flat or too few points).
 double hull_nd_volume(const double* points, std::size_t count, int dimension);
 
+/// The volume of each of `count` points' Voronoi cells (dimension 1 .. kMaxHullNdDimension - 1),
+/// from the Delaunay triangulation `simplices` (dimension + 1 corners each, as delaunay_nd gives
+/// them): the signed flag decomposition over the triangulation's faces (voronoi_nd.cpp), in
+/// floating point; inf for an unbounded cell (a point on the hull), NaN for a point in no simplex
+/// (a repeated one). Every face of the triangulation is visited once; exactly cospherical points
+/// are handled too (their simplices' shared circumcentres make the flags between them vanish).
+std::vector<double> voronoi_nd_volumes(const double* points, std::size_t count, int dimension,
+                                       const std::uint32_t* simplices, std::size_t simplex_count);
+
 struct DelaunayNd {
     int dimension = 0;                     ///< d, the points' dimension
     std::vector<std::uint32_t> simplices;  ///< d + 1 corners per simplex, each positively oriented:

@@ -164,7 +164,7 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
         for (double& v : xy) v = std::ldexp(v, exponent);
     delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
     local_xy = std::vector<double>();
-    Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added);
+    Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added, exponent);
     in = delaunay_detail::Input();
     // Repeated segments (the same two points, either way round: a hole sharing an edge with the
     // outline, a segment given twice) become one with their counts and windings added, in the

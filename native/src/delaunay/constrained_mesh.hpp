@@ -55,9 +55,11 @@ public:
     std::size_t crossings = 0;
 
     /// Takes the incremental algorithm's Delaunay mesh (ghosts included, local indices mapped back
-    /// to the input's by `original`) as the working mesh; `xy` the input points scaled.
-    Cdt(std::vector<double> xy, delaunay_detail::Mesh&& mesh, const std::vector<std::uint32_t>& original, std::size_t max_added)
-        : xy_(std::move(xy)), input_count_(xy_.size() / 2), max_added_(max_added) {
+    /// to the input's by `original`) as the working mesh; `xy` the input points scaled by
+    /// 2^exponent (write() divides added points by it again).
+    Cdt(std::vector<double> xy, delaunay_detail::Mesh&& mesh, const std::vector<std::uint32_t>& original, std::size_t max_added,
+        int exponent)
+        : xy_(std::move(xy)), input_count_(xy_.size() / 2), max_added_(max_added), exponent_(exponent) {
         vertex_ = std::move(mesh.vertex);
         twin_ = std::move(mesh.twin);
         out_.assign(input_count_, kGhost);
@@ -355,6 +357,7 @@ private:
         }
         double p[2];
         rounded_crossing(pt(s.a), pt(s.b), pt(x), pt(y), p);
+        representable(p);
         const std::uint32_t q = insert_point(p, e / 3);
 #ifdef HULLKIT_CDT_DEBUG
         check("after the crossing point");
@@ -496,6 +499,15 @@ private:
     /// Inserts point p (scaled) by Bowyer-Watson without crossing a constrained edge, except the one
     /// p lies on (which is split, both halves keeping its flags). Returns its vertex: an existing one
     /// with the same coordinates, or the new one.
+    /// Rounds a new point (scaled) to one that write() gives back unchanged in the input's units.
+    /// Scaling is exact except where the input's units make a coordinate subnormal (inputs near
+    /// 1e-310): there the trip back would drop bits, and the output would not be the point
+    /// triangulated (a flat triangle, even). Elsewhere it changes nothing.
+    void representable(double* p) const {
+        if (exponent_ == 0) return;
+        for (int k = 0; k < 2; ++k) p[k] = std::ldexp(std::ldexp(p[k], -exponent_), exponent_);
+    }
+
     std::uint32_t insert_point(const double* p, std::uint32_t start) { return insert_at(p, locate(p, start)); }
 
     /// insert_point with the triangle holding p already found (as locate() finds it). With
@@ -616,6 +628,7 @@ private:
     std::vector<double> xy_;
     std::size_t input_count_;
     std::size_t max_added_;
+    int exponent_;  ///< the points are the input's times 2^exponent_
     std::vector<std::uint32_t> vertex_, twin_;
     /// Per half-edge, its Record in records_ (the same for both halves), 0 when no segment lies on it:
     /// one number per half-edge, the records only for the few edges on segments.

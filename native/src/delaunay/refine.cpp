@@ -310,6 +310,7 @@ bool Refiner::split_segment(std::uint32_t e) {
         m[0] = pa[0] + 0.5 * (pb[0] - pa[0]);
         m[1] = pa[1] + 0.5 * (pb[1] - pa[1]);
     }
+    m_.representable(m);
     // Both new triangles on each side must turn the right way (a point within rounding of the
     // segment always does unless a third point is as close to it); if not, or the segment is too
     // short to hold a point between its ends, it stays whole.
@@ -422,6 +423,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
         if (reach > limit) centre[0] = bx / 2 + dx * (limit / reach), centre[1] = by / 2 + dy * (limit / reach);
     }
     centre[0] += a[0], centre[1] += a[1];
+    m_.representable(centre);
     if (!std::isfinite(centre[0]) || !std::isfinite(centre[1])) return true;
     std::uint32_t wall = kGhost;
     std::uint32_t at = walk(centre, t, &wall);
@@ -430,6 +432,7 @@ bool Refiner::split_triangle(const BadTriangle& item) {
         // (inside it, so the area bound is still met); one with only a small angle is left.
         if (item.kind != kTooLarge) return true;
         centre[0] = (p[0][0] + p[1][0] + p[2][0]) / 3, centre[1] = (p[0][1] + p[1][1] + p[2][1]) / 3;
+        m_.representable(centre);
         at = walk(centre, t, &wall);
         if (at == kGhost) return true;  // (rounding put it across an edge onto a segment: left)
     }

@@ -324,6 +324,18 @@ public:
     int dimension() const { return d_; }
     double scaled(std::uint32_t i, int j) const { return scaled_[i * static_cast<std::size_t>(d_) + static_cast<std::size_t>(j)]; }
     double lift(std::uint32_t i) const { return lift_[i]; }
+    /// Asks the caches for what a side test of point i reads (its scaled row, lift and flag).
+    void prefetch(std::uint32_t i) const {
+#if defined(__GNUC__) || defined(__clang__)
+        const double* row = scaled_.data() + i * static_cast<std::size_t>(d_);
+        __builtin_prefetch(row);
+        __builtin_prefetch(row + d_ - 1);
+        __builtin_prefetch(lift_.data() + i);
+        __builtin_prefetch(exact_copy_.data() + i);
+#else
+        (void)i;
+#endif
+    }
 
     /// The row of point i (i < count) or of the query row `query` (i == kQuery).
     static constexpr std::uint32_t kQuery = 0xffffffffu;
@@ -693,20 +705,34 @@ private:
         return corners_[f * static_cast<std::size_t>(D_) + static_cast<std::size_t>(j)];
     }
 
+    /// A new facet with these corners: in the slot of a removed one when there is one (the
+    /// arrays then stop growing once the hull does: no reallocation copies or fresh pages).
     std::uint32_t add_facet(const std::uint32_t* corners) {
         const std::size_t n = static_cast<std::size_t>(D_) + 1;
-        const std::size_t at = plane_.size();
-        plane_.resize(at + 2 * n);
-        p_.facet_plane(corners, lifted_, &plane_[at], &plane_[at + n]);
+        const std::size_t D = static_cast<std::size_t>(D_);
+        std::uint32_t t;
+        if (!free_facets_.empty()) {
+            t = free_facets_.back();
+            free_facets_.pop_back();
+            std::copy(corners, corners + D_, &corners_[t * D]);
+            std::fill(&neighbor_[t * D], &neighbor_[t * D] + D, -1);
+            alive_[t] = 1;
+            mark_[t] = 0;  // (its outside set was emptied when it was removed)
+        } else {
+            t = static_cast<std::uint32_t>(alive_.size());
+            plane_.resize(plane_.size() + 2 * n);
+            usable_.push_back(false);
+            corners_.insert(corners_.end(), corners, corners + D_);
+            neighbor_.insert(neighbor_.end(), D, -1);
+            alive_.push_back(1);
+            outside_.emplace_back();
+            mark_.push_back(0);
+        }
+        p_.facet_plane(corners, lifted_, &plane_[2 * n * t], &plane_[2 * n * t + n]);
         bool usable = true;
         for (int k = 0; k < D_; ++k) usable = usable && p_.exact_copy(corners[k]);
-        usable_.push_back(usable);
-        corners_.insert(corners_.end(), corners, corners + D_);
-        neighbor_.insert(neighbor_.end(), static_cast<std::size_t>(D_), -1);
-        alive_.push_back(1);
-        outside_.emplace_back();
-        mark_.push_back(0);
-        return static_cast<std::uint32_t>(alive_.size() - 1);
+        usable_[t] = usable;
+        return t;
     }
 
     /// Puts q into the outside set of the first of `facets` it lies strictly beyond (if any).
@@ -733,8 +759,17 @@ private:
         const std::uint32_t visible = stamp_, hidden = stamp_ + 1;
         std::vector<std::uint32_t> seen{f};
         mark_[f] = visible;
+        const std::size_t n = static_cast<std::size_t>(D) + 1;
         for (std::size_t k = 0; k < seen.size(); ++k) {
             const std::uint32_t g = seen[k];
+#if defined(__GNUC__) || defined(__clang__)
+            // The neighbours' planes, about to be tested, lie anywhere in a large array.
+            for (int j = 0; j < D; ++j) {
+                const std::size_t h = static_cast<std::size_t>(neighbor_[g * static_cast<std::size_t>(D) + static_cast<std::size_t>(j)]);
+                __builtin_prefetch(plane_.data() + 2 * n * h);
+                __builtin_prefetch(plane_.data() + 2 * n * h + 2 * n - 1);
+            }
+#endif
             for (int j = 0; j < D; ++j) {
                 const auto h = static_cast<std::uint32_t>(neighbor_[g * static_cast<std::size_t>(D) + static_cast<std::size_t>(j)]);
                 if (mark_[h] == visible || mark_[h] == hidden) continue;
@@ -766,13 +801,8 @@ private:
             }
         }
         // The new facets' ridges through p, paired by their corner sets.
-        struct Ridge {
-            std::uint64_t hash;
-            std::array<std::uint32_t, kMaxRows> key;
-            std::uint32_t facet;
-            int across;
-        };
-        std::vector<Ridge> ridges;
+        std::vector<Ridge>& ridges = ridges_;
+        ridges.clear();
         for (const std::uint32_t t : created) {
             const std::uint32_t* c = &corners_[t * static_cast<std::size_t>(D)];
             for (int i = 0; i < D; ++i) {
@@ -789,24 +819,49 @@ private:
                 ridges.push_back(r);
             }
         }
-        // By hash, then corners: equal ridges side by side (the hash decides almost every comparison).
-        std::sort(ridges.begin(), ridges.end(),
-                  [](const Ridge& a, const Ridge& b) { return a.hash != b.hash ? a.hash < b.hash : a.key < b.key; });
-        if (ridges.size() % 2) throw std::logic_error("hull_nd: unpaired ridge");
-        for (std::size_t k = 0; k < ridges.size(); k += 2) {
-            const Ridge& a = ridges[k];
-            const Ridge& b = ridges[k + 1];
-            if (a.key != b.key) throw std::logic_error("hull_nd: unpaired ridge");
-            neighbor_[a.facet * static_cast<std::size_t>(D) + static_cast<std::size_t>(a.across)] = static_cast<std::int32_t>(b.facet);
-            neighbor_[b.facet * static_cast<std::size_t>(D) + static_cast<std::size_t>(b.across)] = static_cast<std::int32_t>(a.facet);
+        // Each ridge is met twice (by the two new facets through it): paired in a small hash table
+        // with linear probing, a slot keeping the first of a pair until the second comes (then
+        // marked paired, and probed past). Linking is symmetric: the order does not matter.
+        constexpr std::uint32_t kEmpty = 0xffffffffu, kPaired = 0xfffffffeu;
+        std::size_t size = 16;
+        while (size < 2 * ridges.size()) size *= 2;
+        std::vector<std::uint32_t>& table = ridge_table_;
+        table.assign(size, kEmpty);
+        std::size_t pairs = 0;
+        for (std::uint32_t k = 0; k < ridges.size(); ++k) {
+            const Ridge& r = ridges[k];
+            for (std::size_t at = (r.hash ^ (r.hash >> 29)) & (size - 1);; at = (at + 1) & (size - 1)) {
+                const std::uint32_t other = table[at];
+                if (other == kEmpty) {
+                    table[at] = k;
+                    break;
+                }
+                if (other == kPaired || ridges[other].hash != r.hash || ridges[other].key != r.key) continue;
+                const Ridge& o = ridges[other];
+                neighbor_[r.facet * static_cast<std::size_t>(D) + static_cast<std::size_t>(r.across)] = static_cast<std::int32_t>(o.facet);
+                neighbor_[o.facet * static_cast<std::size_t>(D) + static_cast<std::size_t>(o.across)] = static_cast<std::int32_t>(r.facet);
+                table[at] = kPaired;
+                ++pairs;
+                break;
+            }
         }
+        if (2 * pairs != ridges.size()) throw std::logic_error("hull_nd: unpaired ridge");
         // The visible facets go; their other outside points move to the new facets (or are inside).
+        // (assign adds only to the new facets' sets: `points` stays in place.) Their slots are
+        // free for the next point's facets.
         for (const std::uint32_t g : seen) {
             alive_[g] = 0;
-            std::vector<std::pair<std::uint32_t, double>> points = std::move(outside_[g]);
-            outside_[g] = {};
-            for (const auto& entry : points)
-                if (entry.first != p) assign(entry.first, created);
+            std::vector<std::pair<std::uint32_t, double>>& points = outside_[g];
+            // The points lie anywhere in memory: their rows are fetched a few points ahead (a
+            // quarter of a 4D hull's time went to waiting for them).
+            constexpr std::size_t kAhead = 8;
+            for (std::size_t k = 0; k < std::min(kAhead, points.size()); ++k) p_.prefetch(points[k].first);
+            for (std::size_t k = 0; k < points.size(); ++k) {
+                if (k + kAhead < points.size()) p_.prefetch(points[k + kAhead].first);
+                if (points[k].first != p) assign(points[k].first, created);
+            }
+            points.clear();
+            free_facets_.push_back(g);
         }
         for (auto it = created.rbegin(); it != created.rend(); ++it)
             if (!outside_[*it].empty()) pending->push_back(*it);
@@ -921,6 +976,17 @@ private:
 
     double scaled(std::uint32_t i, int j) const { return p_.scaled(i, j); }
     double lift(std::uint32_t i) const { return p_.lift(i); }
+
+    /// A ridge of a new facet through its new point: its other corners (sorted) and their hash.
+    struct Ridge {
+        std::uint64_t hash;
+        std::array<std::uint32_t, kMaxRows> key;
+        std::uint32_t facet;
+        int across;
+    };
+    std::vector<Ridge> ridges_;  ///< add_point's workspace
+    std::vector<std::uint32_t> ridge_table_;
+    std::vector<std::uint32_t> free_facets_;  ///< slots of removed facets, reused last-in first-out
 
     const Predicate& p_;
     bool lifted_;
