@@ -825,9 +825,8 @@ class Voronoi(_Incremental):
         region[distinct] = _np.arange(first, len(distinct) + first)
         self.point_region = region[representative]
         self._region_lists = (cells, offsets, distinct)
-        if volumes is None:  # 4D and up: computed on first use (see volumes)
-            self._volumes, self._volume_parts = None, (self._triangulation_nd, representative)
-            self._triangulation_nd = None
+        if volumes is None:  # 4D and up: computed on first use from _volume_parts (see volumes)
+            self._volumes = None
         else:
             self.volumes = volumes[representative]
 
@@ -996,7 +995,7 @@ class Voronoi(_Incremental):
             _not_supported(f"a diagram of cospherical points in {k} dimensions (the corners of simplices {int(group[s])} "
                            f"and {s} lie on one sphere)", "Voronoi")
         self.dimension = k
-        self._triangulation_nd = t  # for the volumes, on first use
+        self._volume_parts = (t, t.representative)  # the volumes, on first use
         simplices = t.simplices.astype(_np.int64)
         m, n = len(simplices), len(points)
         corners = points[simplices]

@@ -111,18 +111,6 @@ std::vector<double> uniform(std::size_t n, std::uint64_t seed, double scale = 1.
     return xyz;
 }
 
-/// n points on the unit sphere (normalised Gaussian directions, rounded): nearly cospherical.
-std::vector<double> rounded_sphere(std::size_t n, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> g(0, 1);
-    std::vector<double> xyz(3 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double x = g(rng), y = g(rng), z = g(rng), r = std::sqrt(x * x + y * y + z * z);
-        xyz[3 * i] = x / r, xyz[3 * i + 1] = y / r, xyz[3 * i + 2] = z / r;
-    }
-    return xyz;
-}
-
 std::vector<double> integer_sphere(int r2) {
     std::vector<double> xyz;
     const int r = static_cast<int>(std::sqrt(r2)) + 1;
@@ -433,7 +421,7 @@ TEST_CASE("delaunay3: 1, 2, 3 and 8 threads give identical arrays", "[delaunay3]
     // Large enough for rounds to be cut into partitions (rounds of 8192 points and more); the
     // clusters defer enough points in the first pass for the slab passes to run as well; on the
     // sphere the first partitioned pass defers most points and ends the partitioning.
-    for (const auto& xyz : {uniform(70000, 41), hullkit_test::clustered3(100000, 20, 0.02, 47), rounded_sphere(30000, 53)}) {
+    for (const auto& xyz : {uniform(70000, 41), hullkit_test::clustered3(100000, 20, 0.02, 47), hullkit_test::random_cloud(hullkit_test::Cloud::Sphere, 30000, 53)}) {
         const Delaunay3 one = run(xyz, 1);
         REQUIRE(one.ok());
         for (unsigned threads : {2u, 3u, 8u}) {
@@ -446,7 +434,7 @@ TEST_CASE("delaunay3: 1, 2, 3 and 8 threads give identical arrays", "[delaunay3]
 }
 
 TEST_CASE("delaunay3: large uniform and grid inputs verify, on threads", "[delaunay3][threads][heavy]") {
-    for (const auto& xyz : {uniform(100000, 43), grid3(30), hullkit_test::clustered3(100000, 20, 0.02, 47), rounded_sphere(30000, 53)}) {
+    for (const auto& xyz : {uniform(100000, 43), grid3(30), hullkit_test::clustered3(100000, 20, 0.02, 47), hullkit_test::random_cloud(hullkit_test::Cloud::Sphere, 30000, 53)}) {
         const Delaunay3 one = run(xyz, 1);
         check_tetrahedralization(xyz, one);
         const Delaunay3 two = run(xyz, 2);

@@ -27,10 +27,10 @@
 // work depends only on the mesh at the start of the pass and on its own points. A walk that would
 // leave the partition is tried once more from the anchor of the point's cell of the curve (the
 // last tetrahedron the partition made for a point there, or one it owns from earlier passes): a
-// jump between clusters no longer defers every point after it. What the passes
-// leave is inserted serially, as are small rounds and every round after a pass that deferred most
-// of its points (cavities reaching across partitions: points on a sphere). The mesh is therefore
-// the same, slot for slot, for every thread count and platform.
+// jump between clusters no longer defers every point after it. What the passes leave is inserted
+// serially, as are small rounds and every round after a pass that deferred most of its points
+// (cavities reaching across partitions: points on a sphere). The mesh is therefore the same, slot
+// for slot, for every thread count and platform.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -80,8 +80,8 @@ struct Shared {
     std::uint32_t cell_shift = 0;  ///< local index >> cell_shift = its cell
 };
 
-/// One partition's (or the serial) insertion: its workspace and, in a pass, its range of owned
-/// corners, its free slots and its block of fresh slots.
+/// One partition's (or the serial) insertion: its workspace and, in a pass, its label, its anchors,
+/// its free slots and its block of fresh slots.
 class Worker {
 public:
     explicit Worker(Shared& shared) : shared_(shared) {
@@ -120,12 +120,12 @@ public:
 
     /// Inserts p; false when p must be deferred (nothing was changed).
     bool insert(std::uint32_t p) {
+        const std::uint32_t cell = p >> shared_.cell_shift;
         std::uint32_t t0 = walk(p);
         if (t0 == kDefer) {
             // The walk from the last new tetrahedron left the partition (a jump along the curve
             // between clusters, or across a slab): once more from the anchor of p's cell, a
             // tetrahedron of this partition made for a point near p, when there is one.
-            const std::uint32_t cell = p >> shared_.cell_shift;
             const std::uint32_t a = anchor_[cell];
             if (a == kNoAnchor || a == last_ || shared_.mesh.corner[4 * std::size_t{a} + 3] == kFree) return false;
             last_ = a;
@@ -134,11 +134,7 @@ public:
         }
         if (!grow_cavity(t0, p)) return false;
         if (!fill_cavity()) return false;
-        if (restricted_) {
-            const std::uint32_t cell = p >> shared_.cell_shift;
-            if (anchor_[cell] == kNoAnchor) anchored_.push_back(cell);
-            anchor_[cell] = last_;
-        }
+        if (restricted_) seed_anchor(cell, last_);
         return true;
     }
 
@@ -148,7 +144,8 @@ public:
         for (const std::uint32_t cell : anchored_) anchor_[cell] = kNoAnchor;
         anchored_.clear();
     }
-    /// Starts this pass with `t` as the anchor of `cell` (a finite tetrahedron this partition owns).
+    /// Sets `t` as the anchor of `cell` (a tetrahedron this partition owns): seeded before a pass,
+    /// and each new point's last tetrahedron during it.
     void seed_anchor(std::uint32_t cell, std::uint32_t t) {
         if (anchor_[cell] == kNoAnchor) anchored_.push_back(cell);
         anchor_[cell] = t;

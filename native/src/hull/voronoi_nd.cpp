@@ -125,16 +125,16 @@ std::vector<double> voronoi_nd_volumes(const double* points, std::size_t count, 
             }
             return a < b;
         };
+        auto same = [&](std::uint64_t a, std::uint64_t b) {
+            for (std::size_t i = 0; i < w; ++i)
+                if (sub(a, i) != sub(b, i)) return false;
+            return true;
+        };
         std::sort(entry.begin(), entry.end(), less);
         Level lower;
         lower.width = width;
         for (std::size_t at = 0; at < entry.size();) {
             std::size_t end = at + 1;
-            auto same = [&](std::uint64_t a, std::uint64_t b) {
-                for (std::size_t i = 0; i < w; ++i)
-                    if (sub(a, i) != sub(b, i)) return false;
-                return true;
-            };
             while (end < entry.size() && same(entry[at], entry[end])) ++end;
             const std::size_t g = lower.size();
             for (std::size_t i = 0; i < w; ++i) lower.corners.push_back(sub(entry[at], i));
