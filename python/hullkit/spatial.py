@@ -52,13 +52,14 @@ sphere triangulate too): ``simplices``, ``neighbors``, ``equations``, ``vertices
 ``area`` for the hull (facets triangulated, as Qhull's Qt); ``simplices`` (positively oriented),
 ``neighbors``, ``convex_hull``, ``find_simplex`` (exact: the lowest-indexed simplex holding the
 point), ``transform``, ``coplanar`` (repeated points), ``furthest_site`` for Delaunay; Voronoi's
-``vertices`` (circumcentres), ``ridge_points``, ``ridge_vertices``, ``regions`` and ``volumes``
-(made on first use from the triangulation's faces, in floating point: about a second for 5 000
-points in 4D). Points in a flat raise HullkitError saying how many
-dimensions they span (Qhull's QH6154); a Voronoi diagram of exactly cospherical points in these
-dimensions (where simplices would share vertices) raises HullkitError, and so does ConvexHull's
-QG, Qc or Qi. Unbounded ridges around a hull edge with one or two simplices, which Qhull leaves
-out, are listed.
+``vertices`` (circumcentres; exactly cospherical simplices share one, as Qhull merges them: a
+grid's cell centres), ``ridge_points``, ``ridge_vertices``, ``regions`` and ``volumes`` (made on
+first use from the triangulation's faces, in floating point: about a second for 5 000 points in
+4D). A ridge is a pair of cells sharing a face of full dimension, decided exactly: points whose
+cells meet in less (a grid's diagonal neighbours), which Qhull lists, are not ridges here. Points
+in a flat raise HullkitError saying how many dimensions they span (Qhull's QH6154), and so does
+ConvexHull's QG, Qc or Qi. Unbounded ridges around a hull edge with one or two simplices, which
+Qhull leaves out, are listed.
 
 HalfspaceIntersection (2 to 10 dimensions; above 3 the dual hull's simplicial facets merged where
 exactly coplanar, each corner solved from the planes of one of them): the intersection of halfspaces A x + b <= 0 through the exact
@@ -190,6 +191,71 @@ def _faces_without_neighbour(simplices, neighbors):
     keep = _np.arange(simplices.shape[1])[None, :] != corner[:, None]
     return simplices[simplex][keep].reshape(-1, simplices.shape[1] - 1)
 
+
+def _edges_of_cells(points, simplices, vertex_of, cell_count, edge_keys, edge, cell, hull_faces):
+    """Which edges of a triangulation of cospherical groups are edges of the Delaunay cells (the
+    groups' polytopes), exactly: per edge a bool. Lifted to the paraboloid, with the hull's flat
+    pieces joined to a point at infinity, the cells are the facets of one convex polytope, and a
+    face of a polytope is the intersection of the facets holding it: an edge i-j of the
+    triangulation is an edge of a cell when the corners common to every facet holding both i and
+    j are i and j alone (a diagonal shares the whole face it crosses). The facets holding i and j
+    are the groups around the edge (``edge``, ``cell``: sorted pairs) and, on the hull, the flat
+    pieces of the hull around it; those pieces are the hull's faces joined across shared ridges
+    where exactly coplanar (orient_nd)."""
+    n = len(points)
+    k = points.shape[1]
+    e_count = len(edge_keys)
+    # Each cell's corners: (cell, point) pairs.
+    cell_points = _np.unique(_np.repeat(vertex_of, k + 1) * n + simplices.ravel())
+    members = [(edge, cell, cell_points // n, cell_points % n, cell_count)]
+    if len(hull_faces):
+        # The hull's flat pieces: faces sharing a ridge (all corners but one) joined when coplanar.
+        f = len(hull_faces)
+        faces = _np.sort(hull_faces, axis=1)
+        ridges = _np.concatenate([_np.delete(faces, drop, axis=1) for drop in range(k)])
+        face_of = _np.tile(_np.arange(f), k)
+        dropped = _np.concatenate([faces[:, drop] for drop in range(k)])
+        order = _np.lexsort(ridges.T[::-1])
+        ridges, face_of, dropped = ridges[order], face_of[order], dropped[order]
+        same = _np.all(ridges[1:] == ridges[:-1], axis=1)
+        parent = list(range(f))
+
+        def find(x):
+            while parent[x] != x:
+                parent[x] = parent[parent[x]]
+                x = parent[x]
+            return x
+
+        for at in _np.flatnonzero(same):
+            a, b = int(face_of[at]), int(face_of[at + 1])
+            ra, rb = find(a), find(b)
+            if ra == rb:
+                continue
+            rows = _np.vstack([points[faces[a]], points[int(dropped[at + 1])]])
+            if _core.orient_nd(_np.ascontiguousarray(rows, dtype=_np.float64)) == 0:
+                parent[max(ra, rb)] = min(ra, rb)
+        piece = _np.array([find(x) for x in range(f)], dtype=_np.int64)
+        piece_points = _np.unique(_np.repeat(piece, k) * n + faces.ravel())
+        # The pieces around each hull edge: its faces' pieces.
+        face_pairs = [(i, j) for i in range(k) for j in range(i + 1, k)]
+        keys = _np.concatenate([faces[:, i] * _np.int64(n) + faces[:, j] for i, j in face_pairs])
+        owners = _np.tile(piece, len(face_pairs))
+        at_edge = _np.searchsorted(edge_keys, keys)
+        around = _np.unique(at_edge * _np.int64(f) + owners)
+        members.append((around // f, around % f, piece_points // n, piece_points % n, f))
+    # For each edge, how many of the facets holding it hold each point; the points held by all.
+    facets_per_edge = _np.zeros(e_count, dtype=_np.int64)
+    counted = []
+    for edges_of, facet_of, owner_of, point_of, facet_count in members:
+        _np.add.at(facets_per_edge, edges_of, 1)
+        starts = _np.searchsorted(owner_of, _np.arange(facet_count + 1))
+        sizes = starts[facet_of + 1] - starts[facet_of]
+        rows = _np.repeat(_np.arange(len(facet_of)), sizes)
+        position = _np.arange(len(rows)) - _np.repeat(_np.cumsum(sizes) - sizes, sizes)
+        counted.append(edges_of[rows] * _np.int64(n) + point_of[starts[facet_of][rows] + position])
+    keys, times = _np.unique(_np.concatenate(counted), return_counts=True)
+    common = _np.bincount(keys[times == facets_per_edge[keys // n]] // n, minlength=e_count)
+    return common == 2
 
 def _nd_facet_planes(points, facets):
     """Unit normals and offsets [n, c] of hull_nd's facets (m, k): outward (hull_nd's corners are
@@ -741,8 +807,10 @@ class Voronoi(_Incremental):
     (per point, its cell's area in 2D or volume in 3D; inf when unbounded) and ``dimension``
     (what the points span: 2 or 3, less for degenerate input).
 
-    * Cocircular (2D) or cospherical (3D) points share one vertex, as Qhull merges them (a grid
-      has one vertex per square or cube, exactly at its centre).
+    * Cocircular (2D) or cospherical (3D and up) points share one vertex, as Qhull merges them (a
+      grid has one vertex per square or cube, exactly at its centre). Above 3D a ridge is a pair
+      of cells sharing a face of full dimension (decided exactly); Qhull also lists pairs of a
+      grid's diagonal neighbours, whose cells meet in a smaller face.
     * 2D: ``regions`` are counter-clockwise, a bounded one from its lowest vertex, an unbounded
       one with -1 last (between its last and first vertex); a ridge is ``[a, b]``, or
       ``[-1, a]`` for a ray. 2D vertices are numbered along a space-filling curve (nearby
@@ -979,26 +1047,27 @@ class Voronoi(_Incremental):
         return self._along_line(d.representative, d.vertices, (-1,))
 
     def _from_nd(self, points):
-        """k dimensions from the core's triangulation (hullkit::delaunay_nd): a vertex per simplex
-        (its circumcentre), a ridge per Delaunay edge (its vertices: the simplices around the edge,
-        after a -1 when the edge lies on the hull), each point's cell the simplices around it
-        (after a -1 when the point is on the hull). Needs points in general position: exactly
-        cospherical ones (a grid) would share vertices and lose ridges, and raise HullkitError."""
+        """k dimensions from the core's triangulation (hullkit::delaunay_nd): a vertex per group of
+        simplices with one circumsphere (its circumcentre: one simplex per group in general
+        position; a grid's cells, as Qhull merges them), a ridge per Delaunay edge (its vertices:
+        the groups around the edge, after a -1 when the edge lies on the hull), each point's cell
+        the groups around it (after a -1 when the point is on the hull). With cospherical points an
+        edge of the triangulation may be a diagonal of a group (two points whose cells meet in less
+        than a ridge): see _edges_of_cells."""
         if self._furthest:
             _not_supported(f"furthest_site=True in {self.ndim} dimensions", "Voronoi")
         k = self.ndim
         with _translated():
             t = _core.TriangulationNd(points)
-        group = t.group
-        if (group != _np.arange(len(group))).any():
-            s = int(_np.flatnonzero(group != _np.arange(len(group)))[0])
-            _not_supported(f"a diagram of cospherical points in {k} dimensions (the corners of simplices {int(group[s])} "
-                           f"and {s} lie on one sphere)", "Voronoi")
         self.dimension = k
         self._volume_parts = (t, t.representative)  # the volumes, on first use
         simplices = t.simplices.astype(_np.int64)
         m, n = len(simplices), len(points)
-        corners = points[simplices]
+        # One vertex per group, numbered in the order of the groups' lowest simplices.
+        roots, vertex_of = _np.unique(t.group.astype(_np.int64), return_inverse=True)
+        vertex_of = vertex_of.reshape(-1)
+        cospherical = len(roots) < m
+        corners = points[simplices[roots]]
         first = corners[:, 0]
         edges = corners[:, 1:] - first[:, None]
         rhs = 0.5 * _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None])
@@ -1006,14 +1075,14 @@ class Voronoi(_Incremental):
         on_hull = _np.zeros(n, dtype=bool)
         hull_faces = _faces_without_neighbour(simplices, t.neighbors)
         on_hull[hull_faces.ravel()] = True
-        # Cells: (point, simplex) pairs sorted, -1 first for a point on the hull.
-        size = m + 1
-        pairs = _np.concatenate([simplices.ravel() * size + _np.repeat(_np.arange(m), k + 1) + 1,
+        # Cells: (point, vertex) pairs sorted, -1 first for a point on the hull.
+        size = len(roots) + 1
+        pairs = _np.concatenate([simplices.ravel() * size + _np.repeat(vertex_of, k + 1) + 1,
                                  _np.flatnonzero(on_hull) * size])
         pairs = _np.unique(pairs)
         cells = pairs % size - 1
         offsets = _offsets(_np.bincount(pairs // size, minlength=n))
-        # Ridges: each Delaunay edge with the simplices around it, -1 first when on the hull.
+        # Ridges: each Delaunay edge with the vertices around it, -1 first when on the hull.
         count = _np.int64(n)
         corner_pairs = [(i, j) for i in range(k + 1) for j in range(i + 1, k + 1)]
         lower = _np.concatenate([_np.minimum(simplices[:, i], simplices[:, j]) for i, j in corner_pairs])
@@ -1025,9 +1094,17 @@ class Voronoi(_Incremental):
             [_np.minimum(hull_faces[:, i], hull_faces[:, j]) * count + _np.maximum(hull_faces[:, i], hull_faces[:, j])
              for i, j in face_pairs])) if len(hull_faces) else _np.zeros(0, dtype=_np.int64)
         edge_keys, inverse = _np.unique(key, return_inverse=True)
+        inverse = inverse.reshape(-1)
         unbounded = _np.isin(edge_keys, hull_keys)
-        entries = _np.concatenate([inverse * size + owner + 1, _np.flatnonzero(unbounded) * size])
-        entries = _np.unique(entries)
+        around = _np.unique(inverse * size + vertex_of[owner] + 1)  # (edge, vertex) pairs
+        if cospherical:
+            ridge = _edges_of_cells(points, simplices, vertex_of, len(roots), edge_keys, around // size,
+                                    around % size - 1, hull_faces)
+            renumber = _np.cumsum(ridge) - 1
+            around = around[ridge[around // size]]
+            around = renumber[around // size] * size + around % size
+            edge_keys, unbounded = edge_keys[ridge], unbounded[ridge]
+        entries = _np.sort(_np.concatenate([around, _np.flatnonzero(unbounded) * size]))
         flat = entries % size - 1
         ridge_offsets = _offsets(_np.bincount(entries // size, minlength=len(edge_keys)))
         self._set_ridges(_np.stack([edge_keys // count, edge_keys % count], axis=1), flat, ridge_offsets)

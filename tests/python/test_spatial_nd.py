@@ -160,6 +160,110 @@ def test_voronoi_in_4d_against_qhull():
             assert vor.volumes[p] == np.inf
 
 
+def rounded_sets(vor, indices):
+    return {tuple(np.round(vor.vertices[i], 9)) if i >= 0 else None for i in indices}
+
+
+@pytest.mark.parametrize("shape", [(2, 2, 2, 2), (3, 3, 3, 3), (4, 3, 3, 2), (3, 3, 2, 2, 2)])
+def test_voronoi_of_grids_in_4d_and_5d(shape):
+    # Every cell of a grid is a cube around its point: one vertex per grid cell (its centre, where
+    # the cell's 2^k corners are cospherical), a ridge exactly for each pair of points one step
+    # apart along an axis (diagonal neighbours meet in less than a ridge), its vertices the centres
+    # of the grid cells around that grid edge, unbounded when the edge lies on the grid's boundary.
+    points = np.array(list(itertools.product(*[range(n) for n in shape])), dtype=float)
+    k = len(shape)
+    vor = Voronoi(points)
+    centres = {tuple(x + 0.5 for x in c) for c in itertools.product(*[range(n - 1) for n in shape])}
+    assert len(vor.vertices) == len(centres)
+    assert {tuple(v) for v in vor.vertices.tolist()} == centres  # exactly
+    index = {tuple(p): i for i, p in enumerate(points.tolist())}
+    edges = set()
+    for p in points.tolist():
+        for axis in range(k):
+            q = list(p)
+            q[axis] += 1
+            if tuple(q) in index:
+                edges.add((index[tuple(p)], index[tuple(q)]))
+    assert as_sets(vor.ridge_points) == edges
+    upper = np.array(shape) - 1
+    for (i, j), ridge in zip(vor.ridge_points.tolist(), vor.ridge_vertices):
+        a, b = points[i], points[j]
+        axis = int(np.flatnonzero(a != b)[0])
+        low = min(a[axis], b[axis])
+        around = set()
+        for offsets in itertools.product((-0.5, 0.5), repeat=k - 1):
+            centre = np.insert(a[np.arange(k) != axis] + offsets, axis, low + 0.5)
+            if ((centre > 0) & (centre < upper)).all():
+                around.add(tuple(centre))
+        boundary = bool(((np.delete(a, axis) == 0) | (np.delete(a, axis) == np.delete(upper, axis))).any())
+        assert {tuple(vor.vertices[v]) for v in ridge if v >= 0} == around
+        assert (-1 in ridge) == boundary and len(ridge) == len(set(ridge))
+    inside = ((points > 0) & (points < upper)).all(axis=1)
+    volumes = vor.volumes
+    assert (volumes[inside] == 1.0).all() and np.isinf(volumes[~inside]).all()
+    for p in range(len(points)):
+        region = vor.regions[vor.point_region[p]]
+        assert (-1 in region) == (not inside[p])
+        assert len([v for v in region if v >= 0]) == sum(
+            1 for c in centres if (np.abs(np.array(c) - points[p]) == 0.5).all())
+
+
+def ridge_margin(points, i, j):
+    """How far inside the bisector of points i and j the nearest other point can be kept (a linear
+    program: the largest t with |x - p_i|^2 + t <= |x - p_k|^2 for every other k, x on the
+    bisector, t <= 1): positive exactly when the cells of i and j share a face of full dimension."""
+    from scipy.optimize import linprog
+    others = [k for k in range(len(points)) if k not in (i, j)]
+    a_ub = np.c_[2 * (points[others] - points[i]), np.ones(len(others))]
+    b_ub = (points[others] ** 2).sum(axis=1) - points[i] @ points[i]
+    a_eq = np.r_[2 * (points[j] - points[i]), 0.0][None]
+    b_eq = [points[j] @ points[j] - points[i] @ points[i]]
+    k = points.shape[1]
+    result = linprog(np.r_[np.zeros(k), -1.0], A_ub=a_ub, b_ub=b_ub, A_eq=a_eq, b_eq=b_eq,
+                     bounds=[(None, None)] * k + [(None, 1.0)])
+    assert result.status == 0
+    return -result.fun
+
+
+def test_voronoi_of_cospherical_points_in_4d_against_qhull():
+    # Random subsets of a 4^4 lattice: many groups of cospherical points of every size. Vertices
+    # and regions are Qhull's (it merges those simplices too). Qhull also lists, as ridges, pairs
+    # whose cells meet in less than a 3-dimensional face; the ridges here are exactly the pairs
+    # whose cells share a 3-dimensional face (checked for every pair by a linear program on the
+    # first subset), with Qhull's vertices where both list a pair.
+    lattice = np.array(list(itertools.product(range(4), repeat=4)), dtype=float)
+    for seed in range(3):
+        points = lattice[np.random.default_rng(seed).choice(len(lattice), 60, replace=False)]
+        vor, reference = Voronoi(points), sp.Voronoi(points)
+        assert {tuple(v) for v in np.round(vor.vertices, 9).tolist()} == \
+            {tuple(v) for v in np.round(reference.vertices, 9).tolist()}
+        for p in range(len(points)):
+            assert rounded_sets(vor, vor.regions[vor.point_region[p]]) == \
+                rounded_sets(reference, reference.regions[reference.point_region[p]])
+        ours = {tuple(sorted(pair)): ridge for pair, ridge in zip(vor.ridge_points.tolist(), vor.ridge_vertices)}
+        for pair, ridge in zip(reference.ridge_points.tolist(), reference.ridge_vertices):
+            if tuple(sorted(pair)) in ours:
+                assert rounded_sets(vor, ours[tuple(sorted(pair))]) - {None} == rounded_sets(reference, ridge) - {None}
+        for pair, ridge in ours.items():
+            cells = [rounded_sets(vor, vor.regions[vor.point_region[p]]) for p in pair]
+            assert rounded_sets(vor, ridge) <= cells[0] & cells[1]
+        if seed == 0:
+            for i, j in itertools.combinations(range(len(points)), 2):
+                assert (ridge_margin(points, i, j) > 1e-7) == ((i, j) in ours), (i, j)
+
+
+def test_voronoi_of_the_4d_cross_polytope():
+    # Its 8 corners lie on one sphere: one vertex (the centre), a ridge for each of the 24 edges
+    # (unbounded), none between opposite corners, whose cells meet only at the centre.
+    points = np.vstack([np.eye(4), -np.eye(4)])
+    vor = Voronoi(points)
+    assert vor.vertices.tolist() == [[0.0, 0.0, 0.0, 0.0]]
+    assert as_sets(vor.ridge_points) == {(i, j) for i in range(8) for j in range(i + 1, 8) if j != i + 4}
+    assert all(sorted(ridge) == [-1, 0] for ridge in vor.ridge_vertices)
+    assert all(sorted(vor.regions[r]) == [-1, 0] for r in vor.point_region)
+    assert np.isinf(vor.volumes).all()
+
+
 def test_errors_name_the_problem():
     with pytest.raises(hullkit.HullkitError, match="lie in a flat of 3 dimensions"):
         ConvexHull(np.c_[np.random.default_rng(1).random((20, 3)), np.zeros(20)])
@@ -172,8 +276,6 @@ def test_errors_name_the_problem():
     with pytest.raises(hullkit.HullkitError, match="point 7 has a non-finite coordinate 2") as caught:
         Delaunay(points)
     assert caught.value.point == 7
-    with pytest.raises(hullkit.HullkitError, match="cospherical points in 4 dimensions"):
-        Voronoi(np.array(list(itertools.product((0.0, 1.0, 2.0), repeat=4))))
     with pytest.raises(hullkit.HullkitError, match="QG, Qc and Qi in 4 dimensions"):
         ConvexHull(np.random.default_rng(3).random((20, 4)), qhull_options="Qc")
 
