@@ -48,11 +48,9 @@ namespace {
 /// The three corners of a tetrahedron other than k, in increasing order.
 constexpr int kOtherThree[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
-/// The two corners of a tetrahedron other than i and j (i != j).
-constexpr std::uint8_t kOtherTwo[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
-                                             {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
-                                             {{1, 3}, {0, 3}, {0, 0}, {0, 1}},
-                                             {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+/// kFaceCorners for a ghost (the vertex at infinity is corner 3): the same faces, rotated so that
+/// corner 3 comes last (a rotation keeps the orientation).
+constexpr int kGhostFaceCorners[4][3] = {{1, 2, 3}, {2, 0, 3}, {0, 1, 3}, {0, 2, 1}};
 
 /// A pass over fewer than 2 x this many points is left to the serial insertion.
 constexpr std::size_t kPartitionPoints = 4096;
@@ -84,9 +82,7 @@ struct Shared {
 /// its free slots and its block of fresh slots.
 class Worker {
 public:
-    explicit Worker(Shared& shared) : shared_(shared) {
-        resize_table(32);
-    }
+    explicit Worker(Shared& shared) : shared_(shared) {}
 
     /// Owns everything and appends fresh slots at the end of the mesh (the serial insertion).
     void own_all(std::uint32_t start, std::vector<std::uint32_t>* free_slots) {
@@ -133,7 +129,7 @@ public:
             if (t0 == kDefer) return false;
         }
         if (!grow_cavity(t0, p)) return false;
-        if (!fill_cavity()) return false;
+        if (!fill_cavity(p)) return false;
         if (restricted_) seed_anchor(cell, last_);
         return true;
     }
@@ -233,8 +229,8 @@ private:
         for (const std::uint32_t t : checked_) corner[4 * t] &= kIndex;
     }
 
-    /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the new
-    /// tetrahedron's corners (p in place of the corner opposite the face) and the neighbour outside.
+    /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the other
+    /// corners of its new tetrahedron (after p) and the neighbour outside.
     /// False (marks undone) when the cavity reaches a tetrahedron this worker does not own.
     bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
         std::uint32_t* corner = shared_.mesh.corner.data();
@@ -277,14 +273,13 @@ private:
                         checked_.push_back(u);
                     }
                 }
-                Boundary b;
-                std::memcpy(b.corner, corner + 4 * t, sizeof b.corner);
-                b.corner[0] &= kIndex;
-                b.corner[k] = p;
-                b.outside = across;
+                // The face, counter-clockwise seen from outside the cavity, a ghost's vertex at
+                // infinity last: p and these three make the new tetrahedron, positively oriented.
+                const std::uint32_t* c = corner + 4 * t;
+                const int* f = c[3] == kGhost ? kGhostFaceCorners[k] : kFaceCorners[k];
+                const std::uint32_t v0 = c[f[0]], v1 = c[f[1]], v2 = c[f[2]];
+                boundary_.push_back({{v0 & kIndex, v1 & kIndex, v2}, across});
                 __builtin_prefetch(adjacent + across, 1);
-                b.face = k;
-                boundary_.push_back(b);
             }
         }
         return true;
@@ -292,7 +287,7 @@ private:
 
     /// Replaces the cavity by its boundary faces joined to the point (already in their corners).
     /// False (marks undone, nothing changed) when the block of fresh slots would run out.
-    bool fill_cavity() {
+    bool fill_cavity(std::uint32_t p) {
         const std::size_t count = boundary_.size();
         const std::size_t reused = std::min(count, cavity_.size());
         const std::size_t from_free = std::min(count - reused, free_->size());
@@ -321,63 +316,104 @@ private:
 
         std::uint32_t* corner = shared_.mesh.corner.data();
         std::uint32_t* adjacent = shared_.mesh.links();
-        // The boundary's vertices numbered 0, 1, ... (per-vertex slots, cleared afterwards), so that
-        // an edge of the boundary indexes a square table directly: each edge is met twice, by the
-        // two new tetrahedra that share the face through it and p; the first leaves its face there,
-        // the second links the two and empties the entry again.
-        // Both loops are written without branches on the data (a vertex seen before or not, an edge
-        // met the first or the second time): those go either way at random and mispredicted
-        // branches were most of their cost.
-        std::uint32_t vertices = 0;
-        numbered_.resize(3 * count + 1);
-        std::size_t numbered = 0;
-        for (Boundary& b : boundary_) {
-            for (std::uint32_t i = 0; i < 4; ++i) {
-                if (i == b.face) continue;
-                std::uint32_t& id = b.corner[i] == kGhost ? ghost_id_ : shared_.vertex_id[b.corner[i]];
-                const std::uint32_t fresh = id == 0;
-                vertices += fresh;
-                id = fresh ? vertices : id;
-                numbered_[numbered] = b.corner[i];
-                numbered += fresh;
-                b.local[i] = id - 1;
-            }
-        }
-        if (vertices > table_side_) resize_table(vertices);
-        std::size_t open = 0;  // edges met once so far
+        // Each new tetrahedron is p, v0, v1, v2: face 0 is the boundary face, and face j (1 to 3)
+        // holds p and the boundary edge from v[j mod 3] to v[(j + 1) mod 3], which the new
+        // tetrahedron across it has the other way round (the boundary is a closed surface whose
+        // faces all turn the same way).
         for (std::size_t i = 0; i < count; ++i) {
             const Boundary& b = boundary_[i];
             const std::uint32_t n = slots_[i];
-            std::memcpy(corner + 4 * n, b.corner, sizeof b.corner);
-            adjacent[4 * n + b.face] = b.outside;
-            adjacent[b.outside] = 4 * n + b.face;
-            // Faces j != face contain p and the boundary edge of the other two corners. The first
-            // face met at an edge waits in the table (its own entry holds kNoFace until then); the
-            // second links the two and empties the entry.
-            for (std::uint32_t j = 0; j < 4; ++j) {
-                if (j == b.face) continue;
-                const std::uint32_t e0 = b.local[kOtherTwo[j][b.face][0]], e1 = b.local[kOtherTwo[j][b.face][1]];
-                std::uint32_t& entry = table_[std::min(e0, e1) * table_side_ + std::max(e0, e1)];
-                const std::uint32_t me = 4 * n + j, waiting = entry;
-                const bool second = waiting != kNoFace;
-                entry = second ? kNoFace : me;
-                adjacent[second ? waiting : me] = me;
-                adjacent[me] = waiting;
-                open = second ? open - 1 : open + 1;
+            corner[4 * n] = p;
+            std::memcpy(corner + 4 * n + 1, b.v, sizeof b.v);
+            adjacent[4 * n] = b.outside;
+            adjacent[b.outside] = 4 * n;
+        }
+        if (count <= kSmallBoundary) {
+            link_small(adjacent, count);
+        } else {
+            link_large(adjacent, count);
+        }
+        last_ = slots_[0];
+        for (std::size_t i = 0; i < count; ++i)
+            if (boundary_[i].v[2] != kGhost) {
+                last_ = slots_[i];
+                break;
+            }
+        return true;
+    }
+
+    /// Links the new tetrahedra's faces through p (a boundary of at most kSmallBoundary faces, so
+    /// at most kSide vertices): the boundary's vertices numbered 0, 1, ... (per-point slots,
+    /// cleared afterwards), each directed edge's face written into a kSide x kSide table, then each
+    /// face reads the entry of its edge the other way round. No branch on the data: whether a vertex
+    /// was met before goes either way at random, and mispredicted branches were most of the cost.
+    void link_small(std::uint32_t* adjacent, std::size_t count) {
+        std::uint32_t vertices = 0;
+        std::size_t numbered = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                const std::uint32_t v = boundary_[i].v[j];
+                std::uint32_t& id = v == kGhost ? ghost_id_ : shared_.vertex_id[v];
+                const std::uint32_t fresh = id == 0;
+                vertices += fresh;
+                id = fresh ? vertices : id;
+                numbered_[numbered] = v;
+                numbered += fresh;
+                local_[3 * i + j] = static_cast<std::uint8_t>((id - 1) & (kSide - 1));
             }
         }
         for (std::size_t k = 0; k < numbered; ++k) {
             const std::uint32_t v = numbered_[k];
             (v == kGhost ? ghost_id_ : shared_.vertex_id[v]) = 0;
         }
-        if (open != 0) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
-        last_ = slots_[0];
-        for (std::size_t i = 0; i < count; ++i)
-            if (boundary_[i].corner[3] != kGhost) {
-                last_ = slots_[i];
-                break;
+        // A closed surface of triangles with V vertices has 2V - 4 of them.
+        if (2 * std::size_t{vertices} != count + 4) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
+        std::uint32_t* table = table_.data();
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::uint8_t* id = &local_[3 * i];
+            const std::uint32_t face = 4 * slots_[i];
+            table[id[1] * kSide + id[2]] = face + 1;
+            table[id[2] * kSide + id[0]] = face + 2;
+            table[id[0] * kSide + id[1]] = face + 3;
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::uint8_t* id = &local_[3 * i];
+            const std::uint32_t face = 4 * slots_[i];
+            adjacent[face + 1] = table[id[2] * kSide + id[1]];
+            adjacent[face + 2] = table[id[0] * kSide + id[2]];
+            adjacent[face + 3] = table[id[1] * kSide + id[0]];
+        }
+        // Every face's neighbour names it back (an entry left from an earlier cavity would not).
+        bool paired = true;
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::uint32_t face = 4 * slots_[i];
+            for (std::uint32_t j = 1; j < 4; ++j) paired &= adjacent[adjacent[face + j]] == face + j;
+        }
+        if (!paired) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
+    }
+
+    /// The same for a larger boundary (points on a sphere and its centre: a cavity of every
+    /// tetrahedron): the directed edges sorted by their two ends, each undirected edge met twice.
+    void link_large(std::uint32_t* adjacent, std::size_t count) {
+        edges_.clear();
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::uint32_t* v = boundary_[i].v;
+            const std::uint32_t face = 4 * slots_[i];
+            for (std::uint32_t j = 0; j < 3; ++j) {
+                const std::uint32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
+                edges_.push_back({(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b), face + 1 + j});
             }
-        return true;
+        }
+        std::sort(edges_.begin(), edges_.end(), [](const Edge& x, const Edge& y) {
+            return x.key < y.key || (x.key == y.key && x.face < y.face);
+        });
+        for (std::size_t e = 0; e < edges_.size(); e += 2) {
+            if (e + 1 == edges_.size() || edges_[e].key != edges_[e + 1].key ||
+                (e + 2 < edges_.size() && edges_[e + 2].key == edges_[e].key))
+                throw std::logic_error("delaunay3: a cavity's boundary is not closed");
+            adjacent[edges_[e].face] = edges_[e + 1].face;
+            adjacent[edges_[e + 1].face] = edges_[e].face;
+        }
     }
 
     void grow(std::size_t tetrahedra) {
@@ -393,18 +429,17 @@ private:
         mesh.adjacent.resize(4 * tetrahedra);
     }
 
-    void resize_table(std::uint32_t side) {
-        table_side_ = std::max<std::uint32_t>(2 * table_side_, side);
-        table_.assign(std::size_t{table_side_} * table_side_, kNoFace);
-    }
-
     struct Boundary {
-        std::uint32_t corner[4];  ///< the new tetrahedron's corners: p at `face`
-        std::uint32_t local[4];   ///< the other corners' numbers on the cavity boundary
-        std::uint32_t outside;    ///< the neighbour across `face`, as 4 * tetrahedron + its face
+        std::uint32_t v[3];    ///< the new tetrahedron's corners after p (a vertex at infinity last)
+        std::uint32_t outside; ///< the neighbour across the face, as 4 * tetrahedron + its face
+    };
+    struct Edge {
+        std::uint64_t key;  ///< the edge's ends, lower first
         std::uint32_t face;
     };
-    static constexpr std::uint32_t kNoFace = 0xffffffffu;
+    /// Boundaries of at most this many faces are linked through the table (kSide vertices).
+    static constexpr std::size_t kSmallBoundary = 124;
+    static constexpr std::uint32_t kSide = 64;
 
     Shared& shared_;
     bool restricted_ = false;
@@ -414,9 +449,10 @@ private:
     std::uint32_t block_next_ = 0, block_end_ = 0;
     std::vector<std::uint32_t> cavity_, checked_, slots_;
     std::vector<Boundary> boundary_;
-    std::vector<std::uint32_t> table_;  ///< table_side_^2 faces by boundary edge, all kNoFace between points
-    std::uint32_t table_side_ = 0;
-    std::vector<std::uint32_t> numbered_;  ///< the vertices numbered for the current cavity
+    std::vector<std::uint32_t> table_ = std::vector<std::uint32_t>(kSide * kSide, 0);  ///< faces by directed edge
+    std::vector<std::uint32_t> numbered_ = std::vector<std::uint32_t>(3 * kSmallBoundary + 1);  ///< the vertices numbered
+    std::vector<std::uint8_t> local_ = std::vector<std::uint8_t>(3 * kSmallBoundary);  ///< their numbers per face
+    std::vector<Edge> edges_;
     std::uint32_t ghost_id_ = 0;
     std::uint32_t random_ = 0x9e3779b9u;
     /// Per cell, the tetrahedron this partition last made for a point there in this pass (or
