@@ -296,7 +296,11 @@ private:
             unmark();
             return false;
         }
-        unmark();
+        // The marks: the cavity's rows that are reused are written whole below; the others are
+        // cleared (the checked neighbours, and cavity rows left over, which become free).
+        std::uint32_t* rows = shared_.mesh.corner.data();
+        for (const std::uint32_t t : checked_) rows[4 * t] &= kIndex;
+        for (std::size_t i = reused; i < cavity_.size(); ++i) rows[4 * cavity_[i]] &= kIndex;
         slots_.assign(cavity_.begin(), cavity_.begin() + reused);
         for (std::size_t i = 0; i < from_free; ++i) {
             slots_.push_back(free_->back());
