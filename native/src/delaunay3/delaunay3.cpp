@@ -343,9 +343,9 @@ inline std::uint32_t ones(std::uint64_t v) {
 /// for every thread count), each row rewritten as original indices in canonical corner order and
 /// its neighbours' new positions; the hull triangles from the ghosts.
 void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& out) {
+    using delaunay3_detail::kRow;
     const std::size_t slots = mesh.size();
-    std::uint32_t* corner = mesh.corner.data();
-    std::uint32_t* link = mesh.links();
+    std::uint32_t* words = mesh.data();
     const std::uint32_t* original = points.original.data();
     points.xyz = std::vector<double>();  // the coordinates are not needed any more: room for the rest
     constexpr std::uint32_t kNone = 0xffffffffu;  // -1 as a neighbour
@@ -362,7 +362,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     std::vector<std::vector<std::array<std::uint32_t, 3>>> faces(chunks);
     detail::parallel_for(threads, chunks, [&](std::size_t chunk) {
         for (std::size_t t = chunk * kRows; t < std::min(slots, (chunk + 1) * kRows); ++t) {
-            const std::uint32_t* c = corner + 4 * t;
+            const std::uint32_t* c = words + kRow * t;
             if (c[3] < delaunay3_detail::kFree) kept[t >> 6] |= std::uint64_t{1} << (t & 63);
             if (c[3] == kGhost) {
                 std::array<std::uint32_t, 3> f = {original[c[0]], original[c[1]], original[c[2]]};
@@ -384,33 +384,48 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
     // Each kept row rewritten where it is (on the threads: a row reads only itself and the shared
-    // positions), then the rows moved down into place (position(t) <= t) in one pass.
+    // positions): its corners as original indices in canonical order, its links as the
+    // neighbours' positions.
     detail::parallel_for(threads, chunks, [&](std::size_t block) {
         for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t) {
             if (position(static_cast<std::uint32_t>(t)) == kNone) continue;
-            const std::uint32_t orig[4] = {original[corner[4 * t]], original[corner[4 * t + 1]],
-                                           original[corner[4 * t + 2]], original[corner[4 * t + 3]]};
+            std::uint32_t* row = words + kRow * t;
+            const std::uint32_t orig[4] = {original[row[0]], original[row[1]], original[row[2]], original[row[3]]};
             const std::uint32_t r = canonical_rotation(orig);
             std::uint32_t c[4], n[4];
             for (int j = 0; j < 4; ++j) {
                 const std::uint32_t k = (r >> (2 * j)) & 3u;
                 c[j] = orig[k];
-                n[j] = position(link[4 * t + k] >> 2);  // kNone (-1) across the hull
+                n[j] = position(row[4 + k] >> 3);  // kNone (-1) across the hull
             }
-            std::copy(c, c + 4, corner + 4 * t);
-            std::copy(n, n + 4, link + 4 * t);
+            std::copy(c, c + 4, row);
+            std::copy(n, n + 4, row + 4);
         }
     });
+    // Then, in one pass in slot order, the corners appended to the tetrahedra and the links moved
+    // down to the front of the mesh's own array (position(t) <= t: the front is read before it is
+    // written), which becomes the neighbours. The pages between the two fronts, read and not yet
+    // written, are given back as the pass goes, so the memory peaks no higher than the mesh.
+    out.tetrahedra.reserve(4 * std::size_t{finite});
+    std::size_t front = 0;     // words of neighbours written (4 per tetrahedron so far)
+    std::size_t released = 0;  // the pages between the fronts are given back up to here
+    constexpr std::size_t kReleaseEvery = std::size_t{1} << 18;  // words (1 MiB)
     for (std::size_t t = 0; t < slots; ++t) {
-        const std::uint32_t q = position(static_cast<std::uint32_t>(t));
-        if (q == kNone || q == t) continue;
-        std::copy(corner + 4 * t, corner + 4 * t + 4, corner + 4 * std::size_t{q});
-        std::copy(link + 4 * t, link + 4 * t + 4, link + 4 * std::size_t{q});
+        if (position(static_cast<std::uint32_t>(t)) != kNone) {
+            std::uint32_t row[kRow];
+            std::copy(words + kRow * t, words + kRow * (t + 1), row);
+            out.tetrahedra.insert(out.tetrahedra.end(), row, row + 4);
+            std::copy(row + 4, row + 8, words + front);
+            front += 4;
+        }
+        const std::size_t read = kRow * (t + 1), from = std::max(front, released);
+        if (read >= from + kReleaseEvery || t + 1 == slots) {
+            detail::release_pages(words + from, words + read);
+            released = read;
+        }
     }
-    mesh.corner.resize(4 * std::size_t{finite});
-    mesh.adjacent.resize(4 * std::size_t{finite});
-    out.tetrahedra = std::move(mesh.corner);
-    out.neighbors = std::move(mesh.adjacent);
+    mesh.words.resize(4 * std::size_t{finite});
+    out.neighbors = std::move(mesh.words);
 }
 
 /// Coplanar points: their Delaunay triangulation in the plane is the restriction of the 3D one of
@@ -452,19 +467,18 @@ void planar_triangles(PointSpan input, Points& points, const Delaunay3Options& o
     Mesh mesh = delaunay3_detail::tetrahedralize(points, options.threads, options.progress, options.furthest_site);
 
     const std::size_t slots = mesh.size();
-    const std::uint32_t* link = mesh.links();
     constexpr std::uint32_t kNone = 0xffffffffu;
     std::vector<std::uint32_t> position(slots, kNone);
     std::uint32_t count = 0;
     for (std::size_t t = 0; t < slots; ++t) {
-        const std::uint32_t* w = &mesh.corner[4 * t];
+        const std::uint32_t* w = mesh.corners(t);
         if (w[3] < delaunay3_detail::kFree && std::find(w, w + 4, extra) != w + 4) position[t] = count++;
     }
     out.triangles.resize(3 * std::size_t{count});
     out.neighbors.resize(3 * std::size_t{count});
     for (std::size_t t = 0; t < slots; ++t) {
         if (position[t] == kNone) continue;
-        const std::uint32_t* w = &mesh.corner[4 * t];
+        const std::uint32_t* w = mesh.corners(t);
         const int k = static_cast<int>(std::find(w, w + 4, extra) - w);
         // The face opposite q turned towards q; the triangle's corner j is tetrahedron corner at[j],
         // and the edge opposite it lies in the face opposite that corner.
@@ -477,7 +491,7 @@ void planar_triangles(PointSpan input, Points& points, const Delaunay3Options& o
         for (int j = 0; j < 3; ++j) {
             const int corner_at = at[(first + j) % 3];
             out.triangles[q3 + j] = points.original[w[corner_at]];
-            const std::uint32_t across = position[link[4 * t + corner_at] >> 2];
+            const std::uint32_t across = position[w[4 + corner_at] >> 3];
             out.neighbors[q3 + j] = across == kNone ? -1 : static_cast<std::int32_t>(across);
         }
     }

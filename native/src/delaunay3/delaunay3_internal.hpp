@@ -42,21 +42,26 @@ inline bool lexicographically_less(const double* a, const double* b) {
     return a[0] < b[0] || (a[0] == b[0] && (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));
 }
 
-/// The tetrahedra: corners (positively oriented; ghosts have kGhost as corner 3 and their finite
-/// face, corners 0-2, counter-clockwise seen from outside) and, for face k (opposite corner k), the
-/// neighbour across it as 4 * tetrahedron + its face index. `adjacent` is stored as int32 (the type
-/// of the output's neighbours, which are written into the same array) and used as uint32 through
-/// links(): at most kMaxTetrahedra slots keep every value below 2^31.
+/// The tetrahedra, a row of 8 words per slot (corners and links side by side: the cavity's
+/// growth reads both of a tetrahedron, and one row is one cache line's half): the 4 corners
+/// (positively oriented; ghosts have kGhost as corner 3 and their finite face, corners 0-2,
+/// counter-clockwise seen from outside), then for face k (opposite corner k) the link to the
+/// neighbour across it: the index of the neighbour's word that links back, 8 u + 4 + j for face j
+/// of tetrahedron u (so neighbour = link >> 3, its face = link & 3, and words[link] is the way
+/// back). Stored as int32, the type of the output's neighbours (written into the same array at the
+/// end), and used as uint32 through data(): at most kMaxTetrahedra slots keep every link within
+/// 32 bits.
 constexpr std::size_t kMaxTetrahedra = std::size_t{1} << 29;
+constexpr std::size_t kRow = 8;
 struct Mesh {
-    std::vector<std::uint32_t> corner;
-    std::vector<std::int32_t> adjacent;
-    std::uint32_t* links() { return reinterpret_cast<std::uint32_t*>(adjacent.data()); }
-    const std::uint32_t* links() const { return reinterpret_cast<const std::uint32_t*>(adjacent.data()); }
-    std::size_t size() const { return corner.size() / 4; }
-    bool is_ghost(std::size_t t) const { return corner[4 * t + 3] == kGhost; }
-    bool is_free(std::size_t t) const { return corner[4 * t + 3] == kFree; }
+    std::vector<std::int32_t> words;
+    std::uint32_t* data() { return reinterpret_cast<std::uint32_t*>(words.data()); }
+    const std::uint32_t* data() const { return reinterpret_cast<const std::uint32_t*>(words.data()); }
+    std::size_t size() const { return words.size() / kRow; }
+    const std::uint32_t* corners(std::size_t t) const { return data() + kRow * t; }
 };
+/// The link of face k of tetrahedron t (see Mesh).
+constexpr std::uint32_t link_of(std::size_t t, std::uint32_t k) { return static_cast<std::uint32_t>(kRow * t + 4 + k); }
 
 /// The exact predicates with the symbolic perturbation (delaunay3.hpp, "Ties").
 class Predicates {

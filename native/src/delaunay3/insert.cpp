@@ -6,9 +6,11 @@
 // face, never back through the face just crossed). The tetrahedron reached holds p, or is a ghost
 // whose hull face p sees; either way it conflicts with p. The cavity, every tetrahedron whose
 // (perturbed) circumsphere holds p, is grown from it over faces; it is star-shaped from p, so each
-// boundary face joined to p is a positively oriented new tetrahedron. The new tetrahedra take the
-// cavity's slots first; their faces through p are paired by the cavity boundary edge they contain
-// (a small hash table, cleared after each point).
+// boundary face joined to p is a positively oriented new tetrahedron (p first, then the face with
+// a vertex at infinity last). The new tetrahedra take the cavity's slots first; their faces through
+// p are paired by the boundary edge they contain, which the two faces hold in opposite directions
+// (a table by directed edge, written in one pass and read in another; sorted edges for large
+// cavities).
 //
 // Partitions (after Marot, Pellerin & Remacle, "One machine, one minute, three billion tetrahedra",
 // IJNME 2019, made deterministic). Each pass labels every point with a partition, by rules that
@@ -103,7 +105,7 @@ public:
         block_end_ = block_end;
     }
     bool owns(std::uint32_t t) const {
-        const std::uint32_t* c = shared_.mesh.corner.data() + 4 * static_cast<std::size_t>(t);
+        const std::uint32_t* c = shared_.mesh.corners(t);
         const std::uint8_t* label = shared_.part.data();
         // The vertex at infinity belongs to everyone: a ghost asks its corner 0 twice.
         const std::uint32_t last = c[3] == kGhost ? c[0] : c[3];
@@ -123,7 +125,7 @@ public:
             // between clusters, or across a slab): once more from the anchor of p's cell, a
             // tetrahedron of this partition made for a point near p, when there is one.
             const std::uint32_t a = anchor_[cell];
-            if (a == kNoAnchor || a == last_ || shared_.mesh.corner[4 * std::size_t{a} + 3] == kFree) return false;
+            if (a == kNoAnchor || a == last_ || shared_.mesh.corners(a)[3] == kFree) return false;
             last_ = a;
             t0 = walk(p);
             if (t0 == kDefer) return false;
@@ -153,11 +155,10 @@ public:
     /// A tetrahedron that conflicts with p: one holding it, or a ghost whose hull face p sees;
     /// kDefer when the walk would leave the owned tetrahedra.
     std::uint32_t walk(std::uint32_t p) {
-        const std::uint32_t* corner = shared_.mesh.corner.data();
-        const std::uint32_t* adjacent = shared_.mesh.links();
+        const std::uint32_t* words = shared_.mesh.data();
         std::uint32_t t = last_;
-        if (corner[4 * t + 3] == kGhost) {
-            t = adjacent[4 * t + 3] >> 2;  // the finite side of its hull face
+        if (words[kRow * t + 3] == kGhost) {
+            t = words[link_of(t, 3)] >> 3;  // the finite side of its hull face
             if (restricted_ && !owns(t)) return kDefer;
         }
         const Predicates& predicates = shared_.predicates;
@@ -165,8 +166,7 @@ public:
         const double bound = predicates.orient_bound();
         std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
-            const std::uint32_t* c = corner + 4 * t;
-            __builtin_prefetch(adjacent + 4 * t);
+            const std::uint32_t* c = words + kRow * t;
             // The corners relative to p, once: the orientation with corner k replaced by p is then
             // the determinant of the other three, signed (k = 0: +[1 2 3], 1: -[0 2 3], 2: +[0 1 3],
             // 3: -[0 1 2]), with orient3d's static bound (the same roundings as its filter).
@@ -198,11 +198,11 @@ public:
                 }
             }
             if (exit == 4) return t;
-            const std::uint32_t next = adjacent[4 * t + exit];
-            t = next >> 2;
+            const std::uint32_t next = words[link_of(t, exit)];
+            t = next >> 3;
             entered = next & 3u;
             if (restricted_ && !owns(t)) return kDefer;
-            if (corner[4 * t + 3] == kGhost) return t;
+            if (words[kRow * t + 3] == kGhost) return t;
         }
     }
 
@@ -224,62 +224,57 @@ private:
     static constexpr std::uint32_t kInCavity = 1u << 30, kChecked = 2u << 30, kIndex = kInCavity - 1;
 
     void unmark() {
-        std::uint32_t* corner = shared_.mesh.corner.data();
-        for (const std::uint32_t t : cavity_) corner[4 * t] &= kIndex;
-        for (const std::uint32_t t : checked_) corner[4 * t] &= kIndex;
+        std::uint32_t* words = shared_.mesh.data();
+        for (const std::uint32_t t : cavity_) words[kRow * t] &= kIndex;
+        for (const std::uint32_t t : checked_) words[kRow * t] &= kIndex;
     }
 
     /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the other
     /// corners of its new tetrahedron (after p) and the neighbour outside.
     /// False (marks undone) when the cavity reaches a tetrahedron this worker does not own.
     bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
-        std::uint32_t* corner = shared_.mesh.corner.data();
-        const std::uint32_t* adjacent = shared_.mesh.links();
+        std::uint32_t* words = shared_.mesh.data();
         cavity_.clear();
         checked_.clear();
         boundary_.clear();
-        corner[4 * t0] |= kInCavity;
+        words[kRow * t0] |= kInCavity;
         cavity_.push_back(t0);
         for (std::size_t i = 0; i < cavity_.size(); ++i) {
             const std::uint32_t t = cavity_[i];
-            // The rows the growth reads next are fetched ahead (each neighbour's corners now, a new
-            // cavity member's links when it joins, an outside neighbour's links before the fill
-            // writes them): the mesh is too large for the caches and these misses were a fifth of
-            // the time; 7 % less on 1e6 uniform points, 3 % on the sphere (same tetrahedra).
-            const std::uint32_t* next = adjacent + 4 * t;
-            for (std::uint32_t k = 0; k < 4; ++k) __builtin_prefetch(corner + 4 * (next[k] >> 2));
+            // The neighbours' rows are fetched ahead: the mesh is too large for the caches and
+            // these misses were a fifth of the time (7 % less on 1e6 uniform points).
+            const std::uint32_t* next = words + kRow * t + 4;
+            for (std::uint32_t k = 0; k < 4; ++k) __builtin_prefetch(words + kRow * (next[k] >> 3));
             for (std::uint32_t k = 0; k < 4; ++k) {
                 const std::uint32_t across = next[k];
-                const std::uint32_t u = across >> 2;
+                const std::uint32_t u = across >> 3;
                 // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
                 // its owner ever marks it: its mark can be read before its ownership is known.
-                const std::uint32_t seen = corner[4 * u] & ~kIndex;
+                const std::uint32_t seen = words[kRow * u] & ~kIndex;
                 if (seen == kInCavity) continue;
                 if (seen == 0) {
                     if (restricted_ && !owns(u)) {
                         // Owned by no partition: never marked (another partition may look at it);
                         // in conflict it would have to change, so p waits for a later pass.
-                        if (shared_.predicates.conflict(corner + 4 * u, p)) {
+                        if (shared_.predicates.conflict(words + kRow * u, p)) {
                             unmark();
                             return false;
                         }
-                    } else if (shared_.predicates.conflict(corner + 4 * u, p)) {
-                        corner[4 * u] |= kInCavity;
-                        __builtin_prefetch(adjacent + 4 * u);
+                    } else if (shared_.predicates.conflict(words + kRow * u, p)) {
+                        words[kRow * u] |= kInCavity;
                         cavity_.push_back(u);
                         continue;
                     } else {
-                        corner[4 * u] |= kChecked;
+                        words[kRow * u] |= kChecked;
                         checked_.push_back(u);
                     }
                 }
                 // The face, counter-clockwise seen from outside the cavity, a ghost's vertex at
                 // infinity last: p and these three make the new tetrahedron, positively oriented.
-                const std::uint32_t* c = corner + 4 * t;
+                const std::uint32_t* c = words + kRow * t;
                 const int* f = c[3] == kGhost ? kGhostFaceCorners[k] : kFaceCorners[k];
                 const std::uint32_t v0 = c[f[0]], v1 = c[f[1]], v2 = c[f[2]];
                 boundary_.push_back({{v0 & kIndex, v1 & kIndex, v2}, across});
-                __builtin_prefetch(adjacent + across, 1);
             }
         }
         return true;
@@ -298,9 +293,9 @@ private:
         }
         // The marks: the cavity's rows that are reused are written whole below; the others are
         // cleared (the checked neighbours, and cavity rows left over, which become free).
-        std::uint32_t* rows = shared_.mesh.corner.data();
-        for (const std::uint32_t t : checked_) rows[4 * t] &= kIndex;
-        for (std::size_t i = reused; i < cavity_.size(); ++i) rows[4 * cavity_[i]] &= kIndex;
+        std::uint32_t* rows = shared_.mesh.data();
+        for (const std::uint32_t t : checked_) rows[kRow * t] &= kIndex;
+        for (std::size_t i = reused; i < cavity_.size(); ++i) rows[kRow * cavity_[i]] &= kIndex;
         slots_.assign(cavity_.begin(), cavity_.begin() + reused);
         for (std::size_t i = 0; i < from_free; ++i) {
             slots_.push_back(free_->back());
@@ -314,12 +309,11 @@ private:
             for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(static_cast<std::uint32_t>(first + i));
         }
         for (std::size_t i = count; i < cavity_.size(); ++i) {  // a cavity with more cells than faces
-            shared_.mesh.corner[4 * cavity_[i] + 3] = kFree;
+            shared_.mesh.data()[kRow * cavity_[i] + 3] = kFree;
             free_->push_back(cavity_[i]);
         }
 
-        std::uint32_t* corner = shared_.mesh.corner.data();
-        std::uint32_t* adjacent = shared_.mesh.links();
+        std::uint32_t* words = shared_.mesh.data();
         // Each new tetrahedron is p, v0, v1, v2: face 0 is the boundary face, and face j (1 to 3)
         // holds p and the boundary edge from v[j mod 3] to v[(j + 1) mod 3], which the new
         // tetrahedron across it has the other way round (the boundary is a closed surface whose
@@ -327,15 +321,16 @@ private:
         for (std::size_t i = 0; i < count; ++i) {
             const Boundary& b = boundary_[i];
             const std::uint32_t n = slots_[i];
-            corner[4 * n] = p;
-            std::memcpy(corner + 4 * n + 1, b.v, sizeof b.v);
-            adjacent[4 * n] = b.outside;
-            adjacent[b.outside] = 4 * n;
+            std::uint32_t* row = words + kRow * n;
+            row[0] = p;
+            std::memcpy(row + 1, b.v, sizeof b.v);
+            row[4] = b.outside;
+            words[b.outside] = link_of(n, 0);
         }
         if (count <= kSmallBoundary) {
-            link_small(adjacent, count);
+            link_small(words, count);
         } else {
-            link_large(adjacent, count);
+            link_large(words, count);
         }
         last_ = slots_[0];
         for (std::size_t i = 0; i < count; ++i)
@@ -351,7 +346,7 @@ private:
     /// cleared afterwards), each directed edge's face written into a kSide x kSide table, then each
     /// face reads the entry of its edge the other way round. No branch on the data: whether a vertex
     /// was met before goes either way at random, and mispredicted branches were most of the cost.
-    void link_small(std::uint32_t* adjacent, std::size_t count) {
+    void link_small(std::uint32_t* words, std::size_t count) {
         std::uint32_t vertices = 0;
         std::size_t numbered = 0;
         for (std::size_t i = 0; i < count; ++i) {
@@ -375,34 +370,34 @@ private:
         std::uint32_t* table = table_.data();
         for (std::size_t i = 0; i < count; ++i) {
             const std::uint8_t* id = &local_[3 * i];
-            const std::uint32_t face = 4 * slots_[i];
+            const std::uint32_t face = link_of(slots_[i], 0);
             table[id[1] * kSide + id[2]] = face + 1;
             table[id[2] * kSide + id[0]] = face + 2;
             table[id[0] * kSide + id[1]] = face + 3;
         }
         for (std::size_t i = 0; i < count; ++i) {
             const std::uint8_t* id = &local_[3 * i];
-            const std::uint32_t face = 4 * slots_[i];
-            adjacent[face + 1] = table[id[2] * kSide + id[1]];
-            adjacent[face + 2] = table[id[0] * kSide + id[2]];
-            adjacent[face + 3] = table[id[1] * kSide + id[0]];
+            const std::uint32_t face = link_of(slots_[i], 0);
+            words[face + 1] = table[id[2] * kSide + id[1]];
+            words[face + 2] = table[id[0] * kSide + id[2]];
+            words[face + 3] = table[id[1] * kSide + id[0]];
         }
         // Every face's neighbour names it back (an entry left from an earlier cavity would not).
         bool paired = true;
         for (std::size_t i = 0; i < count; ++i) {
-            const std::uint32_t face = 4 * slots_[i];
-            for (std::uint32_t j = 1; j < 4; ++j) paired &= adjacent[adjacent[face + j]] == face + j;
+            const std::uint32_t face = link_of(slots_[i], 0);
+            for (std::uint32_t j = 1; j < 4; ++j) paired &= words[words[face + j]] == face + j;
         }
         if (!paired) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
     }
 
     /// The same for a larger boundary (points on a sphere and its centre: a cavity of every
     /// tetrahedron): the directed edges sorted by their two ends, each undirected edge met twice.
-    void link_large(std::uint32_t* adjacent, std::size_t count) {
+    void link_large(std::uint32_t* words, std::size_t count) {
         edges_.clear();
         for (std::size_t i = 0; i < count; ++i) {
             const std::uint32_t* v = boundary_[i].v;
-            const std::uint32_t face = 4 * slots_[i];
+            const std::uint32_t face = link_of(slots_[i], 0);
             for (std::uint32_t j = 0; j < 3; ++j) {
                 const std::uint32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
                 edges_.push_back({(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b), face + 1 + j});
@@ -415,22 +410,19 @@ private:
             if (e + 1 == edges_.size() || edges_[e].key != edges_[e + 1].key ||
                 (e + 2 < edges_.size() && edges_[e + 2].key == edges_[e].key))
                 throw std::logic_error("delaunay3: a cavity's boundary is not closed");
-            adjacent[edges_[e].face] = edges_[e + 1].face;
-            adjacent[edges_[e + 1].face] = edges_[e].face;
+            words[edges_[e].face] = edges_[e + 1].face;
+            words[edges_[e + 1].face] = edges_[e].face;
         }
     }
 
     void grow(std::size_t tetrahedra) {
         Mesh& mesh = shared_.mesh;
         if (tetrahedra > kMaxTetrahedra) throw std::length_error("more than 2^29 tetrahedra");
-        if (4 * tetrahedra > mesh.corner.capacity()) {
+        if (kRow * tetrahedra > mesh.words.capacity()) {
             // Beyond the estimate (rare: non-uniform inputs): grow by half again.
-            const std::size_t room = 4 * (tetrahedra + tetrahedra / 2);
-            mesh.corner.reserve(room);
-            mesh.adjacent.reserve(room);
+            mesh.words.reserve(kRow * (tetrahedra + tetrahedra / 2));
         }
-        mesh.corner.resize(4 * tetrahedra);
-        mesh.adjacent.resize(4 * tetrahedra);
+        mesh.words.resize(kRow * tetrahedra);
     }
 
     struct Boundary {
@@ -486,15 +478,13 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
     }
     Mesh& mesh = shared.mesh;
     const std::size_t expected = 7 * m + 64;  // ~6.7 per point for uniform points
-    detail::reserve_large(mesh.corner, 4 * expected);
-    detail::reserve_large(mesh.adjacent, 4 * expected);
-    mesh.corner.resize(20);
-    mesh.adjacent.resize(20);
+    detail::reserve_large(mesh.words, kRow * expected);
+    mesh.words.resize(kRow * 5);
     shared.vertex_id.assign(m, 0);
     shared.part.assign(m, 0);
     shared.anchor.assign(kCells, kNoAnchor);
     while ((m >> shared.cell_shift) >= kCells) ++shared.cell_shift;
-    for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, &mesh.corner[4 * t]);
+    for (int t = 0; t < 5; ++t) std::copy(corners[t], corners[t] + 4, mesh.data() + kRow * t);
     // Pair the five tetrahedra's faces by their corner sets (20 faces: a direct search).
     auto face_set = [&](int t, int k) {
         std::array<std::uint32_t, 3> f{};
@@ -507,7 +497,7 @@ std::array<std::size_t, 4> start_mesh(Shared& shared) {
         for (int k = 0; k < 4; ++k)
             for (int u = 0; u < 5; ++u)
                 for (int j = 0; j < 4; ++j)
-                    if (u != t && face_set(t, k) == face_set(u, j)) mesh.links()[4 * t + k] = 4 * u + j;
+                    if (u != t && face_set(t, k) == face_set(u, j)) mesh.data()[link_of(t, k)] = link_of(u, j);
     return {0, 1, c, d};
 }
 
@@ -520,9 +510,8 @@ public:
             // The mesh's reserved rows mapped on the threads now, rather than page by page on the
             // calling thread as the serial resizes first touch them (a tenth of a 2-thread run).
             Mesh& mesh = shared_.mesh;
-            const detail::Prefault rows[2] = {{mesh.corner.data(), mesh.corner.capacity() * sizeof(std::uint32_t), 16},
-                                              {mesh.adjacent.data(), mesh.adjacent.capacity() * sizeof(std::int32_t), 16}};
-            detail::parallel_for(threads_, 32, [&](std::size_t k) { rows[k / 16].part(k % 16); });
+            const detail::Prefault rows{mesh.words.data(), mesh.words.capacity() * sizeof(std::int32_t), 32};
+            detail::parallel_for(threads_, 32, [&](std::size_t k) { rows.part(k); });
         }
     }
 
@@ -611,8 +600,9 @@ private:
                 // tetrahedralization, most points on a sphere) starts one when the finite side of
                 // its hull face is owned too: the partition's walks begin there.
                 const std::uint32_t t = serial_.walk(lists[i][k]);
-                const bool ghost = shared_.mesh.corner[4 * t + 3] == kGhost;
-                if (workers_[i].owns(t) && (!ghost || workers_[i].owns(shared_.mesh.links()[4 * t + 3] >> 2))) {
+                const std::uint32_t* row = shared_.mesh.corners(t);
+                const bool ghost = row[3] == kGhost;
+                if (workers_[i].owns(t) && (!ghost || workers_[i].owns(row[4 + 3] >> 3))) {
                     start[i] = t;
                     first[i] = k;
                 }
@@ -620,11 +610,10 @@ private:
         }
         // Each partition starts with the anchors (of earlier passes) that are finite tetrahedra it owns.
         for (std::size_t i = 0; i < parts; ++i) workers_[i].reset_anchors();
-        const std::uint32_t* corner = shared_.mesh.corner.data();
         for (std::uint32_t cell = 0; cell < kCells; ++cell) {
             const std::uint32_t t = shared_.anchor[cell];
-            if (t == kNoAnchor || corner[4 * std::size_t{t} + 3] >= kFree) continue;  // ghost or free
-            const std::uint8_t owner = shared_.part[corner[4 * std::size_t{t}]];
+            if (t == kNoAnchor || shared_.mesh.corners(t)[3] >= kFree) continue;  // ghost or free
+            const std::uint8_t owner = shared_.part[shared_.mesh.corners(t)[0]];
             if (owner < parts && workers_[owner].owns(t)) workers_[owner].seed_anchor(cell, t);
         }
         // Free slots shared out in order, then a block of fresh slots each.
@@ -680,13 +669,9 @@ private:
         Mesh& mesh = shared_.mesh;
         if (slots > kMaxTetrahedra) throw std::length_error("more than 2^29 tetrahedra");
         const std::size_t old = mesh.size();
-        if (4 * slots > mesh.corner.capacity()) {
-            mesh.corner.reserve(4 * (slots + slots / 2));
-            mesh.adjacent.reserve(4 * (slots + slots / 2));
-        }
-        mesh.corner.resize(4 * slots);
-        mesh.adjacent.resize(4 * slots);
-        for (std::size_t t = old; t < slots; ++t) mesh.corner[4 * t + 3] = kFree;
+        if (kRow * slots > mesh.words.capacity()) mesh.words.reserve(kRow * (slots + slots / 2));
+        mesh.words.resize(kRow * slots);
+        for (std::size_t t = old; t < slots; ++t) mesh.data()[kRow * t + 3] = kFree;
     }
 
     static constexpr std::uint32_t kNoStart = 0xffffffffu;

@@ -179,6 +179,21 @@ struct Prefault {
     }
 };
 
+/// Gives the whole pages inside [begin, end) back to the system (their contents are lost: they
+/// read as zeros when touched again), where the system allows it (Linux); elsewhere nothing. For
+/// an array rewritten in place from its front while its back is read and no longer needed.
+inline void release_pages(void* begin, void* end) {
+#if HULLKIT_HUGE_PAGES
+    constexpr std::uintptr_t kPage = 4096;
+    const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + kPage - 1) / kPage * kPage;
+    const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / kPage * kPage;
+    if (from < to) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+    (void)begin;
+    (void)end;
+#endif
+}
+
 /// Reserves room for n elements in a std::vector, advised onto huge pages when large.
 template <class T>
 void reserve_large(std::vector<T>& v, std::size_t n) {
