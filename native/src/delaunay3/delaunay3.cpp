@@ -383,38 +383,43 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     std::sort(hull.begin(), hull.end());
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
-    // Each kept row rewritten where it is (on the threads: a row reads only itself and the shared
-    // positions): its corners as original indices in canonical order, its links as the
+    auto is_kept = [&](std::size_t t) { return (kept[t >> 6] >> (t & 63)) & 1u; };
+    // A kept row rewritten: its corners as original indices in canonical order, its links as the
     // neighbours' positions.
-    detail::parallel_for(threads, chunks, [&](std::size_t block) {
-        for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t) {
-            if (position(static_cast<std::uint32_t>(t)) == kNone) continue;
-            std::uint32_t* row = words + kRow * t;
-            const std::uint32_t orig[4] = {original[row[0]], original[row[1]], original[row[2]], original[row[3]]};
-            const std::uint32_t r = canonical_rotation(orig);
-            std::uint32_t c[4], n[4];
-            for (int j = 0; j < 4; ++j) {
-                const std::uint32_t k = (r >> (2 * j)) & 3u;
-                c[j] = orig[k];
-                n[j] = position(row[4 + k] >> 3);  // kNone (-1) across the hull
-            }
-            std::copy(c, c + 4, row);
-            std::copy(n, n + 4, row + 4);
-        }
-    });
+    auto rewrite = [&](std::uint32_t* row) {
+        const std::uint32_t orig[4] = {original[row[0]], original[row[1]], original[row[2]], original[row[3]]};
+        const std::uint32_t r = canonical_rotation(orig);
+        std::uint32_t n[4];
+        for (int j = 0; j < 4; ++j) n[j] = position(row[4 + ((r >> (2 * j)) & 3u)] >> 3);  // kNone (-1) across the hull
+        for (int j = 0; j < 4; ++j) row[j] = orig[(r >> (2 * j)) & 3u];
+        std::copy(n, n + 4, row + 4);
+    };
+    // On more threads, first each kept row rewritten where it is (a row reads only itself and the
+    // shared positions); on one, in the pass below.
+    const bool rewritten = detail::resolve_threads(threads) > 1;
+    if (rewritten) {
+        detail::parallel_for(threads, chunks, [&](std::size_t block) {
+            for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t)
+                if (is_kept(t)) rewrite(words + kRow * t);
+        });
+    }
     // Then, in one pass in slot order, the corners appended to the tetrahedra and the links moved
     // down to the front of the mesh's own array (position(t) <= t: the front is read before it is
     // written), which becomes the neighbours. The pages between the two fronts, read and not yet
     // written, are given back as the pass goes, so the memory peaks no higher than the mesh.
-    out.tetrahedra.reserve(4 * std::size_t{finite});
+    std::vector<std::uint32_t>& tetrahedra = out.tetrahedra;
+    tetrahedra.reserve(4 * std::size_t{finite});
     std::size_t front = 0;     // words of neighbours written (4 per tetrahedron so far)
     std::size_t released = 0;  // the pages between the fronts are given back up to here
     constexpr std::size_t kReleaseEvery = std::size_t{1} << 18;  // words (1 MiB)
     for (std::size_t t = 0; t < slots; ++t) {
-        if (position(static_cast<std::uint32_t>(t)) != kNone) {
+        if (is_kept(t)) {
             std::uint32_t row[kRow];
             std::copy(words + kRow * t, words + kRow * (t + 1), row);
-            out.tetrahedra.insert(out.tetrahedra.end(), row, row + 4);
+            if (!rewritten) rewrite(row);
+            // (Grown a chunk at a time: its pages are touched as they are filled.)
+            if (front == tetrahedra.size()) tetrahedra.resize(std::min(4 * std::size_t{finite}, front + kReleaseEvery));
+            std::copy(row, row + 4, tetrahedra.data() + front);
             std::copy(row + 4, row + 8, words + front);
             front += 4;
         }
