@@ -836,7 +836,7 @@ export interface VoronoiDiagram {
 export interface Delaunay3Options {
   /**
    * Called on the calling thread as points are inserted: `pointsDone` of `total` after each round
-   * of the insertion (rounds double in size; the last holds half the points), the last call with
+   * of the insertion (rounds grow eightfold; the last holds 7/8 of the points), the last call with
    * `pointsDone === total`. Not called when the points do not span 3D or the plane.
    */
   progress?: (pointsDone: number, total: number) => void;

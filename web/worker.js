@@ -620,7 +620,7 @@ function delaunay3Job({ id, distribution, n, seed, text, xyz: given, furthestSit
     const genMs = performance.now() - g0;
     tetrahedralization = null; // the memory of the last one first
     const t0 = performance.now();
-    // Progress after each round of the insertion (rounds double; the last holds half the points).
+    // Progress after each round of the insertion (rounds grow eightfold; the last holds 7/8 of the points).
     const result = hullkit.delaunay3(xyz, { furthestSite, progress: (done, total) => self.postMessage({ type: 'progress', id, done, total }) });
     const ms = performance.now() - t0;
     const owned = {

@@ -8,8 +8,9 @@
 //
 // The construction is the incremental one of the lower 4D hull: Bowyer-Watson insertion (each
 // point removes the tetrahedra whose circumsphere holds it and joins the cavity's boundary to it)
-// in a biased randomized insertion order (BRIO, Amenta, Choi & Rote 2003: rounds of doubling size,
-// each sorted along a Hilbert curve), each point located by a walk from the last new tetrahedron.
+// in a biased randomized insertion order (BRIO, Amenta, Choi & Rote 2003; rounds growing eightfold,
+// as Marot, Pellerin & Remacle's, each sorted along a Hilbert curve), each point located by a walk
+// from the last new tetrahedron.
 // Outside the hull "ghost" tetrahedra join each hull triangle to a vertex at infinity.
 //
 // Ties. Five or more cospherical points (grids, lattices, points on a sphere) have more than one
@@ -29,10 +30,12 @@
 // (ranges of the Hilbert curve, then slabs across oblique directions for the points the ranges
 // defer); the cuts depend only on the points, so every thread count builds the same mesh.
 //
-// Memory: the working mesh is two arrays of 16 bytes per tetrahedron (corners, neighbours), about
-// 6.9 slots per point for uniform points (6.75 tetrahedra, the rest free); the output reuses them
-// (no second copy). With the points' scaled copy (24 bytes) and four 4-byte indices per point,
-// about 260 bytes per point at the peak (and 1 byte for the partition label), the input not counted.
+// Memory: the working mesh is one array of 32 bytes per tetrahedron (corners, then neighbours),
+// about 6.75 slots per point for uniform points; the output moves the neighbours to the front of
+// that array and appends the tetrahedra to their own, giving the pages between back as it goes
+// (no higher peak). With the points' scaled copy (24 bytes), three 4-byte indices and two bytes
+// (partition label, cavity number) per point: about 250 bytes per point at the peak, the input
+// not counted.
 #pragma once
 
 #include <cstddef>
@@ -51,7 +54,7 @@ struct Delaunay3Options {
     /// on the calling thread.
     unsigned threads = 0;
     /// Called on the calling thread as points are inserted: points_done of total after each round
-    /// of the insertion order (rounds double in size; the last holds half the points), the last call
+    /// of the insertion order (rounds grow eightfold; the last holds 7/8 of the points), the last call
     /// with points_done == total. Leave empty for none.
     std::function<void(std::size_t points_done, std::size_t total)> progress;
     /// The furthest-site Delaunay tetrahedralization instead (Qhull's and scipy's furthest_site):

@@ -20,7 +20,7 @@ constexpr std::uint32_t kFree = 0xfffffffeu;
 
 /// The distinct points (duplicates merged), scaled into insphere's exact range, stored in
 /// Hilbert-curve order (local index = position along the curve); point i is input point original[i].
-/// `order` is the insertion order (BRIO: rounds of doubling size, each along the curve).
+/// `order` is the insertion order (BRIO: rounds growing eightfold, each along the curve).
 struct Points {
     std::vector<double> xyz;
     std::vector<std::uint32_t> original;

@@ -68,11 +68,16 @@ struct Shared {
     Predicates predicates;
     bool furthest;  ///< the furthest-site tetrahedralization: every point lands outside the hull
     Mesh mesh;
-    /// Per point, its number + 1 on the boundary of the cavity being filled (0 otherwise); each
-    /// partition numbers only its own points (a cavity's corners are its own).
-    std::vector<std::uint32_t> vertex_id;
+    /// Per point, its number + 1 on the boundary of the cavity being linked (0 otherwise; a byte:
+    /// Worker::link_small numbers at most kSide of them); each partition numbers only its own
+    /// points (a cavity's corners are its own).
+    std::vector<std::uint8_t> vertex_id;
     /// Per point, the partition it belongs to in the current pass.
     std::vector<std::uint8_t> part;
+    /// In a first pass, where the labels are ranges of local indices: partition i's points are
+    /// range[i] ... range[i + 1] - 1 (Worker::owns then compares indices instead of reading labels).
+    std::vector<std::uint32_t> range;
+    bool ranged = false;
     /// Per cell of the curve (kCells equal ranges of local indices), a tetrahedron made when a
     /// point of that cell was last inserted in a pass (kNoAnchor: none); partitions restart a walk
     /// there (Worker::insert).
@@ -99,6 +104,8 @@ public:
                   std::uint32_t block_begin, std::uint32_t block_end) {
         restricted_ = true;
         part_ = part;
+        ranged_ = shared_.ranged;
+        if (ranged_) first_ = shared_.range[part], count_ = shared_.range[part + 1u] - first_;
         last_ = start;
         free_ = free_slots;
         block_next_ = block_begin;
@@ -106,9 +113,13 @@ public:
     }
     bool owns(std::uint32_t t) const {
         const std::uint32_t* c = shared_.mesh.corners(t);
-        const std::uint8_t* label = shared_.part.data();
         // The vertex at infinity belongs to everyone: a ghost asks its corner 0 twice.
         const std::uint32_t last = c[3] == kGhost ? c[0] : c[3];
+        if (ranged_) {
+            return ((c[0] - first_ < count_) & (c[1] - first_ < count_) & (c[2] - first_ < count_) &
+                    (last - first_ < count_)) != 0;
+        }
+        const std::uint8_t* label = shared_.part.data();
         return ((label[c[0]] == part_) & (label[c[1]] == part_) & (label[c[2]] == part_) & (label[last] == part_)) != 0;
     }
     /// Fresh slots of the block not used (returned to the shared free list after a pass).
@@ -352,10 +363,10 @@ private:
         for (std::size_t i = 0; i < count; ++i) {
             for (int j = 0; j < 3; ++j) {
                 const std::uint32_t v = boundary_[i].v[j];
-                std::uint32_t& id = v == kGhost ? ghost_id_ : shared_.vertex_id[v];
+                std::uint8_t& id = v == kGhost ? ghost_id_ : shared_.vertex_id[v];
                 const std::uint32_t fresh = id == 0;
                 vertices += fresh;
-                id = fresh ? vertices : id;
+                id = static_cast<std::uint8_t>(fresh ? vertices : id);
                 numbered_[numbered] = v;
                 numbered += fresh;
                 local_[3 * i + j] = static_cast<std::uint8_t>((id - 1) & (kSide - 1));
@@ -440,6 +451,8 @@ private:
     Shared& shared_;
     bool restricted_ = false;
     std::uint8_t part_ = 0;
+    bool ranged_ = false;
+    std::uint32_t first_ = 0, count_ = 0;  ///< with ranged_: the local indices owned
     std::uint32_t last_ = 0;
     std::vector<std::uint32_t>* free_ = nullptr;
     std::uint32_t block_next_ = 0, block_end_ = 0;
@@ -449,7 +462,7 @@ private:
     std::vector<std::uint32_t> numbered_ = std::vector<std::uint32_t>(3 * kSmallBoundary + 1);  ///< the vertices numbered
     std::vector<std::uint8_t> local_ = std::vector<std::uint8_t>(3 * kSmallBoundary);  ///< their numbers per face
     std::vector<Edge> edges_;
-    std::uint32_t ghost_id_ = 0;
+    std::uint8_t ghost_id_ = 0;
     std::uint32_t random_ = 0x9e3779b9u;
     /// Per cell, the tetrahedron this partition last made for a point there in this pass (or
     /// seeded from Shared::anchor), each a slot only this partition writes during the pass;
@@ -507,10 +520,14 @@ public:
     Rounds(Shared& shared, unsigned threads) : shared_(shared), threads_(threads), serial_(shared) {
         for (std::size_t i = 0; i <= kMaxPartitions; ++i) workers_.emplace_back(shared);
         if (threads_ > 1) {
-            // The mesh's reserved rows mapped on the threads now, rather than page by page on the
-            // calling thread as the serial resizes first touch them (a tenth of a 2-thread run).
+            // The mesh's rows mapped on the threads now, rather than page by page on the calling
+            // thread as the serial resizes first touch them (a tenth of a 2-thread run): as many
+            // as uniform points make (6.77 a point; the room reserved beyond stays unmapped
+            // until used, so that it costs no memory).
             Mesh& mesh = shared_.mesh;
-            const detail::Prefault rows{mesh.words.data(), mesh.words.capacity() * sizeof(std::int32_t), 32};
+            const std::size_t rows_expected = 27 * shared_.points.size() / 4 + 64;
+            const std::size_t words = std::min(mesh.words.capacity(), kRow * rows_expected);
+            const detail::Prefault rows{mesh.words.data(), words * sizeof(std::int32_t), 32};
             detail::parallel_for(threads_, 32, [&](std::size_t k) { rows.part(k); });
         }
     }
@@ -548,12 +565,15 @@ private:
     void label_points(const std::vector<std::uint32_t>& pending, std::size_t parts, int pass) {
         std::uint8_t* label = shared_.part.data();
         const std::size_t m = shared_.part.size();
+        shared_.ranged = pass == 0;
         if (pass == 0) {
             std::size_t from = 0;
+            shared_.range.assign(1, 0);
             for (std::size_t i = 0; i < parts; ++i) {
                 const std::size_t to = i + 1 == parts ? m : pending[(i + 1) * pending.size() / parts];
                 std::fill(label + from, label + std::max(from, to), static_cast<std::uint8_t>(i));
                 from = std::max(from, to);
+                shared_.range.push_back(static_cast<std::uint32_t>(from));
             }
             return;
         }
@@ -623,7 +643,9 @@ private:
             std::size_t taken = 0;
             std::size_t size = shared_.mesh.size();
             for (std::size_t i = 0; i < parts; ++i) {
-                const std::size_t want = 7 * lists[i].size() + 256;
+                // (6.75 a point: uniform points make 6.77 tetrahedra each, and deferred ones
+                // none here; slots left over are wasted if no later pass takes them.)
+                const std::size_t want = 27 * lists[i].size() / 4 + 256;
                 const std::size_t share = std::min(want, free_.size() - taken);
                 free[i].assign(free_.begin() + taken, free_.begin() + taken + share);
                 taken += share;
