@@ -250,12 +250,17 @@ private:
         boundary_.clear();
         words[kRow * t0] |= kInCavity;
         cavity_.push_back(t0);
+        // The neighbours' rows are fetched ahead, one cavity tetrahedron early where the next is
+        // known: the mesh is too large for the caches, and these misses were a fifth of the time.
+        auto fetch_neighbours = [&](std::uint32_t t) {
+            const std::uint32_t* links = words + kRow * t + 4;
+            for (std::uint32_t k = 0; k < 4; ++k) __builtin_prefetch(words + kRow * (links[k] >> 3));
+        };
+        fetch_neighbours(t0);
         for (std::size_t i = 0; i < cavity_.size(); ++i) {
             const std::uint32_t t = cavity_[i];
-            // The neighbours' rows are fetched ahead: the mesh is too large for the caches and
-            // these misses were a fifth of the time (7 % less on 1e6 uniform points).
+            if (i + 1 < cavity_.size()) fetch_neighbours(cavity_[i + 1]);
             const std::uint32_t* next = words + kRow * t + 4;
-            for (std::uint32_t k = 0; k < 4; ++k) __builtin_prefetch(words + kRow * (next[k] >> 3));
             for (std::uint32_t k = 0; k < 4; ++k) {
                 const std::uint32_t across = next[k];
                 const std::uint32_t u = across >> 3;
