@@ -227,17 +227,17 @@ private:
         return random_;
     }
 
-    // While a cavity grows, the tetrahedra met are marked in the top bits of their first corner
-    // (a point index, below 2^30; the vertex at infinity is always the last corner): kInCavity, or
-    // kChecked when not in conflict. The mark is read with the row the conflict test reads anyway,
-    // and costs no array of its own. Only the worker that owns a tetrahedron marks it, and workers
-    // read only the rows of tetrahedra they own or that no partition owns.
-    static constexpr std::uint32_t kInCavity = 1u << 30, kChecked = 2u << 30, kIndex = kInCavity - 1;
+    // While a cavity grows, its tetrahedra are marked in the top bits of their first corner (a
+    // point index, below 2^30; the vertex at infinity is always the last corner). The mark is read
+    // with the row the conflict test reads anyway, and costs no array of its own. Only the worker
+    // that owns a tetrahedron marks it, and workers read only the rows of tetrahedra they own or
+    // that no partition owns. A neighbour found not in conflict is not marked: the few met twice
+    // (3 a point among 24) are tested twice, which costs less than marking and unmarking them all.
+    static constexpr std::uint32_t kInCavity = 1u << 30, kIndex = kInCavity - 1;
 
     void unmark() {
         std::uint32_t* words = shared_.mesh.data();
         for (const std::uint32_t t : cavity_) words[kRow * t] &= kIndex;
-        for (const std::uint32_t t : checked_) words[kRow * t] &= kIndex;
     }
 
     /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the other
@@ -246,7 +246,6 @@ private:
     bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
         std::uint32_t* words = shared_.mesh.data();
         cavity_.clear();
-        checked_.clear();
         boundary_.clear();
         words[kRow * t0] |= kInCavity;
         cavity_.push_back(t0);
@@ -266,24 +265,18 @@ private:
                 const std::uint32_t u = across >> 3;
                 // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
                 // its owner ever marks it: its mark can be read before its ownership is known.
-                const std::uint32_t seen = words[kRow * u] & ~kIndex;
-                if (seen == kInCavity) continue;
-                if (seen == 0) {
-                    if (restricted_ && !owns(u)) {
-                        // Owned by no partition: never marked (another partition may look at it);
-                        // in conflict it would have to change, so p waits for a later pass.
-                        if (shared_.predicates.conflict(words + kRow * u, p)) {
-                            unmark();
-                            return false;
-                        }
-                    } else if (shared_.predicates.conflict(words + kRow * u, p)) {
-                        words[kRow * u] |= kInCavity;
-                        cavity_.push_back(u);
-                        continue;
-                    } else {
-                        words[kRow * u] |= kChecked;
-                        checked_.push_back(u);
+                if (words[kRow * u] & kInCavity) continue;
+                if (restricted_ && !owns(u)) {
+                    // Owned by no partition: never marked (another partition may look at it); in
+                    // conflict it would have to change, so p waits for a later pass.
+                    if (shared_.predicates.conflict(words + kRow * u, p)) {
+                        unmark();
+                        return false;
                     }
+                } else if (shared_.predicates.conflict(words + kRow * u, p)) {
+                    words[kRow * u] |= kInCavity;
+                    cavity_.push_back(u);
+                    continue;
                 }
                 // The face, counter-clockwise seen from outside the cavity, a ghost's vertex at
                 // infinity last: p and these three make the new tetrahedron, positively oriented.
@@ -307,10 +300,9 @@ private:
             unmark();
             return false;
         }
-        // The marks: the cavity's rows that are reused are written whole below; the others are
-        // cleared (the checked neighbours, and cavity rows left over, which become free).
+        // The marks: the cavity's rows that are reused are written whole below; those left over
+        // (they become free) are cleared.
         std::uint32_t* rows = shared_.mesh.data();
-        for (const std::uint32_t t : checked_) rows[kRow * t] &= kIndex;
         for (std::size_t i = reused; i < cavity_.size(); ++i) rows[kRow * cavity_[i]] &= kIndex;
         slots_.assign(cavity_.begin(), cavity_.begin() + reused);
         for (std::size_t i = 0; i < from_free; ++i) {
@@ -461,7 +453,7 @@ private:
     std::uint32_t last_ = 0;
     std::vector<std::uint32_t>* free_ = nullptr;
     std::uint32_t block_next_ = 0, block_end_ = 0;
-    std::vector<std::uint32_t> cavity_, checked_, slots_;
+    std::vector<std::uint32_t> cavity_, slots_;
     std::vector<Boundary> boundary_;
     std::vector<std::uint32_t> table_ = std::vector<std::uint32_t>(kSide * kSide, 0);  ///< faces by directed edge
     std::vector<std::uint32_t> numbered_ = std::vector<std::uint32_t>(3 * kSmallBoundary + 1);  ///< the vertices numbered
