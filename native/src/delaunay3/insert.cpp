@@ -675,7 +675,10 @@ private:
         for (std::size_t i = 0; i < parts; ++i) {
             free_.insert(free_.end(), free[i].begin(), free[i].end());
             const std::uint32_t from = start[i] == kNoStart ? block_begin[i] : workers_[i].block_next();
-            for (std::uint32_t s = from; s < block_end[i]; ++s) free_.push_back(s);
+            for (std::uint32_t s = from; s < block_end[i]; ++s) {
+                shared_.mesh.data()[kRow * s + 3] = kFree;
+                free_.push_back(s);
+            }
             next.insert(next.end(), deferred[i].begin(), deferred[i].end());
             if (lasts[i] != kNoStart) last_ = lasts[i];
         }
@@ -683,14 +686,13 @@ private:
         return next;
     }
 
-    /// Room for `slots` tetrahedra, the new ones free.
+    /// Room for `slots` tetrahedra (the partitions' blocks: each slot is written when taken, and
+    /// those left are marked free after the pass).
     void grow_blocks(std::size_t slots) {
         Mesh& mesh = shared_.mesh;
         if (slots > kMaxTetrahedra) throw std::length_error("more than 2^29 tetrahedra");
-        const std::size_t old = mesh.size();
         if (kRow * slots > mesh.words.capacity()) mesh.words.reserve(kRow * (slots + slots / 2));
         mesh.words.resize(kRow * slots);
-        for (std::size_t t = old; t < slots; ++t) mesh.data()[kRow * t + 3] = kFree;
     }
 
     static constexpr std::uint32_t kNoStart = 0xffffffffu;
