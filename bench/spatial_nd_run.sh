@@ -21,9 +21,10 @@ else
 fi
 results=$work/results.jsonl
 : > "$results"
-# what dim n: Delaunay of uniform points, ConvexHull of Gaussian ones, Voronoi of uniform ones.
+# what dim n: Delaunay of uniform points, ConvexHull of Gaussian ones, Voronoi of uniform ones (and
+# with each cell's volume: scipy's users take the ConvexHull of each region).
 rows=("delaunay 4 20000" "delaunay 5 3000" "delaunay 6 600" "delaunay 7 150"
-      "hull 4 200000" "hull 5 50000" "hull 6 10000" "voronoi 4 5000")
+      "hull 4 200000" "hull 5 50000" "hull 6 10000" "voronoi 4 5000" "volumes 4 2000" "volumes 5 500")
 for ((k = 0; k < procs; k++)); do
   for row in "${rows[@]}"; do
     read -r what dim n <<< "$row"
@@ -55,7 +56,8 @@ for r in rows:
     key = (r["what"], r["dim"], r["n"])
     if key not in keys:
         keys.append(key)
-names = {"delaunay": "Delaunay, uniform", "hull": "ConvexHull, Gaussian", "voronoi": "Voronoi, uniform (vertices; ridges compared)"}
+names = {"delaunay": "Delaunay, uniform", "hull": "ConvexHull, Gaussian", "voronoi": "Voronoi, uniform (vertices; ridges compared)",
+         "volumes": "Voronoi with cell volumes (bounded cells; volumes compared to 8 digits)"}
 for what, dim, n in keys:
     h = [r for r in rows if (r["what"], r["dim"], r["n"], r["lib"]) == (what, dim, n, "hullkit")]
     s = [r for r in rows if (r["what"], r["dim"], r["n"], r["lib"]) == (what, dim, n, "scipy")]
@@ -68,6 +70,9 @@ for what, dim, n in keys:
                f"{runs(h)} | {runs(s)} |")
 out += ["", "Voronoi ridges differ where Qhull leaves out unbounded ridges around a hull edge with one or two simplices "
         "(listed by hullkit: they are 3-dimensional all the same; docs/python.md).", "",
+        "Cell volumes: hullkit's `Voronoi.volumes` (each cell a signed sum of orthoschemes over the Delaunay "
+        "triangulation's faces, hullkit::voronoi_nd_volumes); for scipy, `ConvexHull(vor.vertices[region]).volume` "
+        "for each bounded region, inf for the others, as scipy's users write it.", "",
         f"Raw figures: `{results}` (one JSON line per process)."]
 open(report, "w").write("\n".join(out) + "\n")
 print(f"spatial-nd bench: wrote {report}", file=sys.stderr)

@@ -1064,9 +1064,13 @@ class Voronoi(_Incremental):
         simplices = t.simplices.astype(_np.int64)
         m, n = len(simplices), len(points)
         # One vertex per group, numbered in the order of the groups' lowest simplices.
-        roots, vertex_of = _np.unique(t.group.astype(_np.int64), return_inverse=True)
-        vertex_of = vertex_of.reshape(-1)
-        cospherical = len(roots) < m
+        group = t.group.astype(_np.int64)
+        cospherical = bool((group != _np.arange(m)).any())
+        if cospherical:
+            roots, vertex_of = _np.unique(group, return_inverse=True)
+            vertex_of = vertex_of.reshape(-1)
+        else:
+            roots = vertex_of = _np.arange(m, dtype=_np.int64)
         corners = points[simplices[roots]]
         first = corners[:, 0]
         edges = corners[:, 1:] - first[:, None]
@@ -1096,15 +1100,17 @@ class Voronoi(_Incremental):
         edge_keys, inverse = _np.unique(key, return_inverse=True)
         inverse = inverse.reshape(-1)
         unbounded = _np.isin(edge_keys, hull_keys)
-        around = _np.unique(inverse * size + vertex_of[owner] + 1)  # (edge, vertex) pairs
         if cospherical:
+            around = _np.unique(inverse * size + vertex_of[owner] + 1)  # (edge, vertex) pairs
             ridge = _edges_of_cells(points, simplices, vertex_of, len(roots), edge_keys, around // size,
                                     around % size - 1, hull_faces)
             renumber = _np.cumsum(ridge) - 1
             around = around[ridge[around // size]]
             around = renumber[around // size] * size + around % size
             edge_keys, unbounded = edge_keys[ridge], unbounded[ridge]
-        entries = _np.sort(_np.concatenate([around, _np.flatnonzero(unbounded) * size]))
+            entries = _np.sort(_np.concatenate([around, _np.flatnonzero(unbounded) * size]))
+        else:  # a vertex per simplex: every triangulation edge is a ridge
+            entries = _np.unique(_np.concatenate([inverse * size + owner + 1, _np.flatnonzero(unbounded) * size]))
         flat = entries % size - 1
         ridge_offsets = _offsets(_np.bincount(entries // size, minlength=len(edge_keys)))
         self._set_ridges(_np.stack([edge_keys // count, edge_keys % count], axis=1), flat, ridge_offsets)

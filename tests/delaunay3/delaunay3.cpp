@@ -208,6 +208,28 @@ TEST_CASE("delaunay3: uniform points; the same tetrahedra in any input order", "
     REQUIRE(tetrahedron_set(e, &perm) == tetrahedron_set(d));
 }
 
+TEST_CASE("delaunay3: points on a sphere and near its centre (cavities of every tetrahedron)", "[delaunay3]") {
+    // A point near the centre, inserted after most of the sphere's points, lies in nearly every
+    // circumsphere: its cavity's boundary has thousands of faces (paired by sorting their edges,
+    // not through the small table). Verified, the same in any input order and on any threads.
+    std::vector<double> xyz = hullkit_test::random_cloud(hullkit_test::Cloud::Sphere, 4000, 41);
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> small(-1e-3, 1e-3);
+    for (int i = 0; i < 12; ++i) xyz.insert(xyz.end(), {small(rng), small(rng), small(rng)});
+    const Delaunay3 d = run(xyz);
+    check_tetrahedralization(xyz, d);
+    for (unsigned threads : {2u, 8u}) {
+        const Delaunay3 e = run(xyz, threads);
+        REQUIRE(e.tetrahedra == d.tetrahedra);
+        REQUIRE(e.neighbors == d.neighbors);
+    }
+    std::vector<std::uint32_t> perm;
+    const std::vector<double> shuffled = shuffled3(xyz, perm, 5);
+    const Delaunay3 e = run(shuffled);
+    check_tetrahedralization(shuffled, e);
+    REQUIRE(tetrahedron_set(e, &perm) == tetrahedron_set(d));
+}
+
 TEST_CASE("delaunay3: a grid in any input order gives the same tetrahedra (ties broken by the points alone)",
           "[delaunay3]") {
     const std::vector<double> xyz = grid3(6);
