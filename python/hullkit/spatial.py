@@ -257,6 +257,7 @@ def _edges_of_cells(points, simplices, vertex_of, cell_count, edge_keys, edge, c
     common = _np.bincount(keys[times == facets_per_edge[keys // n]] // n, minlength=e_count)
     return common == 2
 
+
 def _nd_facet_planes(points, facets):
     """Unit normals and offsets [n, c] of hull_nd's facets (m, k): outward (hull_nd's corners are
     ordered so that det[[c_0, 1], ..., [c_k-1, 1], [q, 1]] > 0 beyond; that determinant is
@@ -1071,7 +1072,7 @@ class Voronoi(_Incremental):
             vertex_of = vertex_of.reshape(-1)
         else:
             roots = vertex_of = _np.arange(m, dtype=_np.int64)
-        corners = points[simplices[roots]]
+        corners = points[simplices[roots] if cospherical else simplices]
         first = corners[:, 0]
         edges = corners[:, 1:] - first[:, None]
         rhs = 0.5 * _np.einsum("mij,mij->mi", edges, corners[:, 1:] + first[:, None])

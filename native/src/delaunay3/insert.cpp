@@ -289,8 +289,8 @@ private:
         return true;
     }
 
-    /// Replaces the cavity by its boundary faces joined to the point (already in their corners).
-    /// False (marks undone, nothing changed) when the block of fresh slots would run out.
+    /// Replaces the cavity by its boundary faces joined to the point p. False (marks undone,
+    /// nothing changed) when the block of fresh slots would run out.
     bool fill_cavity(std::uint32_t p) {
         const std::size_t count = boundary_.size();
         const std::size_t reused = std::min(count, cavity_.size());
@@ -300,10 +300,6 @@ private:
             unmark();
             return false;
         }
-        // The marks: the cavity's rows that are reused are written whole below; those left over
-        // (they become free) are cleared.
-        std::uint32_t* rows = shared_.mesh.data();
-        for (std::size_t i = reused; i < cavity_.size(); ++i) rows[kRow * cavity_[i]] &= kIndex;
         slots_.assign(cavity_.begin(), cavity_.begin() + reused);
         for (std::size_t i = 0; i < from_free; ++i) {
             slots_.push_back(free_->back());
@@ -316,8 +312,12 @@ private:
             grow(first + fresh);
             for (std::size_t i = 0; i < fresh; ++i) slots_.push_back(static_cast<std::uint32_t>(first + i));
         }
-        for (std::size_t i = count; i < cavity_.size(); ++i) {  // a cavity with more cells than faces
-            shared_.mesh.data()[kRow * cavity_[i] + 3] = kFree;
+        // The cavity's rows that are reused are written whole below (their marks with them); those
+        // left over (a cavity with more cells than faces) become free, their marks cleared.
+        for (std::size_t i = count; i < cavity_.size(); ++i) {
+            std::uint32_t* row = shared_.mesh.data() + kRow * cavity_[i];
+            row[0] &= kIndex;
+            row[3] = kFree;
             free_->push_back(cavity_[i]);
         }
 
