@@ -64,7 +64,7 @@ const busy = {
   el: document.getElementById('busy'),
   text: document.getElementById('busy-text'),
   cancel: document.getElementById('busy-cancel'),
-  timer: 0,
+  timer: 0, // the timeout that shows the overlay, then the interval that updates its text
   t0: 0,
 };
 const BUSY_AFTER_MS = 100;
@@ -73,8 +73,14 @@ function updateBusy() {
   const computing = current !== null && states[current] === 'computing';
   if (computing && !busy.timer) {
     busy.t0 = performance.now();
-    busy.timer = setInterval(tickBusy, 100);
+    // A timeout, not the first tick of an interval: that tick may come a hair before 100 ms have
+    // passed by performance.now(), which would put the overlay off by a whole period.
+    busy.timer = setTimeout(() => {
+      busy.timer = setInterval(tickBusy, 100);
+      tickBusy();
+    }, BUSY_AFTER_MS);
   } else if (!computing && busy.timer) {
+    clearTimeout(busy.timer);
     clearInterval(busy.timer);
     busy.timer = 0;
     busy.el.hidden = true;
@@ -84,7 +90,6 @@ function updateBusy() {
 
 function tickBusy() {
   const ms = performance.now() - busy.t0;
-  if (ms < BUSY_AFTER_MS) return;
   const what = views[current]?.busyLabel?.() ?? 'Computing';
   busy.text.textContent = `${what}… ${(ms / 1000).toFixed(1)} s`;
   if (busy.el.hidden) {

@@ -133,7 +133,7 @@ export function createHullReport({ ui, state, scene, setState, calibrate, descri
       n: msg.n, vertices, faces, edges, triangles: msg.triangles.length / 3, merged,
       interiorStride: scene.interiorStride,
       volume: msg.volume, area: msg.area, dimension: msg.dimension,
-      ms: msg.hullMs, roundTripMs, distribution: params.distribution, seed: params.seed,
+      ms: msg.hullMs, roundTripMs, drawMs, answeredAt: d0, distribution: params.distribution, seed: params.seed,
       algorithm: params.algorithm ?? null, epsilon: params.epsilon ?? 'exact', run: state.runCount,
     };
     // The triangles too, on demand (non-enumerable: JSON of the hook stays short).
