@@ -326,6 +326,7 @@ class _SceneNotHere:
 
 
 _checkers = {}  # per worker process: scene digest -> the core's RouteChecker, built once and reused
+_MAX_LOST_ROUNDS = 3  # check_routes: times batches may be cancelled (their scene lost) and run again
 _scattered = {}  # here: (client id, scene digest) -> the future of the scene scattered to every worker
 _read_on_workers = True  # workers may read a scene file themselves (tests turn it off on workers)
 
@@ -472,7 +473,10 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
     worker from the same path when it can (a shared or local file system), and used there only
     if it holds the same bytes (the same SHA-256 digest over the text and every file); workers
     that cannot are sent the bytes read here, once. ``send_scene=True`` sends them to every
-    worker without trying (a cluster whose workers do not see this machine's files)."""
+    worker without trying (a cluster whose workers do not see this machine's files). Batches of a
+    worker that dies run again elsewhere; if the scene sent to the workers dies with every copy,
+    the batches that needed it are cancelled, and they run again with the scene sent anew (up to
+    three times, then HullkitError)."""
     if batch is not None and (isinstance(batch, bool) or not isinstance(batch, (int, np.integer)) or batch < 1):
         raise HullkitError(f"batch must be a positive integer, got {batch!r}")
     if not isinstance(send_scene, bool):
@@ -512,22 +516,35 @@ def check_routes(scene, routes, client=None, clearance=True, samples=0, threads=
         shared = (digest, source, os.path.abspath(os.fspath(scene)), None)
     results = [None] * len(chunks)
     pending = list(range(len(chunks)))
+    lost_rounds = 0
     from distributed import as_completed
     while pending:
         # One map for every batch: each submission also walks the stack (for the dashboard).
         futures = client.map(_check_batch, [shared] * len(pending), *zip(*[chunks[k] for k in pending]),
                              clearance=clearance, samples=samples, threads=threads, pure=False)
         position = {future.key: k for k, future in zip(pending, futures)}
-        missing = []
+        missing, lost = [], []
         # Each batch's reports fetched as soon as it is done, so that the fetches (and, on a first
         # call, the connections to the workers) overlap the batches still running.
         for future, part in as_completed(futures, with_results=True):
             if isinstance(part, _SceneNotHere):
                 missing.append(position[future.key])
+            elif future.cancelled():
+                # The scattered scene went with a worker that died: Dask's active memory manager
+                # keeps one copy of scattered data once no task waits for it elsewhere, and data
+                # that was never computed cannot be computed again. Its batches are cancelled with
+                # it; they run again with the scene sent anew.
+                lost.append(position[future.key])
             else:
                 results[position[future.key]] = json.loads(part)
-        pending = sorted(missing)
-        if pending:  # some workers could not read the scene: it is sent to every worker
+        if lost:
+            lost_rounds += 1
+            if lost_rounds > _MAX_LOST_ROUNDS:
+                raise HullkitError(f"check_routes: {len(lost)} of {len(chunks)} batches were cancelled on the cluster "
+                                   f"{lost_rounds} times (the scene sent to the workers was lost, or the tasks were "
+                                   "cancelled); no reports")
+        pending = sorted(missing + lost)
+        if pending:  # some workers could not read the scene, or lost it: it is sent to every worker
             shared = _scene_on_workers(client, sent)
     return _joined(batches, results)
 

@@ -2,7 +2,8 @@
 equals hullkit.hull of the whole cloud bit for bit (Dask arrays and lists of files), route
 batches equal local checks (the scene read by the workers or sent to them; a long route cut
 between tasks, its pieces' reports joined), and a worker killed
-mid-job, a hull or route batches, changes nothing (Dask recomputes what was lost)."""
+mid-job, a hull or route batches, changes nothing (Dask recomputes what was lost; check_routes
+sends a lost scene again)."""
 import hashlib
 import json
 import os
@@ -325,22 +326,21 @@ def test_a_worker_killed_mid_job_changes_nothing(client):
     client.wait_for_workers(2, timeout=60)
 
 
-@pytest.mark.parametrize("send_scene", [False, True])
-def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, send_scene):
-    # The nanny restarts the killed worker; its batches run again, on the other worker or on the
-    # new one, which reads the scene file itself (or gets the bytes sent) and builds its checker.
+def started_route_job(client, tmp_path, margin, send_scene):
+    """check_routes of 3000 routes through the crane scene (its margin set to ``margin``: new bytes,
+    so that no worker has this checker yet) in a thread, returned once batches are running on the
+    workers: (the reports a local checker gives, the thread, the dict it puts "reports" in)."""
     scene = tmp_path / "scene.json"
     crane = json.load(open(os.path.join(DATA, "route", "crane.json")))
     for shape in crane["traverse"]["parts"] + crane["obstacles"]:
         if "mesh" in shape:  # the crane's mesh files, where they are
             shape["mesh"] = os.path.join(DATA, "route", shape["mesh"])
-    crane["margin"] = 0.05 if send_scene else 0.1  # new bytes: no worker has this checker yet
+    crane["margin"] = margin
     scene.write_text(json.dumps(crane))
     rng = np.random.default_rng(12)
     routes = [np.cumsum(rng.normal(scale=2.0, size=(6, 3)), axis=0) for _ in range(3000)]
     checker = hullkit.RouteChecker(str(scene))
     expected = [timeless(checker.check(route)) for route in routes]
-    pids = client.run(os.getpid)
     done = {}
     job = threading.Thread(target=lambda: done.update(reports=hullkit.dask.check_routes(
         str(scene), routes, client=client, batch=247, send_scene=send_scene)))  # most tasks end inside a route
@@ -350,13 +350,40 @@ def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, sen
         assert time.time() < deadline, "no batch started"
         time.sleep(0.005)
     time.sleep(0.05)  # the workers have their checkers and are checking legs
-    assert job.is_alive(), "the job finished before a worker could be killed"
+    assert job.is_alive(), "the job finished before the cluster could be disturbed"
+    return expected, job, done
+
+
+@pytest.mark.parametrize("send_scene", [False, True])
+def test_a_worker_killed_mid_route_batches_changes_nothing(client, tmp_path, send_scene):
+    # The nanny restarts the killed worker; its batches run again, on the other worker or on the
+    # new one, which reads the scene file itself (or gets the bytes sent) and builds its checker.
+    pids = client.run(os.getpid)
+    expected, job, done = started_route_job(client, tmp_path, 0.05 if send_scene else 0.1, send_scene)
     victim = next(iter(pids.values()))
     os.kill(victim, signal.SIGKILL)
     job.join(timeout=300)
     assert [timeless(r) for r in done["reports"]] == expected
     client.wait_for_workers(2, timeout=60)
     assert victim not in client.run(os.getpid).values()  # it was killed, and replaced
+
+
+@pytest.mark.parametrize("how", ["holders killed", "cancelled"])
+def test_the_scene_sent_to_the_workers_lost_mid_route_batches_changes_nothing(client, tmp_path, how):
+    # Scattered data cannot be computed again: when every worker holding the scene dies (Dask's
+    # active memory manager may have left one copy) or the scene is cancelled, the batches that
+    # need it are cancelled. check_routes sends the scene again and runs them: the same reports.
+    pids = client.run(os.getpid)
+    expected, job, done = started_route_job(client, tmp_path, 0.06 if how == "cancelled" else 0.07, True)
+    scene = next(f for (owner, _), f in reversed(list(hullkit.dask._scattered.items())) if owner == client.id)
+    if how == "cancelled":
+        client.cancel(scene)
+    else:
+        for address in client.who_has(scene)[scene.key]:
+            os.kill(pids[address], signal.SIGKILL)
+    job.join(timeout=300)
+    assert [timeless(r) for r in done["reports"]] == expected
+    client.wait_for_workers(2, timeout=60)
 
 
 def test_interpolation_blockwise_equals_the_local_call(client):
