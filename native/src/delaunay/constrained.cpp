@@ -142,7 +142,8 @@ std::string check_quality(const QualityOptions& q, const std::vector<RegionSeed>
     return std::string();
 }
 
-ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segments, const Domain& domain,
+/// `segments` are taken over (merged in place, freed once inserted: less memory at the peak).
+ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, const Domain& domain,
                           std::size_t max_added) {
     const std::string bad_options = check_quality(domain.quality, domain.regions);
     if (!bad_options.empty()) return failure(bad_options);
@@ -159,48 +160,60 @@ ConstrainedDelaunay build(PointSpan2 points, const std::vector<Segment>& segment
     out.coords.assign(points.xy, points.xy + 2 * points.count);
     if (!plane) return out;  // no triangles; segments lie on the line
     const int exponent = in.exponent;  // delaunay()'s scale, found while checking the points
-    std::vector<double> xy(out.coords);
-    if (exponent != 0)
-        for (double& v : xy) v = std::ldexp(v, exponent);
     delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
     local_xy = std::vector<double>();
+    std::vector<double> xy(out.coords);  // in the room local_xy leaves
+    delaunay_detail::scale_by_power_of_two(xy, exponent);
     Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added, exponent);
     in = delaunay_detail::Input();
     // Repeated segments (the same two points, either way round: a hole sharing an edge with the
     // outline, a segment given twice) become one with their counts and windings added, in the
     // place of the first: inserted twice, a copy could meet the first one's rounded crossing
     // points as new crossings and leave two chains a rounding apart.
-    std::vector<Segment> merged;
-    merged.reserve(segments.size());
+    std::vector<Segment>& merged = segments;
     {
-        std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;  // (unordered ends, position in merged)
-        keys.reserve(segments.size());
+        std::size_t kept = 0;
         for (const Segment& s : segments) {
             Segment piece{out.representative[s.a], out.representative[s.b], s.wind, s.count, s.input};
             if (piece.a == piece.b) continue;
             if (piece.a > piece.b) std::swap(piece.a, piece.b), piece.wind = -piece.wind;
-            keys.push_back({(std::uint64_t{piece.a} << 32) | piece.b, static_cast<std::uint32_t>(merged.size())});
-            merged.push_back(piece);
+            merged[kept++] = piece;
         }
-        std::stable_sort(keys.begin(), keys.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-        for (std::size_t k = 1; k < keys.size(); ++k) {
-            if (keys[k].first != keys[k - 1].first) continue;
-            Segment& first = merged[keys[k - 1].second];
-            Segment& again = merged[keys[k].second];
-            first.wind += again.wind, first.count += again.count;
-            again.count = 0;
-            keys[k].second = keys[k - 1].second;  // a third copy adds to the first too
+        merged.resize(kept);
+    }
+    {
+        // Grouped by their lower end (a counting sort, stable: in order within a group); in each
+        // group, the first segment to each upper end takes the later ones in.
+        const std::size_t n = points.count;
+        std::vector<std::uint32_t> start(n + 1, 0), order(merged.size());
+        for (const Segment& piece : merged) ++start[piece.a];
+        for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];  // start[a]: the end of group a
+        for (std::size_t k = merged.size(); k-- > 0;) order[--start[merged[k].a]] = static_cast<std::uint32_t>(k);
+        std::vector<std::uint32_t> first_to(n, 0);  // within the group of `a`: 1 + the first segment to b
+        for (std::size_t a = 0; a < n; ++a) {
+            for (std::uint32_t j = start[a]; j < start[a + 1]; ++j) {
+                Segment& piece = merged[order[j]];
+                std::uint32_t& first = first_to[piece.b];
+                if (first == 0 || merged[first - 1].a != a) {
+                    first = order[j] + 1;
+                } else {
+                    merged[first - 1].wind += piece.wind, merged[first - 1].count += piece.count;
+                    piece.count = 0;
+                }
+            }
         }
     }
+    cdt.reserve_segments(merged.size());
     for (const Segment& piece : merged) {
         if (piece.count != 0 && !cdt.insert(piece)) return failure(cdt.error, -1, cdt.error_segment);
     }
+    segments = std::vector<Segment>();
     out.crossing_count = cdt.crossings;
     Refiner refiner(cdt);
     // Scaled as the points are (exact: powers of two).
     auto scaled = [&](const std::vector<double>& xy) {
         std::vector<double> s(xy);
-        for (double& v : s) v = std::ldexp(v, exponent);
+        delaunay_detail::scale_by_power_of_two(s, exponent);
         return s;
     };
     std::vector<double> region_xy;
@@ -275,7 +288,7 @@ ConstrainedDelaunay constrained_delaunay(PointSpan2 points, const std::uint32_t*
     domain.holes = &options.holes;
     domain.regions = &options.regions;
     domain.quality = options.quality;
-    return build(points, list, domain, options.max_added_points);
+    return build(points, std::move(list), domain, options.max_added_points);
 }
 
 ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* ring_starts, std::size_t ring_count,
@@ -303,7 +316,7 @@ ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* 
     domain.polygon = true;
     domain.fill = options.fill;
     domain.quality = options.quality;
-    return build(points, list, domain, options.max_added_points);
+    return build(points, std::move(list), domain, options.max_added_points);
 }
 
 ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangles, std::size_t triangle_count,
@@ -445,7 +458,7 @@ ConstrainedDelaunay refine_mesh(PointSpan2 points, const std::uint32_t* triangle
         domain.mesh_corners = &mesh_corners;
         domain.triangle_areas = &options.triangle_max_area;
     }
-    return renumbered(build(PointSpan2(xy.data(), m), list, domain, options.max_added_points));
+    return renumbered(build(PointSpan2(xy.data(), m), std::move(list), domain, options.max_added_points));
 }
 
 const char* fill_rule_name(FillRule fill) { return fill == FillRule::EvenOdd ? "evenodd" : "nonzero"; }

@@ -73,8 +73,11 @@ public:
         region_.assign(vertex_.size() / 3, 0);
     }
 
+    /// Room for the records of `count` segments (one each, unless they cross or meet points).
+    void reserve_segments(std::size_t count) { records_.reserve(records_.size() + count); }
+
     /// Inserts a segment and everything it turns into; false on failure (error set).
-    bool insert(const Segment& s) {
+    HULLKIT_STEP bool insert(const Segment& s) {
         pending_.clear();
         pending_.push_back(s);
         while (!pending_.empty()) {
@@ -92,7 +95,8 @@ public:
     /// Marks triangles inside the rings by the fill rule, from the ghosts (outside) inwards.
     std::vector<std::uint8_t> inside(FillRule fill) const {
         const std::size_t t_count = vertex_.size() / 3;
-        std::vector<std::int64_t> winding(t_count, std::numeric_limits<std::int64_t>::min());
+        // 32-bit winding numbers, as each edge's (Record::wind): none exceeds the number of segments.
+        std::vector<std::int32_t> winding(t_count, std::numeric_limits<std::int32_t>::min());
         std::vector<std::uint32_t> stack;
         for (std::uint32_t t = 0; t < t_count; ++t) {
             if (vertex_[3 * t] != kDead && is_ghost(t)) {
@@ -105,15 +109,15 @@ public:
             stack.pop_back();
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const std::uint32_t u = twin_[e] / 3;
-                if (winding[u] != std::numeric_limits<std::int64_t>::min()) continue;
-                winding[u] = fill == FillRule::EvenOdd ? (winding[t] ^ (count(e) & 1)) : winding[t] - wind(e);
+                if (winding[u] != std::numeric_limits<std::int32_t>::min()) continue;
+                winding[u] = fill == FillRule::EvenOdd ? (winding[t] ^ static_cast<std::int32_t>(count(e) & 1)) : winding[t] - wind(e);
                 stack.push_back(u);
             }
         }
         std::vector<std::uint8_t> in(t_count, 0);
         for (std::size_t t = 0; t < t_count; ++t)
             in[t] = vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t)) && winding[t] != 0 &&
-                    winding[t] != std::numeric_limits<std::int64_t>::min();
+                    winding[t] != std::numeric_limits<std::int32_t>::min();
         return in;
     }
 

@@ -193,9 +193,7 @@ void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector
         begin = end;
     }
     local_xy.resize(2 * distinct);
-    if (box.exponent != 0) {
-        for (double& v : local_xy) v = std::ldexp(v, box.exponent);
-    }
+    delaunay_detail::scale_by_power_of_two(local_xy, box.exponent);
 }
 
 /// Output triangles in local indices, one fan per face from the corner with the lowest ORIGINAL

@@ -10,8 +10,32 @@
 #include "hullkit/delaunay.hpp"
 #include "hullkit/predicates.hpp"
 
+/// On the work done once per point or segment in a loop that runs once per call. In WebAssembly,
+/// V8 starts with baseline code and swaps in optimised code for a function at its next call; a
+/// loop inside one call never gets it. Kept out of line, the step is a function called thousands
+/// of times, optimised after the first few hundred: the first call after loading runs nearly as
+/// fast as later ones. A call per step costs nothing measurable natively.
+#if defined(__GNUC__)
+#define HULLKIT_STEP __attribute__((noinline))
+#else
+#define HULLKIT_STEP
+#endif
+
 namespace hullkit {
 namespace delaunay_detail {
+
+/// Multiplies each of `values` by 2^exponent. A product by a normal power of two is the correctly
+/// rounded value, as std::ldexp's is (exact unless it leaves the normal range): one multiplication
+/// instead of a call per value. Exponents beyond a normal power of two go through std::ldexp.
+inline void scale_by_power_of_two(std::vector<double>& values, int exponent) {
+    if (exponent == 0) return;
+    if (exponent >= -1022 && exponent <= 1023) {
+        const double factor = std::ldexp(1.0, exponent);
+        for (double& v : values) v *= factor;
+    } else {
+        for (double& v : values) v = std::ldexp(v, exponent);
+    }
+}
 
 /// Convex polygons given as index cycles, COUNTER-clockwise with y up (the algorithms' internal
 /// orientation; the driver turns them round for the output). `offsets` empty means every face is

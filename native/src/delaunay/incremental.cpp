@@ -54,7 +54,7 @@ public:
         last_ = 0;
     }
 
-    void insert(std::uint32_t i) {
+    HULLKIT_STEP void insert(std::uint32_t i) {
         const double px = p_[i][0], py = p_[i][1];
         const std::uint32_t t0 = locate(px, py);
         // Collect the cavity by a search from t0 over conflicting neighbours. Each triangle tested
