@@ -143,7 +143,11 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const double* lo, const do
         const double width = hi[axis] - lo[axis];
         scale[axis] = width > 0 ? 1023.0 / width : 0.0;
     }
-    std::vector<std::uint64_t> keyed(n), swap(n);
+    std::vector<std::uint64_t> keyed, swap;  // on huge pages where they are large (large_array.hpp)
+    detail::reserve_large(keyed, n);
+    detail::reserve_large(swap, n);
+    keyed.resize(n);
+    swap.resize(n);
     constexpr std::size_t kBlock = std::size_t{1} << 16;
     detail::parallel_for(threads, (n + kBlock - 1) / kBlock, [&](std::size_t block) {
         for (std::size_t i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i) {
@@ -222,6 +226,7 @@ void gather_distinct(PointSpan p, const Extent& box, unsigned threads, Delaunay3
     for (std::size_t b = 0; b < blocks; ++b) distinct_before[b + 1] += distinct_before[b];
     const std::size_t distinct = distinct_before[blocks];
     out.representative.resize(n);
+    detail::reserve_large(points.xyz, 3 * distinct);
     points.xyz.resize(3 * distinct);
     points.original.resize(distinct);
     // 2^exponent as a factor when it is a double (the product is then exactly ldexp's, rounding
@@ -411,10 +416,10 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     // written), which becomes the neighbours. The pages between the two fronts, read and not yet
     // written, are given back as the pass goes, so the memory peaks no higher than the mesh.
     std::vector<std::uint32_t>& tetrahedra = out.tetrahedra;
-    tetrahedra.reserve(4 * std::size_t{finite});
+    detail::reserve_large(tetrahedra, 4 * std::size_t{finite});
     std::size_t front = 0;     // words of neighbours written (4 per tetrahedron so far)
     std::size_t released = 0;  // the pages between the fronts are given back up to here
-    constexpr std::size_t kReleaseEvery = std::size_t{1} << 18;  // words (1 MiB)
+    constexpr std::size_t kReleaseEvery = std::size_t{1} << 20;  // words (4 MiB: whole huge pages)
     for (std::size_t t = 0; t < slots; ++t) {
         if (is_kept(t)) {
             std::uint32_t row[kRow];
@@ -428,8 +433,8 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         }
         const std::size_t read = kRow * (t + 1), from = std::max(front, released);
         if (read >= from + kReleaseEvery || t + 1 == slots) {
-            detail::release_pages(words + from, words + read);
-            released = read;
+            released = static_cast<std::size_t>(
+                static_cast<std::uint32_t*>(detail::release_pages(words + from, words + read)) - words);
         }
     }
     mesh.words.resize(4 * std::size_t{finite});

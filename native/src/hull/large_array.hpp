@@ -1,24 +1,30 @@
 // Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers, the
-// 3D tetrahedralization's mesh): mapped on their own and given back to the system when freed, with
-// transparent huge pages an option (kHugePages) that is off.
+// 3D tetrahedralization's mesh and its output): mapped on their own, on transparent huge pages,
+// and given back to the system when freed.
 //
 // Why mapped: freed arrays below glibc's (rising) mmap threshold stayed in the heap, so that a
 // process hulling 1e6 points on a sphere five times peaked 80 MB above one that did it once.
 //
-// Why no huge pages (kHugePages = false since Dec 2026): a first call touches every page of these
-// arrays for the first time. On an earlier 2-core benchmark machine (Linux, THP in "madvise"
-// mode) the first hull of 1e6 points on a sphere spent about half its time in page faults (2.3 s;
-// 1.2 s with MADV_HUGEPAGE). On the benchmark machines since (virtual machines whose free 2 MiB
-// blocks the host takes back), a fresh huge page costs far more to touch than a recycled 4 KiB
-// one, and every first call got slower with huge pages: 1e6 uniform points tetrahedralized on one
-// thread 3.55-3.67 s against 3.11-3.18 s without, on two threads 2.36-2.40 s against 2.08-2.29 s,
-// the whole `hullkit delaunay3` command 2.9 s against 2.5 s, the hull of 1e6 points on a sphere
-// 0.68-0.72 s against 0.62-0.66 s (warm calls about even). On more than one thread the 3D mesh's
-// rows are still mapped in advance on the threads (Prefault), as they were with huge pages.
-// Only the memory's placement changes, never a value, so results stay bit-identical either way.
+// Why huge pages: a first call touches every page of these arrays for the first time, and what a
+// fresh page costs depends on the machine far more than on the code. Three 2-core benchmark
+// machines so far (Linux, THP in "madvise" mode, virtual):
+// - the first: the first hull of 1e6 points on a sphere spent about half its time in page faults
+//   (2.3 s; 1.2 s with MADV_HUGEPAGE);
+// - the second (a host that took free 2 MiB blocks back): huge pages made every first call slower,
+//   1e6 uniform points tetrahedralized on one thread 3.55-3.67 s against 3.11-3.18 s without, the
+//   hull of 1e6 points on a sphere 0.68-0.72 s against 0.62-0.66 s;
+// - the third (Dec 2026, about 10 us a fresh 4 KiB page: 256 MiB touched in 0.66-0.77 s, on huge
+//   pages 0.02-0.44 s): 1e6 uniform points tetrahedralized on one thread 2.65-2.80 s against
+//   3.53-3.64 s without (117 503 page faults down to 13 400, the same peak memory), on two threads
+//   1.51-1.94 s against 2.19-2.67 s, the hull of 1e6 points on a sphere 1.01-1.18 s against
+//   1.69-1.77 s (peak memory 7-17 MB higher); warm calls faster too (fewer TLB misses).
+// So they are on. HULLKIT_HUGE_PAGES=0 in the environment turns them off for a process (read once,
+// at the first large array), for machines like the second. On more than one thread the 3D mesh's
+// rows are mapped in advance on the threads (Prefault). Only the memory's placement changes, never
+// a value, so results stay bit-identical either way.
 //
 // How: arrays of at least kLargeArray bytes are mapped on their own (mmap), aligned to 2 MiB,
-// rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE with kHugePages) and unmapped when freed;
+// rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE unless turned off) and unmapped when freed;
 // smaller ones come from operator new as usual. Elsewhere (WebAssembly, other systems, sanitizer
 // builds) every array comes from operator new.
 //
@@ -33,6 +39,7 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -56,13 +63,20 @@
 
 namespace hullkit::detail {
 
-/// Arrays this large (bytes) or larger are mapped on their own (on huge pages with kHugePages: up
-/// to 2 MiB of the last page may then be touched without being used, at most a third of such an
-/// array).
+/// Arrays this large (bytes) or larger are mapped on their own (on huge pages: up to 2 MiB of the
+/// last page may then be touched without being used, at most a third of such an array).
 inline constexpr std::size_t kLargeArray = std::size_t{4} << 20;
-/// Whether large arrays are advised onto transparent huge pages (see the top of this file).
-inline constexpr bool kHugePages = false;
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+/// Whether large arrays are advised onto transparent huge pages (see the top of this file): yes,
+/// unless the environment has HULLKIT_HUGE_PAGES=0 (read once).
+inline bool huge_pages() {
+    static const bool on = [] {
+        const char* value = std::getenv("HULLKIT_HUGE_PAGES");
+        return value == nullptr || std::string_view(value) != "0";
+    }();
+    return on;
+}
 
 /// The bytes a large array of `bytes` takes: whole 2 MiB pages.
 inline std::size_t large_size(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
@@ -83,7 +97,7 @@ inline void* allocate_large(std::size_t bytes) {
     const std::uintptr_t tail = aligned + size, end = start + size + kHugePage;
     if (end > tail) munmap(reinterpret_cast<void*>(tail), end - tail);
     void* memory = reinterpret_cast<void*>(aligned);
-    if (kHugePages) madvise(memory, size, MADV_HUGEPAGE);  // a hint: without it the array works all the same
+    if (huge_pages()) madvise(memory, size, MADV_HUGEPAGE);  // a hint: without it the array works all the same
     return memory;
 #else
     return ::operator new(bytes);
@@ -140,12 +154,12 @@ struct LargeArrayAllocator {
     bool operator!=(const LargeArrayAllocator<U>&) const noexcept { return false; }
 };
 
-/// With kHugePages, advises huge pages for the whole 2 MiB pages of [memory, memory + bytes) when
+/// Unless huge pages are off, advises them for the whole 2 MiB pages of [memory, memory + bytes) when
 /// that is large: for arrays that keep std::allocator (those a caller gets back), reserved and
-/// then filled. Pages already touched stay as they are. Without, nothing.
+/// then filled. Pages already touched stay as they are. With huge pages off, nothing.
 inline void advise_huge_pages(const void* memory, std::size_t bytes) {
 #if HULLKIT_HUGE_PAGES
-    if (!kHugePages || bytes < kLargeArray) return;
+    if (bytes < kLargeArray || !huge_pages()) return;
     const auto first = reinterpret_cast<std::uintptr_t>(memory);
     const std::uintptr_t begin = (first + kHugePage - 1) / kHugePage * kHugePage;
     const std::uintptr_t end = (first + bytes) / kHugePage * kHugePage;
@@ -182,15 +196,20 @@ struct Prefault {
 /// Gives the whole pages inside [begin, end) back to the system (their contents are lost: they
 /// read as zeros when touched again), where the system allows it (Linux); elsewhere nothing. For
 /// an array rewritten in place from its front while its back is read and no longer needed.
-inline void release_pages(void* begin, void* end) {
+/// Returns the end of what was given back (`begin` when nothing was), to start the next call.
+inline void* release_pages(void* begin, void* end) {
 #if HULLKIT_HUGE_PAGES
-    constexpr std::uintptr_t kPage = 4096;
+    // Whole huge pages when arrays are on them: giving back part of one would split it, and the
+    // part written again would come back as 4 KiB pages, each faulted in on its own.
+    const std::uintptr_t kPage = huge_pages() ? kHugePage : 4096;
     const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + kPage - 1) / kPage * kPage;
     const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / kPage * kPage;
-    if (from < to) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+    if (from >= to) return begin;
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+    return reinterpret_cast<void*>(to);
 #else
-    (void)begin;
     (void)end;
+    return begin;
 #endif
 }
 
