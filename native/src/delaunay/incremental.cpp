@@ -17,6 +17,7 @@
 #include <algorithm>
 
 #include "delaunay_internal.hpp"
+#include "hull/large_array.hpp"
 #include "hullkit/predicates.hpp"
 
 namespace hullkit {
@@ -33,8 +34,8 @@ public:
           incircle_bound_(detail::incircle_static_bound(span)),
           orient_bound_(detail::orient2d_static_bound(span)) {
         const std::size_t capacity = 2 * points.count + 4;  // finite + ghost triangles
-        vertex_.reserve(3 * capacity);
-        twin_.reserve(3 * capacity);
+        detail::reserve_large(vertex_, 3 * capacity);  // on huge pages where large (large_array.hpp)
+        detail::reserve_large(twin_, 3 * capacity);
         mark_.reserve(capacity);
         start_of_.assign(points.count + 1, 0);
     }
