@@ -1,6 +1,7 @@
 // Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers, the
-// 3D tetrahedralization's mesh and its output): mapped on their own, on transparent huge pages,
-// and given back to the system when freed.
+// 2D and 3D meshes and their outputs): mapped on their own, on transparent huge pages, and given
+// back to the system when freed (or, for std::vectors a caller gets back, advised onto huge pages
+// where they are reserved: reserve_large).
 //
 // Why mapped: freed arrays below glibc's (rising) mmap threshold stayed in the heap, so that a
 // process hulling 1e6 points on a sphere five times peaked 80 MB above one that did it once.
@@ -16,7 +17,8 @@
 // - the third (Dec 2026, about 10 us a fresh 4 KiB page: 256 MiB touched in 0.66-0.77 s, on huge
 //   pages 0.02-0.44 s): 1e6 uniform points tetrahedralized on one thread 2.65-2.80 s against
 //   3.53-3.64 s without (117 503 page faults down to 13 400, the same peak memory), on two threads
-//   1.51-1.94 s against 2.19-2.67 s, the hull of 1e6 points on a sphere 1.01-1.18 s against
+//   1.51-1.94 s against 2.19-2.67 s, 1e6 uniform points triangulated in 2D on one thread
+//   0.74-0.77 s against 1.04-1.21 s, the hull of 1e6 points on a sphere 1.01-1.18 s against
 //   1.69-1.77 s (peak memory 7-17 MB higher); warm calls faster too (fewer TLB misses).
 // So they are on. HULLKIT_HUGE_PAGES=0 in the environment turns them off for a process (read once,
 // at the first large array), for machines like the second. On more than one thread the 3D mesh's
