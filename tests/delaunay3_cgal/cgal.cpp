@@ -104,6 +104,37 @@ TEST_CASE("delaunay3 vs CGAL: cospherical ties (grids, lattices, spheres) broken
     same_as_cgal(box);
 }
 
+TEST_CASE("delaunay3 vs CGAL: lattices on both sides of the limit of the in-doubles shortcut", "[delaunay3][cgal]") {
+    // Every integer point on a sphere of radius 329 (2646 points, 658 apart: the lattice's
+    // predicates exact in doubles) and of radius 330 (1950, 660 apart: beyond the shortcut's 659,
+    // the exact predicates in full), with the centre and a small inner sphere; all ties.
+    for (const int radius : {329, 330}) {
+        std::vector<double> xyz = {0, 0, 0};
+        for (int x = -radius; x <= radius; ++x) {
+            for (int y = -radius; y <= radius; ++y) {
+                const int rest = radius * radius - x * x - y * y;
+                if (rest < 0) continue;
+                const int z = static_cast<int>(std::lround(std::sqrt(double(rest))));
+                if (z * z != rest) continue;
+                xyz.insert(xyz.end(), {double(x), double(y), double(z)});
+                if (z != 0) xyz.insert(xyz.end(), {double(x), double(y), double(-z)});
+            }
+        }
+        for (int x = -7; x <= 7; ++x)
+            for (int y = -7; y <= 7; ++y)
+                for (int z = -7; z <= 7; ++z)
+                    if (x * x + y * y + z * z == 50) xyz.insert(xyz.end(), {double(x), double(y), double(z)});
+        INFO("radius " << radius << ", " << xyz.size() / 3 << " points");
+        same_as_cgal(xyz);
+    }
+    // A grid of multiples of 2^-7 far from the origin (the lattice's unit is not 1).
+    std::vector<double> fine;
+    for (int x = 0; x < 9; ++x)
+        for (int y = 0; y < 8; ++y)
+            for (int z = 0; z < 7; ++z) fine.insert(fine.end(), {1000 + x / 128.0, -3 + y / 128.0, 5 + z / 64.0});
+    same_as_cgal(fine);
+}
+
 TEST_CASE("delaunay3 vs CGAL: points on spheres up to rounding (near-cospherical, in-sphere stage C)", "[delaunay3][cgal]") {
     // Rounded unit vectors: every five points are cospherical up to the rounding of their
     // coordinates, so most in-sphere tests go past the filter (hullkit's stage C decides them).

@@ -24,7 +24,9 @@
 // true tetrahedralization of the convex hull (no flat tetrahedron, every point a vertex, every face
 // locally Delaunay) that is Delaunay for the unperturbed points, the same for every insertion
 // order and thread count; it is the one CGAL's Delaunay_triangulation_3 builds with its default
-// perturbation. Coplanar hull faces are triangulated by the same rule.
+// perturbation. Coplanar hull faces are triangulated by the same rule. On small lattices (every
+// coordinate a multiple of one power of two u, no two points more than 659 u apart on an axis)
+// orient3d and insphere are exact in plain doubles, and the filters and exact stages are skipped.
 //
 // Threads: large rounds of the insertion are cut into partitions inserted on their own threads
 // (ranges of the Hilbert curve, then slabs across oblique directions for the points the ranges

@@ -55,6 +55,7 @@
 // its largest and smallest nonzero |coordinate| can rescale first: see predicates_scale_exponent().
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace hullkit {
@@ -414,6 +415,22 @@ inline InsphereStageA insphere_stage_a(const double* a, const double* b, const d
 inline double insphere_static_bound(double span) {
     const double s2 = span * span;
     return kInsphereFilterBound * 72.0 * (s2 * s2 * span) * (1.0 + 0x1p-40);
+}
+/// The same bound from the rows' own differences from e: with the x differences at most mx, the y
+/// at most my, the z at most mz (as computed; M the largest of the three), each lift is below
+/// 3 M^2 and each row's minor permanent below 6 mx my mz (each of its terms has one x, one y and
+/// one z difference), so the permanent is below 72 M^2 mx my mz (1 + 2^-47). Much tighter than
+/// the static bound where the five points are close together compared with the whole set
+/// (clusters); a product that underflows is not possible in insphere's range.
+inline double insphere_local_bound(const double* a, const double* b, const double* c, const double* d,
+                                   const double* e) {
+    double m[3];
+    for (int k = 0; k < 3; ++k) {
+        m[k] = std::max(std::max(std::fabs(a[k] - e[k]), std::fabs(b[k] - e[k])),
+                        std::max(std::fabs(c[k] - e[k]), std::fabs(d[k] - e[k])));
+    }
+    const double largest = std::max(std::max(m[0], m[1]), m[2]);
+    return kInsphereFilterBound * 72.0 * ((largest * largest) * (m[0] * m[1] * m[2])) * (1.0 + 0x1p-40);
 }
 /// insphere with the semi-static bound first (exact sign always).
 inline int insphere_semi_static(double bound, const double* a, const double* b, const double* c, const double* d,

@@ -63,15 +63,44 @@ struct Mesh {
 /// The link of face k of tetrahedron t (see Mesh).
 constexpr std::uint32_t link_of(std::size_t t, std::uint32_t k) { return static_cast<std::uint32_t>(kRow * t + 4 + k); }
 
+/// The lattice of lattice_exact: its lowest corner and 1/u.
+struct Lattice {
+    double lo[3] = {0, 0, 0};
+    double inverse_unit = 1;
+    /// A point's lattice coordinates (each an integer from 0 to 659) as one number that orders
+    /// the points lexicographically (x first), exactly: (X 1024 + Y) 1024 + Z, below 2^30.
+    double key(const double* p) const {
+        const double x = (p[0] - lo[0]) * inverse_unit, y = (p[1] - lo[1]) * inverse_unit;
+        const double z = (p[2] - lo[2]) * inverse_unit;
+        return (x * 1024 + y) * 1024 + z;
+    }
+};
+
+/// Whether the coordinates `xyz` (x, y, z triples) lie on a lattice small enough for orient3d and
+/// insphere to be computed exactly in doubles: every coordinate an integer multiple of one power
+/// of two u (at least 2^-190), and no two points more than 659 u apart on any axis. Every
+/// difference is then an integer times u; every product and partial sum in the stage A formulas an
+/// integer times a power of u, at most 6 (659 u)^3 for orient3d and 72 (659 u)^5 < 2^53 u^5 for
+/// insphere (their permanents' bounds): no rounding anywhere, so the value is the exact
+/// determinant. Integer grids up to 660 points a side, and points on spheres of integer radius up
+/// to 329, among others. When they do, the lattice goes to `lattice`.
+bool lattice_exact(const std::vector<double>& xyz, Lattice* lattice);
+
 /// The exact predicates with the symbolic perturbation (delaunay3.hpp, "Ties").
 class Predicates {
 public:
     /// `furthest`: the furthest-site conflicts (every answer of conflict() negated: e conflicts
     /// with a tetrahedron whose perturbed circumsphere leaves it outside, the upper 4D hull).
-    explicit Predicates(const Points& points, bool furthest = false);
+    /// `in_doubles`: evaluate in doubles alone when lattice_exact(points.xyz, ...) (the verifier says
+    /// false, to stay independent of that shortcut).
+    explicit Predicates(const Points& points, bool furthest = false, bool in_doubles = true);
 
     /// orient3d of four finite points.
     int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
+        if (exact_in_doubles_) {
+            const double det = detail::orient3d_stage_a(p(a), p(b), p(c), p(d));
+            return (det > 0) - (det < 0);
+        }
         return detail::orient3d_semi_static(orient_bound_, p(a), p(b), p(c), p(d));
     }
     /// Whether e conflicts with tetrahedron `t` (its circumsphere, or for a ghost the open half-space
@@ -84,10 +113,16 @@ public:
             const double det = detail::insphere_stage_a_det(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
             if (det > insphere_bound_) return !furthest_;
             if (-det > insphere_bound_) return furthest_;
+            if (exact_in_doubles_) return conflict_tie(t, e);  // the value is exactly 0
+            const double local = detail::insphere_local_bound(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
+            if (det > local) return !furthest_;
+            if (-det > local) return furthest_;
         }
         return conflict_exact(t, e);
     }
     bool conflict_exact(const std::uint32_t* t, std::uint32_t e) const;
+    /// conflict() for a finite tetrahedron whose in-sphere value is known to be exactly 0.
+    bool conflict_tie(const std::uint32_t* t, std::uint32_t e) const;
     /// The perturbed in-sphere sign of e against the positively oriented finite a, b, c, d.
     int insphere_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                            std::uint32_t e) const;
@@ -96,12 +131,19 @@ public:
     int coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t e) const;
 
     const double* p(std::uint32_t i) const { return xyz_ + 3 * static_cast<std::size_t>(i); }
-    /// orient3d's semi-static bound for these points (detail::orient3d_static_bound).
+    /// orient3d's semi-static bound for these points (detail::orient3d_static_bound), 0 when
+    /// exact_in_doubles().
     double orient_bound() const { return orient_bound_; }
+    /// Whether the floating-point values of orient3d's and insphere's stage A formulas are the
+    /// exact determinants for these points, zero included (lattice_exact): then their sign is the
+    /// answer and no exact stage runs; the bounds are 0.
+    bool exact_in_doubles() const { return exact_in_doubles_; }
 
 private:
     const double* xyz_;
     double span_;
+    Lattice lattice_;  // (before exact_in_doubles_, which fills it)
+    bool exact_in_doubles_;
     double orient_bound_;
     double insphere_bound_;
     bool furthest_;

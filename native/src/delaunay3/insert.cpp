@@ -175,6 +175,7 @@ public:
         const Predicates& predicates = shared_.predicates;
         const double* q = predicates.p(p);
         const double bound = predicates.orient_bound();
+        const bool exact_in_doubles = predicates.exact_in_doubles();
         std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
             const std::uint32_t* c = words + kRow * t;
@@ -198,7 +199,7 @@ public:
                              a[2] * (b[0] * e[1] - b[1] * e[0]);
                 if (k & 1u) det = -det;
                 bool beyond = det < -bound;
-                if (!beyond && !(det > bound)) {
+                if (!beyond && !(det > bound) && !exact_in_doubles) {  // (exact: 0 is not beyond)
                     std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
                     w[k] = p;
                     beyond = orient3d(predicates.p(w[0]), predicates.p(w[1]), predicates.p(w[2]), predicates.p(w[3])) < 0;

@@ -16,32 +16,78 @@
 // depend on it only through its side, so any finite point q beyond the face stands in for it.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 
 #include "delaunay3_internal.hpp"
 
 namespace hullkit {
 namespace delaunay3_detail {
 
-Predicates::Predicates(const Points& points, bool furthest)
+Predicates::Predicates(const Points& points, bool furthest, bool in_doubles)
     : xyz_(points.xyz.data()),
       span_(points.span),
-      orient_bound_(detail::orient3d_static_bound(points.span)),
-      insphere_bound_(detail::insphere_static_bound(points.span)),
+      exact_in_doubles_(in_doubles && lattice_exact(points.xyz, &lattice_)),
+      orient_bound_(exact_in_doubles_ ? 0.0 : detail::orient3d_static_bound(points.span)),
+      insphere_bound_(exact_in_doubles_ ? 0.0 : detail::insphere_static_bound(points.span)),
       furthest_(furthest) {}
+
+bool lattice_exact(const std::vector<double>& xyz, Lattice* lattice) {
+    constexpr double kMaxUnits = 659;  // 72 * 659^5 < 2^53 < 72 * 660^5
+    constexpr int kLowestUnit = -190;  // u^5 stays a normal double
+    if (xyz.size() < 3) return false;
+    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
+    int unit = std::numeric_limits<int>::max();  // the exponent of u: the lowest set bit of any coordinate
+    auto too_far = [&] {
+        const double most = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+        return unit < kLowestUnit || (unit != std::numeric_limits<int>::max() && most > std::ldexp(kMaxUnits, unit));
+    };
+    for (std::size_t i = 0; i < xyz.size(); i += 3) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double v = xyz[i + axis];
+            lo[axis] = std::min(lo[axis], v);
+            hi[axis] = std::max(hi[axis], v);
+            if (v == 0) continue;
+            std::uint64_t bits;
+            std::memcpy(&bits, &v, sizeof bits);
+            const int biased = static_cast<int>(bits >> 52 & 0x7ff);
+            std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
+            if (biased != 0) mantissa |= std::uint64_t{1} << 52;
+            int zeros = 0;  // of the mantissa, which is not 0 (v is finite and not 0)
+#if defined(__GNUC__) || defined(__clang__)
+            zeros = __builtin_ctzll(mantissa);
+#else
+            while (!(mantissa >> zeros & 1u)) ++zeros;
+#endif
+            unit = std::min(unit, (biased != 0 ? biased : 1) - 1075 + zeros);
+        }
+        if ((i & 0xfff) == 0 && too_far()) return false;  // most inputs: decided by the first point
+    }
+    if (too_far() || unit == std::numeric_limits<int>::max()) return false;
+    std::copy(lo, lo + 3, lattice->lo);
+    lattice->inverse_unit = std::ldexp(1.0, -unit);
+    return true;
+}
 
 namespace {
 
-/// Sorts the positions 0..count-1 of `points` by decreasing lexicographic order (count <= 5).
+/// The positions 0..count-1 of `points` in decreasing lexicographic order (count <= 5): each
+/// point's rank counted over the pairs, without branches (the comparisons of cospherical points
+/// are as good as random, and a sort's branches mispredicted). Ties, which distinct points do not
+/// have, would go by position.
 template <int count>
 void by_decreasing_rank(const double* const* points, int* rank_order) {
-    for (int i = 0; i < count; ++i) rank_order[i] = i;
-    for (int i = 1; i < count; ++i) {
-        const int moving = rank_order[i];
-        int j = i;
-        for (; j > 0 && lexicographically_less(points[rank_order[j - 1]], points[moving]); --j)
-            rank_order[j] = rank_order[j - 1];
-        rank_order[j] = moving;
+    int rank[count] = {};
+    for (int i = 0; i < count; ++i) {
+        for (int j = i + 1; j < count; ++j) {
+            const double* a = points[i];
+            const double* b = points[j];
+            const bool less = (a[0] < b[0]) | ((a[0] == b[0]) & ((a[1] < b[1]) | ((a[1] == b[1]) & (a[2] < b[2]))));
+            rank[j] += less;
+            rank[i] += !less;
+        }
     }
+    for (int i = 0; i < count; ++i) rank_order[count - 1 - rank[i]] = i;
 }
 
 /// The perturbation's decision for corners w[0..3] (positively oriented, w[3] possibly a stand-in
@@ -67,13 +113,48 @@ int perturbation(const double* const* w, int ranked, const double* e) {
     return -1;  // not reached for distinct points: e's own term is nonzero
 }
 
+/// perturbation() for four finite corners when Predicates::exact_in_doubles(): the same decision,
+/// without branches on the points (ties on lattices are common, and their outcomes as good as
+/// random). All four orientations with a corner replaced by e, from the corners relative to e
+/// (corner k replaced: the determinant of the other three, + for k = 0 and 2, - for 1 and 3),
+/// exact in doubles; the answer is the sign of the one of the highest-ranked corner ranked above e
+/// that is not 0, or -1 (e's own term) when there is none. The ranks compare as the lattice's
+/// keys (lattice_key), one number per point.
+int perturbation_in_doubles(const double* const* w, const double* e, const Lattice& lattice) {
+    double d[4][3];
+    for (int i = 0; i < 4; ++i)
+        for (int a = 0; a < 3; ++a) d[i][a] = w[i][a] - e[a];
+    auto det = [&](int i, int j, int k) {
+        const double* a = d[i];
+        const double* b = d[j];
+        const double* c = d[k];
+        return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    };
+    const double replaced[4] = {det(1, 2, 3), -det(0, 2, 3), det(0, 1, 3), -det(0, 1, 2)};
+    int answer = -1;
+    double best = lattice.key(e);
+    for (int k = 0; k < 4; ++k) {  // (arithmetic, not branches: keys are never negative)
+        const double key = lattice.key(w[k]);
+        const int decides = (replaced[k] != 0) & (key > best);
+        const int sign = (replaced[k] > 0) - (replaced[k] < 0);
+        answer += decides * (sign - answer);
+        best = std::max(best, key * decides);
+    }
+    return answer;
+}
+
 }  // namespace
 
 int Predicates::insphere_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                                    std::uint32_t e) const {
-    if (const int s = detail::insphere_semi_static(insphere_bound_, p(a), p(b), p(c), p(d), p(e)); s != 0) return s;
+    if (exact_in_doubles_) {
+        const double det = detail::insphere_stage_a_det(p(a), p(b), p(c), p(d), p(e));
+        if (det != 0) return det > 0 ? 1 : -1;
+    } else if (const int s = detail::insphere_semi_static(insphere_bound_, p(a), p(b), p(c), p(d), p(e)); s != 0) {
+        return s;
+    }
     const double* w[4] = {p(a), p(b), p(c), p(d)};
-    return perturbation(w, 4, p(e));
+    return exact_in_doubles_ ? perturbation_in_doubles(w, p(e), lattice_) : perturbation(w, 4, p(e));
 }
 
 int Predicates::coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t e) const {
@@ -100,7 +181,7 @@ int Predicates::coplanar_perturbed(std::uint32_t a, std::uint32_t b, std::uint32
     }
     if (const int s = insphere(pa, pb, pc, q, p(e)); s != 0) return s;
     const double* w[4] = {pa, pb, pc, q};
-    return perturbation(w, 3, p(e));
+    return perturbation(w, 3, p(e));  // (q may lie off the lattice's range: orient3d in full)
 }
 
 // Furthest-site (the upper hull of the same perturbed lifted points): a finite tetrahedron's answer
@@ -114,9 +195,19 @@ bool Predicates::conflict_exact(const std::uint32_t* t, std::uint32_t e) const {
         if (side != 0) return side > 0;
         return coplanar_perturbed(t[0], t[1], t[2], e) == inside;
     }
-    if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) return s == inside;
+    if (exact_in_doubles_) {
+        const double det = detail::insphere_stage_a_det(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
+        if (det != 0) return (det > 0 ? 1 : -1) == inside;
+    } else if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) {
+        return s == inside;
+    }
+    return conflict_tie(t, e);
+}
+
+bool Predicates::conflict_tie(const std::uint32_t* t, std::uint32_t e) const {
     const double* w[4] = {p(t[0]), p(t[1]), p(t[2]), p(t[3])};
-    return perturbation(w, 4, p(e)) == inside;
+    const int sign = exact_in_doubles_ ? perturbation_in_doubles(w, p(e), lattice_) : perturbation(w, 4, p(e));
+    return sign == (furthest_ ? -1 : 1);
 }
 
 }  // namespace delaunay3_detail

@@ -85,7 +85,7 @@ Delaunay3VerifyReport verify_delaunay3(PointSpan points, const std::uint32_t* te
         hi[i % 3] = std::max(hi[i % 3], scaled.xyz[i]);
     }
     for (int axis = 0; axis < 3 && n > 0; ++axis) scaled.span = std::max(scaled.span, hi[axis] - lo[axis]);
-    const delaunay3_detail::Predicates predicates(scaled);
+    const delaunay3_detail::Predicates predicates(scaled, false, false);  // not the lattice shortcut: an independent check
 
     // Distinct points: each index stands for the lowest index with the same coordinates.
     std::vector<std::uint32_t> order(n), representative(n);
