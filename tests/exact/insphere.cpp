@@ -67,6 +67,13 @@ void check(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e, Coun
                                         std::fabs(e[0]), std::fabs(e[1]), std::fabs(e[2])});
     REQUIRE(hullkit::detail::insphere_semi_static(hullkit::detail::insphere_static_bound(span), a.data(), b.data(),
                                                   c.data(), d.data(), e.data()) == want);
+    // The per-test bound of the 3D Delaunay's conflicts (insphere_local_bound) is never below the
+    // adaptive filter's own bound, and whatever it decides is right.
+    const double local = hullkit::detail::insphere_local_bound(a.data(), b.data(), c.data(), d.data(), e.data());
+    const hullkit::detail::InsphereStageA filter = hullkit::detail::insphere_stage_a(a.data(), b.data(), c.data(),
+                                                                                     d.data(), e.data());
+    REQUIRE(local >= hullkit::detail::kInsphereFilterBound * filter.permanent);
+    if (std::fabs(filter.det) > local) REQUIRE((filter.det > 0 ? 1 : -1) == want);
     if (counts && stage >= 0) ++counts->stage[stage];
 }
 
