@@ -119,7 +119,7 @@ int perturbation(const double* const* w, int ranked, const double* e) {
 /// (corner k replaced: the determinant of the other three, + for k = 0 and 2, - for 1 and 3),
 /// exact in doubles; the answer is the sign of the one of the highest-ranked corner ranked above e
 /// that is not 0, or -1 (e's own term) when there is none. The ranks compare as the lattice's
-/// keys (lattice_key), one number per point.
+/// keys (Lattice::key), one number per point.
 int perturbation_in_doubles(const double* const* w, const double* e, const Lattice& lattice) {
     double d[4][3];
     for (int i = 0; i < 4; ++i)
