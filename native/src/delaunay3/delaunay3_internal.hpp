@@ -38,8 +38,9 @@ struct Points {
 constexpr int kFaceCorners[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 /// Lexicographic order of (x, y, z): the tie-breaking rank of the perturbation (later = raised more).
+/// Without branches (bitwise operators: the perturbation's comparisons are unpredictable).
 inline bool lexicographically_less(const double* a, const double* b) {
-    return a[0] < b[0] || (a[0] == b[0] && (a[1] < b[1] || (a[1] == b[1] && a[2] < b[2])));
+    return (a[0] < b[0]) | ((a[0] == b[0]) & ((a[1] < b[1]) | ((a[1] == b[1]) & (a[2] < b[2]))));
 }
 
 /// The tetrahedra, a row of 8 words per slot (corners and links side by side: the cavity's

@@ -73,16 +73,14 @@ namespace {
 
 /// The positions 0..count-1 of `points` in decreasing lexicographic order (count <= 5): each
 /// point's rank counted over the pairs, without branches (the comparisons of cospherical points
-/// are as good as random, and a sort's branches mispredicted). Ties, which distinct points do not
-/// have, would go by position.
+/// are as good as random, and a sort's branches mispredicted). Equal points, which distinct points
+/// are not, would go by position.
 template <int count>
 void by_decreasing_rank(const double* const* points, int* rank_order) {
     int rank[count] = {};
     for (int i = 0; i < count; ++i) {
         for (int j = i + 1; j < count; ++j) {
-            const double* a = points[i];
-            const double* b = points[j];
-            const bool less = (a[0] < b[0]) | ((a[0] == b[0]) & ((a[1] < b[1]) | ((a[1] == b[1]) & (a[2] < b[2]))));
+            const bool less = lexicographically_less(points[i], points[j]);
             rank[j] += less;
             rank[i] += !less;
         }
@@ -195,12 +193,8 @@ bool Predicates::conflict_exact(const std::uint32_t* t, std::uint32_t e) const {
         if (side != 0) return side > 0;
         return coplanar_perturbed(t[0], t[1], t[2], e) == inside;
     }
-    if (exact_in_doubles_) {
-        const double det = detail::insphere_stage_a_det(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e));
-        if (det != 0) return (det > 0 ? 1 : -1) == inside;
-    } else if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) {
-        return s == inside;
-    }
+    // (On a lattice a finite tetrahedron never gets here: conflict() decided it or found the tie.)
+    if (const int s = insphere(p(t[0]), p(t[1]), p(t[2]), p(t[3]), p(e)); s != 0) return s == inside;
     return conflict_tie(t, e);
 }
 
