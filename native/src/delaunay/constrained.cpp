@@ -157,12 +157,19 @@ ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, cons
     out.input_count = points.count;
     out.representative = std::move(d.representative);
     out.duplicate_count = d.duplicate_count;
-    out.coords.assign(points.xy, points.xy + 2 * points.count);
-    if (!plane) return out;  // no triangles; segments lie on the line
+    if (!plane) {  // no triangles; segments lie on the line
+        out.coords.assign(points.xy, points.xy + 2 * points.count);
+        return out;
+    }
     const int exponent = in.exponent;  // delaunay()'s scale, found while checking the points
+    // Refinement adds points (how many, only refining tells): room for half as many again.
+    const bool may_refine = domain.quality.active() || domain.mesh_corners || (domain.regions && !domain.regions->empty());
+    in.spare_points = may_refine ? points.count / 2 + 256 : 0;
     delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
     local_xy = std::vector<double>();
-    std::vector<double> xy(out.coords);  // in the room local_xy leaves
+    std::vector<double> xy;  // in the room local_xy leaves
+    xy.reserve(2 * (points.count + in.spare_points));
+    xy.assign(points.xy, points.xy + 2 * points.count);
     delaunay_detail::scale_by_power_of_two(xy, exponent);
     Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added, exponent);
     in = delaunay_detail::Input();
@@ -258,7 +265,7 @@ ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, cons
         out.unrefined_count = refiner.unrefined_count;
     }
     const bool regions = domain.mesh_corners || (!domain.polygon && domain.regions && !domain.regions->empty());
-    cdt.write(refiner.keep(), exponent, out, regions, Refiner::kDomain + 1);
+    cdt.write_and_release(points, out, regions, Refiner::kDomain + 1);
     return out;
 }
 

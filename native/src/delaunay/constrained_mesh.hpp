@@ -62,19 +62,27 @@ public:
         : xy_(std::move(xy)), input_count_(xy_.size() / 2), max_added_(max_added), exponent_(exponent) {
         vertex_ = std::move(mesh.vertex);
         twin_ = std::move(mesh.twin);
+        // The per-vertex and per-half-edge arrays with the room the others have (the points' and
+        // the mesh's: Input::spare_points), so that refinement does not copy them as they grow.
+        out_.reserve(xy_.capacity() / 2);
         out_.assign(input_count_, kGhost);
         for (std::uint32_t e = 0; e < vertex_.size(); ++e) {
             const std::uint32_t v = vertex_[e];
             vertex_[e] = v == mesh.ghost ? kGhost : original[v];
             if (v != mesh.ghost) out_[vertex_[e]] = e;
         }
+        edge_.reserve(vertex_.capacity());
         edge_.assign(vertex_.size(), 0);
         records_.assign(1, Record{0, 0, kGhost, kGhost});
+        region_.reserve(vertex_.capacity() / 3);
         region_.assign(vertex_.size() / 3, 0);
     }
 
-    /// Room for the records of `count` segments (one each, unless they cross or meet points).
-    void reserve_segments(std::size_t count) { records_.reserve(records_.size() + count); }
+    /// Room for the records of `count` segments (one each, unless they cross or meet points), and
+    /// of the pieces refinement may split them into (one per spare point).
+    void reserve_segments(std::size_t count) {
+        records_.reserve(records_.size() + count + (xy_.capacity() - xy_.size()) / 2);
+    }
 
     /// Inserts a segment and everything it turns into; false on failure (error set).
     HULLKIT_STEP bool insert(const Segment& s) {
@@ -121,44 +129,59 @@ public:
         return in;
     }
 
-    /// Writes the triangles whose `keep` flag is set (all finite ones when keep is empty), and
-    /// appends the added points to out.coords (which holds the input points). With `regions`, each
-    /// written triangle's region seed too (region ids first_seed + r; -1 below first_seed).
-    void write(const std::vector<std::uint8_t>& keep, int exponent, ConstrainedDelaunay& out, bool regions = false,
-               std::uint32_t first_seed = 0) const {
+    /// The last step: writes the domain's triangles (those with a region, see Refiner) and the
+    /// points (the input's `points`, then those added, back in the input's units: exact, a power of
+    /// two), with `regions` each triangle's region seed too (ids first_seed + r; -1 below
+    /// first_seed). The mesh is used up: what only insertion needs goes first, region_ becomes the
+    /// triangles' new numbers and xy_ becomes out.coords, so the outputs take the room they leave
+    /// (the peak of a polygon's triangulation is here: WebAssembly memory never shrinks).
+    void write_and_release(PointSpan2 points, ConstrainedDelaunay& out, bool regions, std::uint32_t first_seed) {
+        records_ = std::vector<Record>();
+        out_ = std::vector<std::uint32_t>();
+        free_ = std::vector<std::uint32_t>();
+        touched_ = std::vector<std::uint32_t>();
+        stamp_ = std::vector<std::uint32_t>();
+        pair_crossings_.clear();
         const std::size_t t_count = vertex_.size() / 3;
-        std::vector<std::int32_t> index(t_count, -1);
-        std::int32_t kept = 0;
-        for (std::size_t t = 0; t < t_count; ++t) {
-            const bool alive = vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t));
-            if (alive && (keep.empty() || keep[t])) index[t] = kept++;
-        }
-        out.triangles.resize(3 * static_cast<std::size_t>(kept));
+        std::size_t kept = 0;
+        for (std::size_t t = 0; t < t_count; ++t) kept += written(t);
+        out.triangles.resize(3 * kept);
         out.halfedges.resize(out.triangles.size());
         out.constrained.resize(out.triangles.size());
-        if (regions) out.triangle_region.resize(static_cast<std::size_t>(kept));
+        if (regions) out.triangle_region.resize(kept);
+        std::uint32_t next = 0;  // region_[t] becomes t's number in the output, or kGhost
         for (std::size_t t = 0; t < t_count; ++t) {
-            if (index[t] < 0) continue;
+            if (!written(t)) {
+                region_[t] = kGhost;
+                continue;
+            }
             if (regions) {
                 const std::uint32_t id = region_[t];
-                out.triangle_region[static_cast<std::size_t>(index[t])] =
-                    id >= first_seed ? static_cast<std::int32_t>(id - first_seed) : -1;
+                out.triangle_region[next] = id >= first_seed ? static_cast<std::int32_t>(id - first_seed) : -1;
             }
-            const std::size_t base = 3 * static_cast<std::size_t>(index[t]);
+            region_[t] = next++;
+        }
+        for (std::size_t t = 0; t < t_count; ++t) {
+            const std::uint32_t k = region_[t];
+            if (k == kGhost) continue;
+            const std::size_t base = 3 * static_cast<std::size_t>(k);
             out.triangles[base] = vertex_[3 * t];
             out.triangles[base + 1] = vertex_[3 * t + 2];
             out.triangles[base + 2] = vertex_[3 * t + 1];
             for (std::uint32_t j = 0; j < 3; ++j) {
                 const std::uint32_t e = static_cast<std::uint32_t>(3 * t) + 2 - j;
-                const std::uint32_t f = twin_[e];
-                const std::int32_t u = index[f / 3];
-                out.halfedges[base + j] = u < 0 ? -1 : 3 * u + 2 - static_cast<std::int32_t>(f % 3);
+                const std::uint32_t f = twin_[e], u = region_[f / 3];
+                out.halfedges[base + j] = u == kGhost ? -1 : static_cast<std::int32_t>(3 * u + 2 - f % 3);
                 out.constrained[base + j] = edge_[e] != 0;
             }
         }
-        // Points added at crossings, back in the input's units (exact: a power of two).
-        out.coords.resize(xy_.size());
-        for (std::size_t i = 2 * input_count_; i < xy_.size(); ++i) out.coords[i] = std::ldexp(xy_[i], -exponent);
+        vertex_ = std::vector<std::uint32_t>();
+        twin_ = std::vector<std::uint32_t>();
+        edge_ = std::vector<std::uint32_t>();
+        region_ = std::vector<std::uint32_t>();
+        out.coords = std::move(xy_);
+        std::copy(points.xy, points.xy + 2 * points.count, out.coords.begin());
+        for (std::size_t i = 2 * points.count; i < out.coords.size(); ++i) out.coords[i] = std::ldexp(out.coords[i], -exponent_);
     }
 
 private:
@@ -215,6 +238,10 @@ private:
     int orient_at(std::uint32_t a, std::uint32_t b, const double* r) const {
         const double *p = pt(a), *q = pt(b);
         return orient2d(p[0], p[1], q[0], q[1], r[0], r[1]);
+    }
+    /// Whether write_and_release writes triangle t: alive, finite, in the domain.
+    bool written(std::size_t t) const {
+        return region_[t] != 0 && vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t));
     }
     bool is_ghost(std::uint32_t t) const {
         return vertex_[3 * t] == kGhost || vertex_[3 * t + 1] == kGhost || vertex_[3 * t + 2] == kGhost;

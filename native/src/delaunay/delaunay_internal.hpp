@@ -60,6 +60,10 @@ struct Input {
     PointSpan2 points;
     std::vector<std::uint32_t> original;
     int exponent = 0;  ///< the power of two the points were scaled by (prepare(): incircle's range)
+    /// Room the mesh's arrays reserve for this many points more (constrained refinement adds
+    /// points to the mesh: reserved, the arrays are not copied as they grow, and the room is only
+    /// address space until used).
+    std::size_t spare_points = 0;
 };
 
 /// The larger of the points' computed width and height: no coordinate difference of two of them,

@@ -28,12 +28,12 @@ inline std::uint32_t next_edge(std::uint32_t e) { return e % 3 == 2 ? e - 2 : e 
 
 class Triangulation {
 public:
-    Triangulation(PointSpan2 points, double span)
+    Triangulation(PointSpan2 points, double span, std::size_t spare_points)
         : p_(points),
           ghost_(static_cast<std::uint32_t>(points.count)),
           incircle_bound_(detail::incircle_static_bound(span)),
           orient_bound_(detail::orient2d_static_bound(span)) {
-        const std::size_t capacity = 2 * points.count + 4;  // finite + ghost triangles
+        const std::size_t capacity = 2 * (points.count + spare_points) + 4;  // finite + ghost triangles
         detail::reserve_large(vertex_, 3 * capacity);  // on huge pages where large (large_array.hpp)
         detail::reserve_large(twin_, 3 * capacity);
         mark_.reserve(capacity);
@@ -182,7 +182,7 @@ Mesh incremental_mesh(const Input& input, const std::function<void(std::size_t, 
     Mesh mesh;
     {
         mesh.span = coordinate_span(p);
-        Triangulation tri(p, mesh.span);
+        Triangulation tri(p, mesh.span, input.spare_points);
         if (o > 0)
             tri.start(0, 1, k);
         else

@@ -172,12 +172,6 @@ void Refiner::mark_graph(bool exterior, const std::vector<double>& holes, const 
     }
 }
 
-std::vector<std::uint8_t> Refiner::keep() const {
-    std::vector<std::uint8_t> in(m_.region_.size(), 0);
-    for (std::size_t t = 0; t < in.size(); ++t) in[t] = m_.region_[t] != 0;
-    return in;
-}
-
 int Refiner::flaw(std::uint32_t t, int* shortest) const {
     const std::uint32_t* v = &m_.vertex_[3 * t];
     const double *a = m_.pt(v[0]), *b = m_.pt(v[1]), *c = m_.pt(v[2]);
@@ -536,9 +530,11 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2, i
         record.parent = static_cast<std::uint32_t>(parents_.size());
         parents_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)]});
     }
+    on_segment_.reserve(m_.xy_.capacity() / 2);  // the room the points have (Input::spare_points)
     on_segment_.assign(m_.xy_.size() / 2, kGhost);
     m_.track_ = true;
     m_.touched_.clear();
+    m_.touched_.reserve(m_.vertex_.size() / 3);
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) m_.touched_.push_back(t);
     retest();
     std::size_t split_head = 0, bad_head = 0;

@@ -32,8 +32,6 @@ public:
     /// triple k. Returns the first triple that is no domain triangle, or -1 when every one is and
     /// every domain triangle is one (else the count of triples, for a domain triangle left over).
     std::int64_t mark_triangles(const std::vector<std::uint32_t>& corners);
-    /// Per triangle of the mesh: 1 when in the domain.
-    std::vector<std::uint8_t> keep() const;
 
     /// Refines the domain. `area2` per region id: twice the largest area allowed (scaled units), 0
     /// for none. False with `error` set on failure (the cap, or an internal error).
