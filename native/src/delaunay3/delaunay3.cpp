@@ -226,7 +226,6 @@ void gather_distinct(PointSpan p, const Extent& box, unsigned threads, Delaunay3
     for (std::size_t b = 0; b < blocks; ++b) distinct_before[b + 1] += distinct_before[b];
     const std::size_t distinct = distinct_before[blocks];
     out.representative.resize(n);
-    detail::reserve_large(points.xyz, 3 * distinct);
     points.xyz.resize(3 * distinct);
     points.original.resize(distinct);
     // 2^exponent as a factor when it is a double (the product is then exactly ldexp's, rounding
@@ -355,7 +354,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     const std::size_t slots = mesh.size();
     std::uint32_t* words = mesh.data();
     const std::uint32_t* original = points.original.data();
-    points.xyz = std::vector<double>();  // the coordinates are not needed any more: room for the rest
+    points.xyz = detail::LargeArray<double>();  // the coordinates are not needed any more: room for the rest
     constexpr std::uint32_t kNone = 0xffffffffu;  // -1 as a neighbour
     // Each slot's new position, as a bit per slot (kept or not) and the count of kept slots before
     // each block of 64: 0.56 bytes a slot instead of 4, and small enough to stay in the caches for
@@ -545,7 +544,7 @@ Delaunay3 delaunay3(PointSpan input, const Delaunay3Options& options) {
     }
     if (m == 1) {
         out.dimension = 0;
-        out.vertices = points.original;
+        out.vertices.assign(points.original.begin(), points.original.end());
         return out;
     }
     std::size_t c = 2;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hullkit/delaunay3.hpp"
+#include "hull/large_array.hpp"
 #include "hullkit/predicates.hpp"
 
 namespace hullkit {
@@ -22,9 +23,10 @@ constexpr std::uint32_t kFree = 0xfffffffeu;
 /// Hilbert-curve order (local index = position along the curve); point i is input point original[i].
 /// `order` is the insertion order (BRIO: rounds growing eightfold, each along the curve).
 struct Points {
-    std::vector<double> xyz;
-    std::vector<std::uint32_t> original;
-    std::vector<std::uint32_t> order;
+    // Each array is as long as the input: mapped on its own, on huge pages (large_array.hpp).
+    detail::LargeArray<double> xyz;
+    detail::LargeArray<std::uint32_t> original;
+    detail::LargeArray<std::uint32_t> order;
     /// The rounds of `order`: round r is order[rounds[r]] ... order[rounds[r + 1] - 1].
     std::vector<std::size_t> rounds;
     double span = 0;  ///< no coordinate difference of two points, as computed, is larger
@@ -85,7 +87,7 @@ struct Lattice {
 /// insphere (their permanents' bounds): no rounding anywhere, so the value is the exact
 /// determinant. Integer grids up to 660 points a side, and points on spheres of integer radius up
 /// to 329, among others. When they do, the lattice goes to `lattice`.
-bool lattice_exact(const std::vector<double>& xyz, Lattice* lattice);
+bool lattice_exact(PointSpan points, Lattice* lattice);
 
 /// The exact predicates with the symbolic perturbation (delaunay3.hpp, "Ties").
 class Predicates {

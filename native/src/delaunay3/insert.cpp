@@ -471,7 +471,7 @@ private:
 /// The first tetrahedron from the first four affinely independent points in insertion order and
 /// its four ghosts; returns the positions in points.order of the four points used.
 std::array<std::size_t, 4> start_mesh(Shared& shared) {
-    const std::vector<std::uint32_t>& order = shared.points.order;
+    const auto& order = shared.points.order;
     const Predicates& predicates = shared.predicates;
     const std::size_t m = order.size();
     std::size_t c = 2;
@@ -602,6 +602,11 @@ private:
     /// shared.part; returns the deferred points, in curve order.
     std::vector<std::uint32_t> pass_over(std::vector<std::uint32_t> pending, std::size_t parts) {
         std::vector<std::vector<std::uint32_t>> lists(parts);
+        {
+            std::vector<std::size_t> sizes(parts, 0);  // each list reserved whole: no copies as they grow
+            for (const std::uint32_t p : pending) ++sizes[shared_.part[p]];
+            for (std::size_t i = 0; i < parts; ++i) lists[i].reserve(sizes[i]);
+        }
         for (const std::uint32_t p : pending) lists[shared_.part[p]].push_back(p);
         pending = std::vector<std::uint32_t>();  // the lists hold them now
         // Starting tetrahedra (serially): the one holding a point of the partition's list that it
@@ -721,6 +726,7 @@ Mesh tetrahedralize(const Points& points, unsigned threads,
     std::size_t done = 4;
     for (std::size_t r = 0; r + 1 < points.rounds.size(); ++r) {
         std::vector<std::uint32_t> round;
+        round.reserve(points.rounds[r + 1] - points.rounds[r]);  // no copies as it grows (7/8 of the points)
         for (std::size_t i = points.rounds[r]; i < points.rounds[r + 1]; ++i)
             if (i != used[0] && i != used[1] && i != used[2] && i != used[3]) round.push_back(points.order[i]);
         // The round in curve order (local index order): its points were listed so already, but the

@@ -27,22 +27,24 @@ namespace delaunay3_detail {
 Predicates::Predicates(const Points& points, bool furthest, bool in_doubles)
     : xyz_(points.xyz.data()),
       span_(points.span),
-      exact_in_doubles_(in_doubles && lattice_exact(points.xyz, &lattice_)),
+      exact_in_doubles_(in_doubles && lattice_exact(PointSpan(points.xyz.data(), points.size()), &lattice_)),
       orient_bound_(exact_in_doubles_ ? 0.0 : detail::orient3d_static_bound(points.span)),
       insphere_bound_(exact_in_doubles_ ? 0.0 : detail::insphere_static_bound(points.span)),
       furthest_(furthest) {}
 
-bool lattice_exact(const std::vector<double>& xyz, Lattice* lattice) {
+bool lattice_exact(PointSpan points, Lattice* lattice) {
+    const double* xyz = points.xyz;
+    const std::size_t size = 3 * points.count;
     constexpr double kMaxUnits = 659;  // 72 * 659^5 < 2^53 < 72 * 660^5
     constexpr int kLowestUnit = -190;  // u^5 stays a normal double
-    if (xyz.size() < 3) return false;
+    if (size < 3) return false;
     double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
     int unit = std::numeric_limits<int>::max();  // the exponent of u: the lowest set bit of any coordinate
     auto too_far = [&] {
         const double most = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
         return unit < kLowestUnit || (unit != std::numeric_limits<int>::max() && most > std::ldexp(kMaxUnits, unit));
     };
-    for (std::size_t i = 0; i < xyz.size(); i += 3) {
+    for (std::size_t i = 0; i < size; i += 3) {
         for (int axis = 0; axis < 3; ++axis) {
             const double v = xyz[i + axis];
             lo[axis] = std::min(lo[axis], v);
