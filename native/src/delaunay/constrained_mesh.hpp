@@ -134,7 +134,7 @@ public:
     /// two), with `regions` each triangle's region seed too (ids first_seed + r; -1 below
     /// first_seed). The mesh is used up: what only insertion needs goes first, region_ becomes the
     /// triangles' new numbers and xy_ becomes out.coords, so the outputs take the room they leave
-    /// (the peak of a polygon's triangulation is here: WebAssembly memory never shrinks).
+    /// rather than adding to the peak (WebAssembly memory never shrinks).
     void write_and_release(PointSpan2 points, ConstrainedDelaunay& out, bool regions, std::uint32_t first_seed) {
         records_ = std::vector<Record>();
         out_ = std::vector<std::uint32_t>();
@@ -143,18 +143,21 @@ public:
         stamp_ = std::vector<std::uint32_t>();
         pair_crossings_.clear();
         const std::size_t t_count = vertex_.size() / 3;
+        // Which triangles are written, decided once: the others' regions become kGhost (no region
+        // id is), then each written one's region becomes its number in the output.
         std::size_t kept = 0;
-        for (std::size_t t = 0; t < t_count; ++t) kept += written(t);
+        for (std::size_t t = 0; t < t_count; ++t) {
+            const bool written = region_[t] != 0 && vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t));
+            if (!written) region_[t] = kGhost;
+            kept += written;
+        }
         out.triangles.resize(3 * kept);
         out.halfedges.resize(out.triangles.size());
         out.constrained.resize(out.triangles.size());
         if (regions) out.triangle_region.resize(kept);
-        std::uint32_t next = 0;  // region_[t] becomes t's number in the output, or kGhost
+        std::uint32_t next = 0;
         for (std::size_t t = 0; t < t_count; ++t) {
-            if (!written(t)) {
-                region_[t] = kGhost;
-                continue;
-            }
+            if (region_[t] == kGhost) continue;
             if (regions) {
                 const std::uint32_t id = region_[t];
                 out.triangle_region[next] = id >= first_seed ? static_cast<std::int32_t>(id - first_seed) : -1;
@@ -238,10 +241,6 @@ private:
     int orient_at(std::uint32_t a, std::uint32_t b, const double* r) const {
         const double *p = pt(a), *q = pt(b);
         return orient2d(p[0], p[1], q[0], q[1], r[0], r[1]);
-    }
-    /// Whether write_and_release writes triangle t: alive, finite, in the domain.
-    bool written(std::size_t t) const {
-        return region_[t] != 0 && vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t));
     }
     bool is_ghost(std::uint32_t t) const {
         return vertex_[3 * t] == kGhost || vertex_[3 * t + 1] == kGhost || vertex_[3 * t + 2] == kGhost;
