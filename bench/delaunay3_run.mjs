@@ -42,6 +42,8 @@ const runsFor = (n, what) => {
   return n >= 1e6 ? 5 : n >= 1e5 ? 7 : 11;
 };
 
+/** Fresh processes timed per implementation for the native library call's headline (see below). */
+const FRESH_ROUNDS = Number(process.env.HULLKIT_BENCH_FRESH_ROUNDS ?? 3);
 const say = (text) => console.error(`delaunay3 bench: ${text}`);
 const fileOf = (input, ext) => join(out, `${input.name}.${ext}`);
 
@@ -160,10 +162,28 @@ for (const input of inputs) {
   const bin = fileOf(input, 'bin');
   const memoryOnly = input.role === 'memory';
   const runs = memoryOnly ? 1 : runsFor(input.n);
-  // -- native: the library call alone (first call in a fresh process, warm median beside it)
+  // -- native: the library call alone (first call in a fresh process, warm median beside it).
+  // The first call is a single sample a process, and this machine's speed drifts by a third within
+  // minutes: so each implementation's first call is timed in FRESH_ROUNDS fresh processes, taken in
+  // turns (hullkit 1 thread, 2 threads, CGAL, then again), and the headline is their median. The
+  // first round's process also times the warm calls and examines the output (flat count,
+  // fingerprint); the later ones only time their first call.
   const nativeArgs = ['--input', bin, '--runs', String(runs), '--budget', '40', ...(memoryOnly ? ['--no-examine'] : [])];
-  for (const [impl, extra] of [['hullkit-t1', ['--impl', 'hullkit', '--threads', '1']], ['hullkit-t2', ['--impl', 'hullkit', '--threads', '2']], ['cgal', ['--impl', 'cgal']]]) {
-    record('native', { ...jsonLine(impl, input, bench, [...extra, ...nativeArgs]), impl });
+  const natives = [['hullkit-t1', ['--impl', 'hullkit', '--threads', '1']], ['hullkit-t2', ['--impl', 'hullkit', '--threads', '2']], ['cgal', ['--impl', 'cgal']]];
+  const rounds = memoryOnly || (quick && !process.env.HULLKIT_BENCH_FRESH_ROUNDS) ? 1 : FRESH_ROUNDS;
+  const nativeRows = new Map();
+  for (let round = 0; round < rounds; round++) {
+    for (const [impl, extra] of natives) {
+      const args = round === 0 ? [...extra, ...nativeArgs] : [...extra, '--input', bin, '--runs', '1', '--no-examine'];
+      const line = jsonLine(impl, input, bench, args);
+      if (round === 0) nativeRows.set(impl, { ...line, impl, first_each: [] });
+      const row = nativeRows.get(impl);
+      if (!row.error && !line.error) row.first_each.push(line.first);
+    }
+  }
+  for (const row of nativeRows.values()) {
+    if (row.first_each.length > 1) row.first = median(row.first_each);
+    record('native', row);
   }
   if (memoryOnly) continue;
 
