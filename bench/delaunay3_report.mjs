@@ -47,8 +47,9 @@ function time(r) {
   if (r.timed_out) return `timed out after ${r.timed_out} s`;
   if (r.error) return `error: ${r.error.slice(0, 80)}`;
   if (r.fresh_each) return `${seconds(r.first)}${r.runs.length > 1 ? ` (median of ${r.runs.length})` : ''}`;
-  const processes = r.first_each?.length > 1 ? `median of ${r.first_each.length} processes; ` : '';
-  return `${seconds(r.first)} (${processes}${r.runs.length === 1 ? '1 call' : `warm ${seconds(r.warm)}`})`;
+  const processes = r.first_each?.length > 1 ? `median of ${r.first_each.length} processes` : '';
+  const warm = r.runs.length > 1 ? `warm ${seconds(r.warm)}` : processes ? '' : '1 call';
+  return `${seconds(r.first)} (${[processes, warm].filter(Boolean).join('; ')})`;
 }
 const pendingReasons = [...new Set(results.filter((r) => r.pending).map((r) => `${r.impl}: ${r.pending}`))];
 const ratio = (a, b) => (usable(a) && usable(b) ? ratioOf(a.first, b.first) : null);
@@ -167,9 +168,10 @@ const header = [
     ? [`**The machine was busy** (load average ${meta.load_average[0].toFixed(1)} on ${meta.cores} cores when the run started): other work shared`,
       'the cores, so times and ratios are rough; rerun on a quiet machine before drawing conclusions.', '']
     : []),
-  'Each time: the first call in a fresh process (the headline; for the native library calls the median of the',
-  'first calls of three fresh processes, the implementations taking turns, since this machine\'s speed drifts within',
-  'minutes), in parentheses the median of the later calls in the same process (warm). Ratios compare headlines.',
+  'Each time: the first call in a fresh process (the headline; for the native library calls, and for the Python',
+  `calls on ${big}, the median of the first calls of three fresh processes, the implementations taking turns, since`,
+  'this machine\'s speed drifts within minutes), in parentheses the median of the later calls in the same process',
+  '(warm). Ratios compare headlines.',
   'Commands run as a fresh process every time, so their figure is the median of those runs (wall time from spawn to',
   'exit). Peak memory: the maximum resident set of the whole process (input included); for the library calls, as',
   'the first call left it (the first call\'s peak, in the first of the fresh processes).',

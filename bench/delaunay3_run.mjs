@@ -222,14 +222,40 @@ for (const input of inputs) {
 
   // -- Python (first call in a fresh process): scipy through Debian's interpreter, hullkit's binding
   const tets = join(out, `tets-${input.name}.u32`);
-  const pythonRow = (impl, interpreter, lib, pythonRuns, extra = []) => {
+  // (recorded at once unless `recorded` is false: then the row is returned to be recorded later)
+  const pythonRow = (impl, interpreter, lib, pythonRuns, extra = [], recorded = true) => {
     const line = jsonLine(impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', String(pythonRuns), '--budget', '45', '--tets', tets, ...extra],
       lib === 'scipy' ? scipyTimeout : undefined);
-    return record('python', { ...line, impl, ...(line.error || line.pending ? {} : count(input, tets, 'u32')) });
+    const row = { ...line, impl, ...(line.error || line.pending ? {} : count(input, tets, 'u32')) };
+    return recorded ? record('python', row) : row;
   };
-  if (input.kind === 'sphere') record('python', { impl: 'scipy', input: input.name, n: input.n, skipped: SLOW_PEERS_SKIPPED });
-  else pythonRow('scipy', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'));
-  pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n));
+  if (input.kind === 'sphere') {
+    record('python', { impl: 'scipy', input: input.name, n: input.n, skipped: SLOW_PEERS_SKIPPED });
+    pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n));
+  } else if (input.name !== (quick ? 'uniform-1e5' : 'uniform-1e6')) {
+    pythonRow('scipy', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'));
+    pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n));
+  } else {
+    // The input of the Python target: scipy and hullkit in FRESH_ROUNDS fresh processes each,
+    // taking turns, the headlines their medians (as the native calls above). The first round's
+    // processes also time the warm calls and write the tetrahedra that are counted.
+    const rows = [pythonRow('scipy', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'), [], false),
+      pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n), [], false)];
+    for (const row of rows) row.first_each = row.error || row.pending ? [] : [row.first];
+    const rounds = quick && !process.env.HULLKIT_BENCH_FRESH_ROUNDS ? 1 : FRESH_ROUNDS;
+    for (let round = 1; round < rounds; round++) {
+      for (const [row, interpreter, lib] of [[rows[0], '/usr/bin/python3', 'scipy'], [rows[1], values.python, 'hullkit']]) {
+        if (row.error || row.pending) continue;
+        const line = jsonLine(row.impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', '1'],
+          lib === 'scipy' ? scipyTimeout : undefined);
+        if (!line.error) row.first_each.push(line.first);
+      }
+    }
+    for (const row of rows) {
+      if (row.first_each.length > 1) row.first = median(row.first_each);
+      record('python', row);
+    }
+  }
   // Furthest-site (Delaunay(points, furthest_site=True)) on the uniform and sphere inputs: Qhull's
   // upper hull finishes on the sphere where its lower hull does not (3.7 s at 1e5 points, one-off).
   if (input.kind === 'uniform' || input.kind === 'sphere') {
