@@ -42,8 +42,11 @@ const runsFor = (n, what) => {
   return n >= 1e6 ? 5 : n >= 1e5 ? 7 : 11;
 };
 
-/** Fresh processes timed per implementation for the native library call's headline (see below). */
-const FRESH_ROUNDS = Number(process.env.HULLKIT_BENCH_FRESH_ROUNDS ?? 3);
+/** Fresh processes timed per implementation for the headline of the native library calls and of the
+ * Python calls on the target's input (see below); 1 in quick mode unless set. */
+const FRESH_ROUNDS = process.env.HULLKIT_BENCH_FRESH_ROUNDS ? Number(process.env.HULLKIT_BENCH_FRESH_ROUNDS) : quick ? 1 : 3;
+/** A row timed in fresh processes: its headline becomes the median of their first calls. */
+const withMedianFirst = (row) => (row.first_each?.length > 1 ? { ...row, first: median(row.first_each) } : row);
 const say = (text) => console.error(`delaunay3 bench: ${text}`);
 const fileOf = (input, ext) => join(out, `${input.name}.${ext}`);
 
@@ -170,7 +173,7 @@ for (const input of inputs) {
   // fingerprint); the later ones only time their first call.
   const nativeArgs = ['--input', bin, '--runs', String(runs), '--budget', '40', ...(memoryOnly ? ['--no-examine'] : [])];
   const natives = [['hullkit-t1', ['--impl', 'hullkit', '--threads', '1']], ['hullkit-t2', ['--impl', 'hullkit', '--threads', '2']], ['cgal', ['--impl', 'cgal']]];
-  const rounds = memoryOnly || (quick && !process.env.HULLKIT_BENCH_FRESH_ROUNDS) ? 1 : FRESH_ROUNDS;
+  const rounds = memoryOnly ? 1 : FRESH_ROUNDS;
   const nativeRows = new Map();
   for (let round = 0; round < rounds; round++) {
     for (const [impl, extra] of natives) {
@@ -181,10 +184,7 @@ for (const input of inputs) {
       if (!row.error && !line.error) row.first_each.push(line.first);
     }
   }
-  for (const row of nativeRows.values()) {
-    if (row.first_each.length > 1) row.first = median(row.first_each);
-    record('native', row);
-  }
+  for (const row of nativeRows.values()) record('native', withMedianFirst(row));
   if (memoryOnly) continue;
 
   // -- whole commands, text in: hullkit (.ele and .node out) vs TetGen (-NEFQ: nothing written;
@@ -222,10 +222,11 @@ for (const input of inputs) {
 
   // -- Python (first call in a fresh process): scipy through Debian's interpreter, hullkit's binding
   const tets = join(out, `tets-${input.name}.u32`);
+  const pythonLine = (impl, interpreter, lib, args) =>
+    jsonLine(impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, ...args], lib === 'scipy' ? scipyTimeout : undefined);
   // (recorded at once unless `recorded` is false: then the row is returned to be recorded later)
   const pythonRow = (impl, interpreter, lib, pythonRuns, extra = [], recorded = true) => {
-    const line = jsonLine(impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', String(pythonRuns), '--budget', '45', '--tets', tets, ...extra],
-      lib === 'scipy' ? scipyTimeout : undefined);
+    const line = pythonLine(impl, interpreter, lib, ['--runs', String(pythonRuns), '--budget', '45', '--tets', tets, ...extra]);
     const row = { ...line, impl, ...(line.error || line.pending ? {} : count(input, tets, 'u32')) };
     return recorded ? record('python', row) : row;
   };
@@ -242,19 +243,14 @@ for (const input of inputs) {
     const rows = [pythonRow('scipy', '/usr/bin/python3', 'scipy', runsFor(input.n, 'slow'), [], false),
       pythonRow('hullkit-python', values.python, 'hullkit', runsFor(input.n), [], false)];
     for (const row of rows) row.first_each = row.error || row.pending ? [] : [row.first];
-    const rounds = quick && !process.env.HULLKIT_BENCH_FRESH_ROUNDS ? 1 : FRESH_ROUNDS;
-    for (let round = 1; round < rounds; round++) {
+    for (let round = 1; round < FRESH_ROUNDS; round++) {
       for (const [row, interpreter, lib] of [[rows[0], '/usr/bin/python3', 'scipy'], [rows[1], values.python, 'hullkit']]) {
         if (row.error || row.pending) continue;
-        const line = jsonLine(row.impl, input, interpreter, [join(here, 'delaunay3_python.py'), '--lib', lib, '--input', bin, '--runs', '1'],
-          lib === 'scipy' ? scipyTimeout : undefined);
+        const line = pythonLine(row.impl, interpreter, lib, ['--runs', '1']);
         if (!line.error) row.first_each.push(line.first);
       }
     }
-    for (const row of rows) {
-      if (row.first_each.length > 1) row.first = median(row.first_each);
-      record('python', row);
-    }
+    for (const row of rows) record('python', withMedianFirst(row));
   }
   // Furthest-site (Delaunay(points, furthest_site=True)) on the uniform and sphere inputs: Qhull's
   // upper hull finishes on the sphere where its lower hull does not (3.7 s at 1e5 points, one-off).

@@ -25,7 +25,8 @@
 #   HULLKIT_BENCH_NO_BUILD=1  use the built binaries as they are
 #   HULLKIT_BENCH_BUILD=DIR   the native build directory (default build/bench)
 #   HULLKIT_BENCH_QDELAUNAY_TIMEOUT=S  stop a qdelaunay run after S seconds (default 300)
-#   HULLKIT_BENCH_FRESH_ROUNDS=K  fresh processes per native library call, taken in turns (default 3;
+#   HULLKIT_BENCH_FRESH_ROUNDS=K  fresh processes per native library call, and per Python call on the
+#                             target's input, taken in turns (default 3;
 #                             quick mode 1 unless this is set)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -49,6 +49,8 @@ namespace {
 
 /// The three corners of a tetrahedron other than k, in increasing order.
 constexpr int kOtherThree[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+/// All four, in increasing order (the faces the cavity's first tetrahedron grows across).
+constexpr int kAllFour[4] = {0, 1, 2, 3};
 
 /// kFaceCorners for a ghost (the vertex at infinity is corner 3): the same faces, rotated so that
 /// corner 3 comes last (a rotation keeps the orientation).
@@ -264,12 +266,12 @@ private:
             if (i + 1 < cavity_.size()) fetch_neighbours(cavity_[i + 1]);
             const std::uint32_t* next = words + kRow * t + 4;
             // Not back across the face it was reached by (its neighbour there is in the cavity):
-            // the other faces in increasing order, all four for t0.
+            // the other three in increasing order (kOtherThree), all four for t0.
             const std::uint8_t entered = entered_[i];
-            const std::uint8_t* faces = kFacesToGrow[entered];
+            const int* faces = entered == 4 ? kAllFour : kOtherThree[entered];
             const std::uint32_t count = entered == 4 ? 4 : 3;
             for (std::uint32_t j = 0; j < count; ++j) {
-                const std::uint32_t k = faces[j];
+                const std::uint32_t k = static_cast<std::uint32_t>(faces[j]);
                 const std::uint32_t across = next[k];
                 const std::uint32_t u = across >> 3;
                 // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
@@ -468,8 +470,6 @@ private:
     /// the cavity already, so growth skips it without reading its mark (a mispredicted branch in
     /// a third of the cases otherwise).
     std::vector<std::uint8_t> entered_;
-    /// The faces growth crosses from a tetrahedron reached by face e (row e; row 4 for the first).
-    static constexpr std::uint8_t kFacesToGrow[5][4] = {{1, 2, 3, 0}, {0, 2, 3, 0}, {0, 1, 3, 0}, {0, 1, 2, 0}, {0, 1, 2, 3}};
     std::vector<Boundary> boundary_;
     std::vector<std::uint32_t> table_ = std::vector<std::uint32_t>(kSide * kSide, 0);  ///< faces by directed edge
     std::vector<std::uint32_t> numbered_ = std::vector<std::uint32_t>(3 * kSmallBoundary + 1);  ///< the vertices numbered
