@@ -37,6 +37,10 @@
 #   HULLKIT_BENCH_BUILD=DIR   the native build directory (default build/bench)
 #   HULLKIT_BENCH_TIMEOUT=S   stop a process after S seconds (default 600; quick 20); the meshes get
 #                             a fifth of it, at least 10 s (refinement can run away on tiny input angles)
+#   HULLKIT_BENCH_FRESH_ROUNDS=K  fresh processes per quality mesh and refinement, CGAL and hullkit
+#                             taking turns; their headline is the median of the K first calls (default
+#                             3; quick mode 1 unless set). The first process also gives the warm runs
+#                             and the checked mesh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=bench/out/constrained
@@ -45,6 +49,8 @@ quick=${HULLKIT_BENCH_QUICK:-0}
 build=${HULLKIT_BENCH_BUILD:-build/bench}
 if [ "$quick" = 1 ]; then timeout_s=${HULLKIT_BENCH_TIMEOUT:-20}; else timeout_s=${HULLKIT_BENCH_TIMEOUT:-600}; fi
 mesh_timeout_s=$((timeout_s / 5 > 10 ? timeout_s / 5 : 10))
+fresh_rounds=${HULLKIT_BENCH_FRESH_ROUNDS:-}
+if [ -z "$fresh_rounds" ]; then if [ "$quick" = 1 ]; then fresh_rounds=1; else fresh_rounds=3; fi; fi
 started=$(date +%s)
 load=$(cut -d " " -f 1 /proc/loadavg 2>/dev/null || echo "")
 say() { printf '%s\n' "$*" >&2; }
@@ -201,7 +207,30 @@ mesh_line() {
   ' "$line" "$check"
 }
 
-say "constrained bench: native runs (one process each; at most $timeout_s s, the meshes $mesh_timeout_s s)"
+# first_of IMPL INPUT BINARY: the first call of one more fresh process of a mesh (nothing dumped or
+# checked), or nothing when it gave none.
+first_of() {
+  local line
+  line=$(run_line "$1" "$2" "$mesh_timeout_s" "$3" --impl "$1" --input "$out/$2.json" --runs 1 --budget 30)
+  node -e 'const r = JSON.parse(process.argv[1]); if (!r.error && r.first != null) console.log(r.first)' "$line"
+}
+
+# with_median_first LINE [FIRST...]: LINE with first_each (its own first call, then the FIRSTs) and,
+# when there are several, first = their median.
+with_median_first() {
+  node -e '
+    const r = JSON.parse(process.argv[1]);
+    const more = process.argv.slice(2).filter((s) => s !== "").map(Number);
+    if (!r.error && r.first != null && more.length) {
+      r.first_each = [r.first, ...more];
+      const s = [...r.first_each].sort((a, b) => a - b), m = s.length >> 1;
+      r.first = s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+    }
+    console.log(JSON.stringify(r));
+  ' "$@"
+}
+
+say "constrained bench: native runs (one process each, the meshes $fresh_rounds; at most $timeout_s s, the meshes $mesh_timeout_s s)"
 for input in "${polygons[@]}" "${graphs[@]}"; do
   record native "$(native_line cgal-cdt "$input" "$cgal_bench")"
   if [ -n "$hullkit_native_missing" ]; then
@@ -223,12 +252,20 @@ for input in "${polygons[@]}" "${graphs[@]}"; do
       else
         for pair in "cgal-mesh hullkit-mesh" "cgal-refine hullkit-refine"; do
           read -r cgal_impl hullkit_impl <<<"$pair"
-          record native "$(mesh_line "$cgal_impl" "$input")"
+          cgal_line=$(mesh_line "$cgal_impl" "$input")
           if [ -n "$hullkit_native_missing" ]; then
-            record native "$(failure_line "$hullkit_impl" "$input" "not available" "$hullkit_native_missing")"
+            hullkit_line=$(failure_line "$hullkit_impl" "$input" "not available" "$hullkit_native_missing")
           else
-            record native "$(mesh_line "$hullkit_impl" "$input")"
+            hullkit_line=$(mesh_line "$hullkit_impl" "$input")
           fi
+          # More fresh processes, the two taking turns (the machine's speed drifts within minutes).
+          cgal_firsts=() hullkit_firsts=()
+          for ((round = 1; round < fresh_rounds; round++)); do
+            cgal_firsts+=("$(first_of "$cgal_impl" "$input" "$cgal_bench")")
+            if [ -z "$hullkit_native_missing" ]; then hullkit_firsts+=("$(first_of "$hullkit_impl" "$input" "$hullkit_bench")"); fi
+          done
+          record native "$(with_median_first "$cgal_line" "${cgal_firsts[@]}")"
+          record native "$(with_median_first "$hullkit_line" "${hullkit_firsts[@]}")"
         done
       fi ;;
   esac

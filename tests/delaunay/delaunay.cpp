@@ -5,6 +5,7 @@
 
 #include "delaunay_checks.hpp"
 #include "hullkit/predicates.hpp"
+#include "exact/lattice.hpp"
 
 using delaunay_test::both_algorithms;
 using delaunay_test::check_delaunay;
@@ -155,6 +156,35 @@ TEST_CASE("delaunay: a 3017 x 2018 integer grid subset and a full 300 x 200 grid
     const Delaunay d = hullkit::delaunay(full);
     check_delaunay(full, d);
     REQUIRE(d.triangle_count() == 2 * 299 * 199);
+}
+
+TEST_CASE("delaunay: at the edge of the small-lattice shortcut (exact doubles, ties decided alone)", "[delaunay]") {
+    // Integers at most 5234 apart take the shortcut (exact/lattice.hpp); 5235 apart do not. On both
+    // sides: random integer points, the integer points of a circle of radius 2617 (r^2 = 6848689 has
+    // many representations) and a full small grid, checked by verify_delaunay and the brute-force
+    // empty-circle test against GMP where small.
+    for (const int span : {5234, 5235}) {
+        std::mt19937_64 rng(static_cast<unsigned>(span));
+        std::uniform_int_distribution<int> any(0, span);
+        std::vector<double> xy = {0.0, 0.0, double(span), double(span)};  // the extremes
+        for (int i = 0; i < 20000; ++i) xy.insert(xy.end(), {double(any(rng)), double(any(rng))});
+        const int r = 2617;
+        std::vector<double> ring;
+        for (int x = -r; x <= r; ++x) {
+            const double y = std::sqrt(double(r) * r - double(x) * x);
+            if (y == std::floor(y)) {
+                ring.insert(ring.end(), {double(r + x), double(r + y)});
+                if (y != 0) ring.insert(ring.end(), {double(r + x), double(r - y)});
+            }
+        }
+        REQUIRE(ring.size() / 2 > 8);
+        ring.insert(ring.end(), {0.0, 0.0, double(span), 0.0});  // the box's extent in the second set
+        for (int k = 0; k < 30; ++k) ring.insert(ring.end(), {double(span - 3 * k), double(span)});
+        INFO("span " << span);
+        REQUIRE(hullkit::detail::plane_lattice_exact(xy.data(), xy.size() / 2, double(span)) == (span == 5234));
+        check_delaunay(xy, hullkit::delaunay(xy));
+        both_algorithms(ring, 2000);
+    }
 }
 
 TEST_CASE("delaunay: radius 1e10, offset 1e7, tiny scales", "[delaunay]") {

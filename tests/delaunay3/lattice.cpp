@@ -75,8 +75,8 @@ TEST_CASE("delaunay3 lattice shortcut: which coordinates take it", "[delaunay3]"
     CHECK(takes_shortcut(box_corners(0, 659), &lattice));  // integers 659 apart: the limit
     CHECK(lattice.inverse_unit == 1.0);
     CHECK_FALSE(takes_shortcut(box_corners(0, 661)));
-    CHECK(takes_shortcut(box_corners(0, 660), &lattice));  // 660 = 4 * 165: unit 4, 165 apart
-    CHECK(lattice.inverse_unit == 0.25);
+    CHECK(takes_shortcut(box_corners(0, 660), &lattice));  // 660 = 2 * 330: unit 2 (the smallest that fits)
+    CHECK(lattice.inverse_unit == 0.5);
     CHECK(takes_shortcut(box_corners(-329, 330)));
     CHECK_FALSE(takes_shortcut(box_corners(-329, 332)));
     // Multiples of 2^-7 far from the origin (1000 + k / 128): the unit is the lowest bit.

@@ -148,7 +148,13 @@ ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, cons
     const std::string bad_options = check_quality(domain.quality, domain.regions);
     if (!bad_options.empty()) return failure(bad_options);
     Delaunay d;
+    // Refinement adds points (how many, only refining tells): room for half as many again. The
+    // room is reserved here, in the array the points are gathered in, which becomes the mesh's
+    // points after the incremental triangulation (its pages are touched once).
+    const bool may_refine = domain.quality.active() || domain.mesh_corners || (domain.regions && !domain.regions->empty());
+    const std::size_t spare_points = may_refine ? points.count / 2 + 256 : 0;
     std::vector<double> local_xy;
+    local_xy.reserve(2 * (points.count + spare_points));
     delaunay_detail::Input in;
     const bool plane = delaunay_detail::prepare(points, d, local_xy, in);
     if (!d.ok()) return failure(d.error, d.error_point);
@@ -162,13 +168,11 @@ ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, cons
         return out;
     }
     const int exponent = in.exponent;  // delaunay()'s scale, found while checking the points
-    // Refinement adds points (how many, only refining tells): room for half as many again.
-    const bool may_refine = domain.quality.active() || domain.mesh_corners || (domain.regions && !domain.regions->empty());
-    in.spare_points = may_refine ? points.count / 2 + 256 : 0;
+    in.spare_points = spare_points;
+    in.keep_marks = true;
     delaunay_detail::Mesh mesh = delaunay_detail::incremental_mesh(in);
-    local_xy = std::vector<double>();
-    std::vector<double> xy;  // in the room local_xy leaves
-    xy.reserve(2 * (points.count + in.spare_points));
+    std::vector<double> xy = std::move(local_xy);  // the input's order now, in the same room
+    xy.reserve(2 * (points.count + spare_points));
     xy.assign(points.xy, points.xy + 2 * points.count);
     delaunay_detail::scale_by_power_of_two(xy, exponent);
     Cdt cdt(std::move(xy), std::move(mesh), in.original, max_added, exponent);

@@ -76,6 +76,9 @@ public:
         records_.assign(1, Record{0, 0, kGhost, kGhost});
         region_.reserve(vertex_.capacity() / 3);
         region_.assign(vertex_.size() / 3, 0);
+        // The marks start in the incremental mesh's (pages already touched), above its numbers.
+        stamp_ = std::move(mesh.mark);
+        generation_ = mesh.mark_limit;
     }
 
     /// Room for the records of `count` segments (one each, unless they cross or meet points), and
@@ -249,7 +252,10 @@ private:
     /// Marks on triangles that last until the next new_mark() (a generation count: no clearing).
     void new_mark() {
         if (++generation_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), generation_ = 1;
-        if (stamp_.size() < vertex_.size() / 3) stamp_.resize(vertex_.size() / 3 + vertex_.size() / 6 + 16, 0);
+        // Grown a page at a time (the vector reallocates geometrically past its capacity): the
+        // marks start in the incremental mesh's, reserved for the spare points, whose pages are
+        // only touched as triangles come.
+        if (stamp_.size() < vertex_.size() / 3) stamp_.resize(vertex_.size() / 3 + 1024, 0);
     }
     void mark(std::uint32_t t) { stamp_[t] = generation_; }
     bool marked(std::uint32_t t) const { return stamp_[t] == generation_; }

@@ -346,7 +346,7 @@ bool has_cocircular_edge(PointSpan2 p, const delaunay_detail::Mesh& mesh) {
     const std::uint32_t* twin = mesh.twin.data();
     const std::uint32_t ghost = mesh.ghost;
     const std::size_t count = mesh.vertex.size() / 3;
-    const double bound = detail::incircle_static_bound(mesh.span);
+    const double bound = mesh.lattice ? 0.0 : detail::incircle_static_bound(mesh.span);
     for (std::size_t t = 0; t < count; ++t) {
         const std::uint32_t* v = vertex + 3 * t;
         if (v[0] == ghost || v[1] == ghost || v[2] == ghost) continue;
@@ -360,7 +360,8 @@ bool has_cocircular_edge(PointSpan2 p, const delaunay_detail::Mesh& mesh) {
             const std::uint32_t opposite = vertex[f % 3 == 0 ? f + 2 : f - 1];  // f's corner off the edge
             if (opposite == ghost) continue;
             const double* d = p[opposite];
-            if (detail::incircle_semi_static(bound, a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) == 0) return true;
+            if (detail::incircle_semi_static(bound, a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1], mesh.lattice) == 0)
+                return true;
         }
     }
     return false;
@@ -588,7 +589,7 @@ std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const double* lo, const d
 }
 
 Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triangles,
-                                 std::vector<std::int32_t> twin) {
+                                 std::vector<std::int32_t> twin, bool lattice) {
     const std::size_t count = triangles.size() / 3;
     // Union-find over triangles joined across edges with an exactly cocircular neighbour.
     std::vector<std::uint32_t> parent;
@@ -605,7 +606,9 @@ Faces merge_cocircular_triangles(PointSpan2 p, std::vector<std::uint32_t> triang
         const double* b = p[triangles[3 * t + 1]];
         const double* c = p[triangles[3 * t + 2]];
         const double* d = p[opposite];
-        if (detail::incircle_inline(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) != 0) continue;
+        if (lattice ? detail::incircle_stage_a(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]).det != 0
+                    : detail::incircle_inline(a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]) != 0)
+            continue;
         if (parent.empty()) {
             parent.resize(count);
             std::iota(parent.begin(), parent.end(), 0u);

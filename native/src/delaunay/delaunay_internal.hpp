@@ -64,6 +64,8 @@ struct Input {
     /// points to the mesh: reserved, the arrays are not copied as they grow, and the room is only
     /// address space until used).
     std::size_t spare_points = 0;
+    /// Whether the mesh keeps the triangles' marks (Mesh::mark) for a later user.
+    bool keep_marks = false;
 };
 
 /// The larger of the points' computed width and height: no coordinate difference of two of them,
@@ -129,6 +131,14 @@ struct Mesh {
     std::vector<std::uint32_t> twin;
     std::uint32_t ghost = 0;
     double span = 0;  ///< coordinate_span of the points
+    /// The points lie on a small lattice (detail::plane_lattice_exact): orient2d and incircle are
+    /// exact in doubles, and the semi-static tests take bound 0 and `exact_in_doubles`.
+    bool lattice = false;
+    /// With Input::keep_marks: a number per triangle (slot), each below mark_limit, in memory
+    /// already touched (the constrained triangulation's marks start there instead of in fresh
+    /// pages); empty otherwise.
+    std::vector<std::uint32_t> mark;
+    std::uint32_t mark_limit = 0;
 };
 /// The ghost triangle (x, y, G) of hull edge x -> y (the outside on its left) is in conflict with
 /// point p when p is strictly outside that edge, or exactly on its line strictly between x and y
@@ -167,13 +177,17 @@ std::uint32_t visibility_walk(const std::vector<std::uint32_t>& vertex, const st
         while (vertex[e] == ghost || vertex[next(e)] == ghost) ++e;
         t = twin[e] / 3;  // the finite triangle across the ghost's hull edge
     }
+    // The edges in the order k = r, r + 1, r + 2 (mod 3) from a random first edge r, and each
+    // edge's successor: tables rather than remainders in the loop.
+    static constexpr std::uint8_t kFrom[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+    static constexpr std::uint8_t kTo[3][3] = {{1, 2, 0}, {2, 0, 1}, {0, 1, 2}};
     for (;;) {
         seed = seed * 1103515245u + 12345u;
         const std::uint32_t r = (seed >> 16) % 3;
         bool moved = false;
         for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::uint32_t e = 3 * t + (r + k) % 3;
-            if (right_of(vertex[e], vertex[next(e)])) {
+            const std::uint32_t e = 3 * t + kFrom[r][k];
+            if (right_of(vertex[e], vertex[3 * t + kTo[r][k]])) {
                 t = twin[e] / 3;
                 moved = true;
                 break;
@@ -211,8 +225,10 @@ Faces giftwrap_faces(const Input& input);
 
 /// Merges a Delaunay triangulation (counter-clockwise triangles, `twin[e]` the opposite half-edge or
 /// -1) into its Delaunay faces: triangles joined across every edge whose in-circle test is exactly 0.
+/// `lattice`: the points are on a small lattice (Mesh::lattice), where the floating-point
+/// determinant is the exact one.
 Faces merge_cocircular_triangles(PointSpan2 points, std::vector<std::uint32_t> triangles,
-                                 std::vector<std::int32_t> twin);
+                                 std::vector<std::int32_t> twin, bool lattice = false);
 
 }  // namespace delaunay_detail
 }  // namespace hullkit

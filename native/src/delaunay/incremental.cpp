@@ -11,12 +11,14 @@
 // The cavity is star-shaped from p, so the new triangles are never degenerate, and every
 // decision is an exact orient2d / incircle on the original coordinates (a semi-static filter with
 // one bound for the whole point set first, detail::incircle_static_bound; the adaptive predicate
-// when it cannot tell). Points collinear with a
+// when it cannot tell; on a small lattice, exact/lattice.hpp, the plain floating-point determinant
+// is exact, ties included, and decides alone). Points collinear with a
 // hull edge become hull vertices. The result is a Delaunay triangulation; cocircular faces are
 // merged afterwards (merge_cocircular_triangles) so that the shared canonical rule applies.
 #include <algorithm>
 
 #include "delaunay_internal.hpp"
+#include "exact/lattice.hpp"
 #include "hull/large_array.hpp"
 #include "hullkit/predicates.hpp"
 
@@ -24,15 +26,14 @@ namespace hullkit {
 namespace delaunay_detail {
 namespace {
 
-inline std::uint32_t next_edge(std::uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
-
 class Triangulation {
 public:
-    Triangulation(PointSpan2 points, double span, std::size_t spare_points)
+    Triangulation(PointSpan2 points, double span, bool lattice, std::size_t spare_points)
         : p_(points),
           ghost_(static_cast<std::uint32_t>(points.count)),
-          incircle_bound_(detail::incircle_static_bound(span)),
-          orient_bound_(detail::orient2d_static_bound(span)) {
+          incircle_bound_(lattice ? 0.0 : detail::incircle_static_bound(span)),
+          orient_bound_(lattice ? 0.0 : detail::orient2d_static_bound(span)),
+          lattice_(lattice) {
         const std::size_t capacity = 2 * (points.count + spare_points) + 4;  // finite + ghost triangles
         detail::reserve_large(vertex_, 3 * capacity);  // on huge pages where large (large_array.hpp)
         detail::reserve_large(twin_, 3 * capacity);
@@ -64,13 +65,14 @@ public:
         stamp_ += 2;
         const std::uint32_t inside = stamp_, outside = stamp_ + 1;
         cavity_.clear();
-        boundary_.clear();
+        edges_.clear();
         mark_[t0] = inside;
         cavity_.push_back(t0);
         for (std::size_t k = 0; k < cavity_.size(); ++k) {
             const std::uint32_t t = cavity_[k];
-            for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-                const std::uint32_t f = twin_[e];
+            const std::uint32_t corner[3] = {vertex_[3 * t], vertex_[3 * t + 1], vertex_[3 * t + 2]};
+            for (std::uint32_t j = 0; j < 3; ++j) {
+                const std::uint32_t f = twin_[3 * t + j];
                 const std::uint32_t u = f / 3;
                 const std::uint32_t mark = mark_[u];
                 if (mark == inside) continue;
@@ -78,18 +80,15 @@ public:
                     mark_[u] = inside;
                     cavity_.push_back(u);
                 } else {
+                    // A boundary edge: read (from, to, outside twin) now, before cavity slots are reused.
                     mark_[u] = outside;
-                    boundary_.push_back(e);
+                    edges_.push_back({corner[j], corner[j == 2 ? 0 : j + 1], f, 0});
                 }
             }
         }
-        // Read each boundary edge (from, to, outside twin) before any cavity slot is reused.
-        edges_.clear();
-        for (std::uint32_t e : boundary_) edges_.push_back({vertex_[e], vertex_[next_edge(e)], twin_[e]});
         // One new triangle (from, to, i) per boundary edge, in the cavity's slots first.
-        new_.clear();
         for (std::size_t k = 0; k < edges_.size(); ++k) {
-            const BoundaryEdge& edge = edges_[k];
+            BoundaryEdge& edge = edges_[k];
             std::uint32_t t;
             if (k < cavity_.size()) {
                 t = cavity_[k];
@@ -97,25 +96,26 @@ public:
             } else {
                 t = add(edge.from, edge.to, i);
             }
-            new_.push_back(t);
+            edge.slot = t;
             start_of_[edge.from] = t;
             twin_[3 * t] = edge.outside;
             twin_[edge.outside] = 3 * t;
         }
-        for (std::uint32_t t : new_) {
-            const std::uint32_t to = vertex_[3 * t + 1];
-            const std::uint32_t u = start_of_[to];
+        for (const BoundaryEdge& edge : edges_) {
+            const std::uint32_t t = edge.slot, u = start_of_[edge.to];
             twin_[3 * t + 1] = 3 * u + 2;
             twin_[3 * u + 2] = 3 * t + 1;
         }
-        last_ = new_[0];
+        last_ = edges_[0].slot;
     }
 
-    /// Hands over the mesh (ghost triangles included); the triangulation is left empty.
-    void release(Mesh& mesh) {
+    /// Hands over the mesh (ghost triangles included; with `marks` the marks too); the
+    /// triangulation is left empty.
+    void release(Mesh& mesh, bool marks) {
         mesh.ghost = ghost_;
         mesh.vertex = std::move(vertex_);
         mesh.twin = std::move(twin_);
+        if (marks) mesh.mark = std::move(mark_), mesh.mark_limit = stamp_ + 2;
         vertex_ = {}, twin_ = {}, mark_ = {}, start_of_ = {};
     }
 
@@ -135,7 +135,7 @@ private:
         const std::uint32_t a = vertex_[3 * t], b = vertex_[3 * t + 1], c = vertex_[3 * t + 2];
         if (a != ghost_ && b != ghost_ && c != ghost_) {
             return detail::incircle_semi_static(incircle_bound_, p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0],
-                                                p_[c][1], px, py) > 0;
+                                                p_[c][1], px, py, lattice_) > 0;
         }
         std::uint32_t x, y;
         ghost_edge(&vertex_[3 * t], ghost_, &x, &y);
@@ -149,20 +149,22 @@ private:
         return visibility_walk(vertex_, twin_, ghost_, last_, seed_, [&](std::uint32_t a, std::uint32_t b) {
             const double* u = p_[a];
             const double* v = p_[b];
-            return detail::orient2d_semi_static(orient_bound_, u[0], u[1], v[0], v[1], px, py) < 0;
+            return detail::orient2d_semi_static(orient_bound_, u[0], u[1], v[0], v[1], px, py, lattice_) < 0;
         });
     }
 
     PointSpan2 p_;
     std::uint32_t ghost_;
     double incircle_bound_, orient_bound_;  // semi-static filters for this point set
+    bool lattice_;                          // stage A is exact (bounds 0)
     std::vector<std::uint32_t> vertex_;
     std::vector<std::uint32_t> twin_;
     std::vector<std::uint32_t> mark_;
     std::vector<std::uint32_t> start_of_;  // per vertex: the new triangle whose first edge leaves it
-    std::vector<std::uint32_t> cavity_, boundary_, new_;
+    std::vector<std::uint32_t> cavity_;
     struct BoundaryEdge {
         std::uint32_t from, to, outside;
+        std::uint32_t slot;  // the new triangle on it
     };
     std::vector<BoundaryEdge> edges_;
     std::uint32_t stamp_ = 0;
@@ -182,7 +184,8 @@ Mesh incremental_mesh(const Input& input, const std::function<void(std::size_t, 
     Mesh mesh;
     {
         mesh.span = coordinate_span(p);
-        Triangulation tri(p, mesh.span, input.spare_points);
+        mesh.lattice = detail::plane_lattice_exact(p.xy, p.count, mesh.span);
+        Triangulation tri(p, mesh.span, mesh.lattice, input.spare_points);
         if (o > 0)
             tri.start(0, 1, k);
         else
@@ -193,7 +196,7 @@ Mesh incremental_mesh(const Input& input, const std::function<void(std::size_t, 
             if (progress && (j + 1) % kProgressEvery == 0) progress(j + 1, count);
         }
         if (progress) progress(count, count);
-        tri.release(mesh);
+        tri.release(mesh, input.keep_marks);
     }
     return mesh;
 }
@@ -219,8 +222,9 @@ Faces mesh_faces(PointSpan2 p, Mesh mesh) {
             twin[e] = index[f / 3] < 0 ? -1 : 3 * index[f / 3] + static_cast<std::int32_t>(f % 3);
         }
     }
+    const bool lattice = mesh.lattice;
     mesh = Mesh();  // release the working mesh before merging
-    return merge_cocircular_triangles(p, std::move(triangles), std::move(twin));
+    return merge_cocircular_triangles(p, std::move(triangles), std::move(twin), lattice);
 }
 
 Faces incremental_faces(const Input& input) { return mesh_faces(input.points, incremental_mesh(input)); }

@@ -535,6 +535,10 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2, i
     m_.track_ = true;
     m_.touched_.clear();
     m_.touched_.reserve(m_.vertex_.size() / 3);
+    // Room for every triangle in the flawed and bad lists before they reallocate: reserved
+    // address space costs nothing until used, where growing by copies touches twice the pages.
+    flawed_.reserve(m_.vertex_.size() / 3);
+    bad_.reserve(m_.vertex_.size() / 3);
     for (std::uint32_t t = 0; t < m_.vertex_.size() / 3; ++t) m_.touched_.push_back(t);
     retest();
     std::size_t split_head = 0, bad_head = 0;

@@ -81,7 +81,8 @@ struct Lattice {
 
 /// Whether the coordinates `xyz` (x, y, z triples) lie on a lattice small enough for orient3d and
 /// insphere to be computed exactly in doubles: every coordinate an integer multiple of one power
-/// of two u (at least 2^-190), and no two points more than 659 u apart on any axis. Every
+/// of two u (from 2^-204 to 2^194: u^5 normal, 2^53 u^5 finite), and no two points more than 659 u
+/// apart on any axis (exact/lattice.hpp's small_lattice, shared with the 2D triangulation). Every
 /// difference is then an integer times u; every product and partial sum in the stage A formulas an
 /// integer times a power of u, at most 6 (659 u)^3 for orient3d and 72 (659 u)^5 < 2^53 u^5 for
 /// insphere (their permanents' bounds): no rounding anywhere, so the value is the exact

@@ -16,10 +16,9 @@
 // depend on it only through its side, so any finite point q beyond the face stands in for it.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <limits>
 
 #include "delaunay3_internal.hpp"
+#include "exact/lattice.hpp"
 
 namespace hullkit {
 namespace delaunay3_detail {
@@ -33,39 +32,10 @@ Predicates::Predicates(const Points& points, bool furthest, bool in_doubles)
       furthest_(furthest) {}
 
 bool lattice_exact(PointSpan points, Lattice* lattice) {
-    const double* xyz = points.xyz;
-    const std::size_t size = 3 * points.count;
     constexpr double kMaxUnits = 659;  // 72 * 659^5 < 2^53 < 72 * 660^5
-    constexpr int kLowestUnit = -190;  // u^5 stays a normal double
-    if (size < 3) return false;
-    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
-    int unit = std::numeric_limits<int>::max();  // the exponent of u: the lowest set bit of any coordinate
-    auto too_far = [&] {
-        const double most = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-        return unit < kLowestUnit || (unit != std::numeric_limits<int>::max() && most > std::ldexp(kMaxUnits, unit));
-    };
-    for (std::size_t i = 0; i < size; i += 3) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const double v = xyz[i + axis];
-            lo[axis] = std::min(lo[axis], v);
-            hi[axis] = std::max(hi[axis], v);
-            if (v == 0) continue;
-            std::uint64_t bits;
-            std::memcpy(&bits, &v, sizeof bits);
-            const int biased = static_cast<int>(bits >> 52 & 0x7ff);
-            std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
-            if (biased != 0) mantissa |= std::uint64_t{1} << 52;
-            int zeros = 0;  // of the mantissa, which is not 0 (v is finite and not 0)
-#if defined(__GNUC__) || defined(__clang__)
-            zeros = __builtin_ctzll(mantissa);
-#else
-            while (!(mantissa >> zeros & 1u)) ++zeros;
-#endif
-            unit = std::min(unit, (biased != 0 ? biased : 1) - 1075 + zeros);
-        }
-        if ((i & 0xfff) == 0 && too_far()) return false;  // most inputs: decided by the first point
-    }
-    if (too_far() || unit == std::numeric_limits<int>::max()) return false;
+    int unit = 0;
+    double lo[3];
+    if (!detail::small_lattice(points.xyz, points.count, 3, kMaxUnits, 5, &unit, lo)) return false;
     std::copy(lo, lo + 3, lattice->lo);
     lattice->inverse_unit = std::ldexp(1.0, -unit);
     return true;
