@@ -66,22 +66,26 @@ public:
         const std::uint32_t inside = stamp_, outside = stamp_ + 1;
         cavity_.clear();
         edges_.clear();
-        mark_[t0] = inside;
+        // (Only cavity_ and edges_ grow during the search: the mesh's arrays stay where they are.)
+        const std::uint32_t* const vertex = vertex_.data();
+        const std::uint32_t* const twin = twin_.data();
+        std::uint32_t* const marks = mark_.data();
+        marks[t0] = inside;
         cavity_.push_back(t0);
         for (std::size_t k = 0; k < cavity_.size(); ++k) {
             const std::uint32_t t = cavity_[k];
-            const std::uint32_t corner[3] = {vertex_[3 * t], vertex_[3 * t + 1], vertex_[3 * t + 2]};
+            const std::uint32_t corner[3] = {vertex[3 * t], vertex[3 * t + 1], vertex[3 * t + 2]};
             for (std::uint32_t j = 0; j < 3; ++j) {
-                const std::uint32_t f = twin_[3 * t + j];
+                const std::uint32_t f = twin[3 * t + j];
                 const std::uint32_t u = f / 3;
-                const std::uint32_t mark = mark_[u];
+                const std::uint32_t mark = marks[u];
                 if (mark == inside) continue;
-                if (mark != outside && conflicts(u, px, py)) {
-                    mark_[u] = inside;
+                if (mark != outside && conflicts(vertex + 3 * u, px, py)) {
+                    marks[u] = inside;
                     cavity_.push_back(u);
                 } else {
                     // A boundary edge: read (from, to, outside twin) now, before cavity slots are reused.
-                    mark_[u] = outside;
+                    marks[u] = outside;
                     edges_.push_back({corner[j], corner[j == 2 ? 0 : j + 1], f, 0});
                 }
             }
@@ -122,7 +126,7 @@ public:
 private:
     std::uint32_t add(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         vertex_.push_back(a), vertex_.push_back(b), vertex_.push_back(c);
-        twin_.resize(twin_.size() + 3);
+        twin_.push_back(0), twin_.push_back(0), twin_.push_back(0);  // (set by the caller; inline, unlike resize)
         mark_.push_back(0);
         return static_cast<std::uint32_t>(vertex_.size() / 3 - 1);
     }
@@ -131,14 +135,15 @@ private:
         return vertex_[3 * t] == ghost_ || vertex_[3 * t + 1] == ghost_ || vertex_[3 * t + 2] == ghost_;
     }
 
-    bool conflicts(std::uint32_t t, double px, double py) const {
-        const std::uint32_t a = vertex_[3 * t], b = vertex_[3 * t + 1], c = vertex_[3 * t + 2];
+    /// Whether the triangle with these corners conflicts with p.
+    bool conflicts(const std::uint32_t* corners, double px, double py) const {
+        const std::uint32_t a = corners[0], b = corners[1], c = corners[2];
         if (a != ghost_ && b != ghost_ && c != ghost_) {
             return detail::incircle_semi_static(incircle_bound_, p_[a][0], p_[a][1], p_[b][0], p_[b][1], p_[c][0],
                                                 p_[c][1], px, py, lattice_) > 0;
         }
         std::uint32_t x, y;
-        ghost_edge(&vertex_[3 * t], ghost_, &x, &y);
+        ghost_edge(corners, ghost_, &x, &y);
         const double p[2] = {px, py};
         return beyond_hull_edge(p_[x], p_[y], p);
     }
