@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "delaunay3/delaunay3_internal.hpp"
+#include "exact/gmp_determinant.hpp"
 
 namespace {
 
@@ -38,8 +39,7 @@ mpq_class exact_orient(const P3& a, const P3& b, const P3& c, const P3& d) {
     const P3* rows[3] = {&b, &c, &d};
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) m[i][k] = mpq_class((*rows[i])[k]) - mpq_class(a[k]);
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    return exact_test::det3(m[0], m[1], m[2]);
 }
 
 /// hullkit's in-sphere value (positive inside), as the 4x4 determinant of the rows relative to e
@@ -51,21 +51,8 @@ mpq_class exact_insphere(const P3& a, const P3& b, const P3& c, const P3& d, con
         for (int k = 0; k < 3; ++k) x[i][k] = mpq_class((*rows[i])[k]) - mpq_class(e[k]);
         lift[i] = x[i][0] * x[i][0] + x[i][1] * x[i][1] + x[i][2] * x[i][2];
     }
-    auto minor = [&](int skip) {
-        int r[3], n = 0;
-        for (int i = 0; i < 4; ++i)
-            if (i != skip) r[n++] = i;
-        const auto& p = x[r[0]];
-        const auto& q = x[r[1]];
-        const auto& s = x[r[2]];
-        return mpq_class(p[0] * (q[1] * s[2] - q[2] * s[1]) - p[1] * (q[0] * s[2] - q[2] * s[0]) +
-                         p[2] * (q[0] * s[1] - q[1] * s[0]));
-    };
-    // det[x | lift] along column 4: sum over i of (-1)^(i + 3) lift_i minor_i; hullkit's sign is
-    // the opposite of that determinant's for a positively oriented a, b, c, d.
-    mpq_class det = 0;
-    for (int i = 0; i < 4; ++i) det += ((i + 3) % 2 == 0 ? 1 : -1) * lift[i] * minor(i);
-    return -det;
+    // hullkit's sign is the opposite of det[x | lift]'s for a positively oriented a, b, c, d.
+    return -exact_test::det4_by_last_column(x, lift);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "exact/gmp_determinant.hpp"
 #include "hullkit/predicates.hpp"
 
 namespace {
@@ -48,26 +49,15 @@ std::vector<double> square(double lo, double hi) { return {lo, lo, hi, lo, hi, h
 /// incircle's value (positive: d inside the counter-clockwise a, b, c) as the 4x4 determinant with
 /// rows (x, y, x^2 + y^2, 1), expanded along the last column: not the code's formula.
 mpq_class exact_incircle(const P2& a, const P2& b, const P2& c, const P2& d) {
-    const P2* rows[4] = {&a, &b, &c, &d};
-    mpq_class m[4][3];
+    const P2* points[4] = {&a, &b, &c, &d};
+    mpq_class rows[4][3];
+    const mpq_class ones[4] = {1, 1, 1, 1};
     for (int i = 0; i < 4; ++i) {
-        m[i][0] = (*rows[i])[0];
-        m[i][1] = (*rows[i])[1];
-        m[i][2] = m[i][0] * m[i][0] + m[i][1] * m[i][1];
+        rows[i][0] = (*points[i])[0];
+        rows[i][1] = (*points[i])[1];
+        rows[i][2] = rows[i][0] * rows[i][0] + rows[i][1] * rows[i][1];
     }
-    auto minor = [&](int skip) {
-        int r[3], n = 0;
-        for (int i = 0; i < 4; ++i)
-            if (i != skip) r[n++] = i;
-        const auto& p = m[r[0]];
-        const auto& q = m[r[1]];
-        const auto& s = m[r[2]];
-        return mpq_class(p[0] * (q[1] * s[2] - q[2] * s[1]) - p[1] * (q[0] * s[2] - q[2] * s[0]) +
-                         p[2] * (q[0] * s[1] - q[1] * s[0]));
-    };
-    mpq_class det = 0;  // sum over i of (-1)^(i + 3) minor_i: positive for d inside
-    for (int i = 0; i < 4; ++i) det += ((i + 3) % 2 == 0 ? 1 : -1) * minor(i);
-    return det;
+    return exact_test::det4_by_last_column(rows, ones);
 }
 
 mpq_class exact_orient(const P2& a, const P2& b, const P2& c) {

@@ -291,14 +291,14 @@ inline double orient2d_static_bound(double span) {
 /// orient2d and incircle that first try a semi-static bound for the whole point set
 /// (orient2d_static_bound / incircle_static_bound): the stage A determinant alone, without its
 /// permanent; the full predicate when the bound cannot tell. Always the exact sign.
-/// `exact_in_doubles` (with bound 0): the caller knows stage A is exact for this point set (a
-/// small lattice, native/src/exact/lattice.hpp), so a 0 is the answer, not a reason to go on.
+/// `exact_in_doubles`: the caller knows stage A is exact for this point set (a small lattice,
+/// native/src/exact/lattice.hpp), so its sign is the answer even inside the bound (0 included).
 inline int orient2d_semi_static(double bound, double ax, double ay, double bx, double by, double cx, double cy,
                                 bool exact_in_doubles = false) {
     const double det = orient2d_stage_a(ax, ay, bx, by, cx, cy).det;
     if (det > bound) return 1;
     if (-det > bound) return -1;
-    if (exact_in_doubles) return 0;
+    if (exact_in_doubles) return (det > 0) - (det < 0);
     return orient2d(ax, ay, bx, by, cx, cy);
 }
 inline int incircle_semi_static(double bound, double ax, double ay, double bx, double by, double cx, double cy,
@@ -306,7 +306,7 @@ inline int incircle_semi_static(double bound, double ax, double ay, double bx, d
     const double det = incircle_stage_a(ax, ay, bx, by, cx, cy, dx, dy).det;
     if (det > bound) return 1;
     if (-det > bound) return -1;
-    if (exact_in_doubles) return 0;
+    if (exact_in_doubles) return (det > 0) - (det < 0);
     return incircle(ax, ay, bx, by, cx, cy, dx, dy);
 }
 

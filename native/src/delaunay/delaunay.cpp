@@ -346,7 +346,7 @@ bool has_cocircular_edge(PointSpan2 p, const delaunay_detail::Mesh& mesh) {
     const std::uint32_t* twin = mesh.twin.data();
     const std::uint32_t ghost = mesh.ghost;
     const std::size_t count = mesh.vertex.size() / 3;
-    const double bound = mesh.lattice ? 0.0 : detail::incircle_static_bound(mesh.span);
+    const double bound = detail::incircle_static_bound(mesh.span);
     for (std::size_t t = 0; t < count; ++t) {
         const std::uint32_t* v = vertex + 3 * t;
         if (v[0] == ghost || v[1] == ghost || v[2] == ghost) continue;

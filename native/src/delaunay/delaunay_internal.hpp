@@ -132,7 +132,7 @@ struct Mesh {
     std::uint32_t ghost = 0;
     double span = 0;  ///< coordinate_span of the points
     /// The points lie on a small lattice (detail::plane_lattice_exact): orient2d and incircle are
-    /// exact in doubles, and the semi-static tests take bound 0 and `exact_in_doubles`.
+    /// exact in doubles, and the semi-static tests take `exact_in_doubles`.
     bool lattice = false;
     /// With Input::keep_marks: a number per triangle (slot), each below mark_limit, in memory
     /// already touched (the constrained triangulation's marks start there instead of in fresh
@@ -177,17 +177,16 @@ std::uint32_t visibility_walk(const std::vector<std::uint32_t>& vertex, const st
         while (vertex[e] == ghost || vertex[next(e)] == ghost) ++e;
         t = twin[e] / 3;  // the finite triangle across the ghost's hull edge
     }
-    // The edges in the order k = r, r + 1, r + 2 (mod 3) from a random first edge r, and each
-    // edge's successor: tables rather than remainders in the loop.
-    static constexpr std::uint8_t kFrom[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
-    static constexpr std::uint8_t kTo[3][3] = {{1, 2, 0}, {2, 0, 1}, {0, 1, 2}};
+    // The edges in the order r, r + 1, r + 2 (mod 3) from a random first edge r, each from corner
+    // kCycle[r + k] to kCycle[r + k + 1]: a table rather than remainders in the loop.
+    static constexpr std::uint8_t kCycle[6] = {0, 1, 2, 0, 1, 2};
     for (;;) {
         seed = seed * 1103515245u + 12345u;
         const std::uint32_t r = (seed >> 16) % 3;
         bool moved = false;
         for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::uint32_t e = 3 * t + kFrom[r][k];
-            if (right_of(vertex[e], vertex[3 * t + kTo[r][k]])) {
+            const std::uint32_t e = 3 * t + kCycle[r + k];
+            if (right_of(vertex[e], vertex[3 * t + kCycle[r + k + 1]])) {
                 t = twin[e] / 3;
                 moved = true;
                 break;

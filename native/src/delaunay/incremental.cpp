@@ -31,8 +31,8 @@ public:
     Triangulation(PointSpan2 points, double span, bool lattice, std::size_t spare_points)
         : p_(points),
           ghost_(static_cast<std::uint32_t>(points.count)),
-          incircle_bound_(lattice ? 0.0 : detail::incircle_static_bound(span)),
-          orient_bound_(lattice ? 0.0 : detail::orient2d_static_bound(span)),
+          incircle_bound_(detail::incircle_static_bound(span)),
+          orient_bound_(detail::orient2d_static_bound(span)),
           lattice_(lattice) {
         const std::size_t capacity = 2 * (points.count + spare_points) + 4;  // finite + ghost triangles
         detail::reserve_large(vertex_, 3 * capacity);  // on huge pages where large (large_array.hpp)
@@ -161,7 +161,7 @@ private:
     PointSpan2 p_;
     std::uint32_t ghost_;
     double incircle_bound_, orient_bound_;  // semi-static filters for this point set
-    bool lattice_;                          // stage A is exact (bounds 0)
+    bool lattice_;                          // stage A is exact: it decides inside the bounds too
     std::vector<std::uint32_t> vertex_;
     std::vector<std::uint32_t> twin_;
     std::vector<std::uint32_t> mark_;
