@@ -196,11 +196,13 @@ ConstrainedDelaunay build(PointSpan2 points, std::vector<Segment> segments, cons
         // Grouped by their lower end (a counting sort, stable: in order within a group); in each
         // group, the first segment to each upper end takes the later ones in.
         const std::size_t n = points.count;
-        std::vector<std::uint32_t> start(n + 1, 0), order(merged.size());
+        std::vector<std::uint32_t> start, order, first_to;  // first_to: within the group of `a`, 1 + the first segment to b
+        detail::resize_large(start, n + 1);
+        detail::resize_large(order, merged.size());
+        detail::resize_large(first_to, n);
         for (const Segment& piece : merged) ++start[piece.a];
         for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];  // start[a]: the end of group a
         for (std::size_t k = merged.size(); k-- > 0;) order[--start[merged[k].a]] = static_cast<std::uint32_t>(k);
-        std::vector<std::uint32_t> first_to(n, 0);  // within the group of `a`: 1 + the first segment to b
         for (std::size_t a = 0; a < n; ++a) {
             for (std::uint32_t j = start[a]; j < start[a + 1]; ++j) {
                 Segment& piece = merged[order[j]];
@@ -307,7 +309,7 @@ ConstrainedDelaunay triangulate_polygon(PointSpan2 points, const std::uint32_t* 
     if (points.count > std::numeric_limits<std::uint32_t>::max() / 8)
         return failure("too many points: " + std::to_string(points.count));
     std::vector<Segment> list;
-    list.reserve(points.count);
+    detail::reserve_populated(list, points.count, points.count);
     std::size_t begin = 0;
     for (std::size_t r = 0; r <= ring_count; ++r) {
         const std::size_t end = r < ring_count ? ring_starts[r] : points.count;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "delaunay_internal.hpp"
+#include "hull/large_array.hpp"
 #include "hullkit/constrained.hpp"
 #include "hullkit/predicates.hpp"
 
@@ -64,17 +65,17 @@ public:
         twin_ = std::move(mesh.twin);
         // The per-vertex and per-half-edge arrays with the room the others have (the points' and
         // the mesh's: Input::spare_points), so that refinement does not copy them as they grow.
-        out_.reserve(xy_.capacity() / 2);
+        detail::reserve_populated(out_, xy_.capacity() / 2, input_count_);
         out_.assign(input_count_, kGhost);
         for (std::uint32_t e = 0; e < vertex_.size(); ++e) {
             const std::uint32_t v = vertex_[e];
             vertex_[e] = v == mesh.ghost ? kGhost : original[v];
             if (v != mesh.ghost) out_[vertex_[e]] = e;
         }
-        edge_.reserve(vertex_.capacity());
+        detail::reserve_populated(edge_, vertex_.capacity(), vertex_.size());
         edge_.assign(vertex_.size(), 0);
         records_.assign(1, Record{0, 0, kGhost, kGhost});
-        region_.reserve(vertex_.capacity() / 3);
+        detail::reserve_populated(region_, vertex_.capacity() / 3, vertex_.size() / 3);
         region_.assign(vertex_.size() / 3, 0);
         // The marks start in the incremental mesh's (pages already touched), above its numbers.
         stamp_ = std::move(mesh.mark);
@@ -84,7 +85,7 @@ public:
     /// Room for the records of `count` segments (one each, unless they cross or meet points), and
     /// of the pieces refinement may split them into (one per spare point).
     void reserve_segments(std::size_t count) {
-        records_.reserve(records_.size() + count + (xy_.capacity() - xy_.size()) / 2);
+        detail::reserve_populated(records_, records_.size() + count + (xy_.capacity() - xy_.size()) / 2, records_.size() + count);
     }
 
     /// Inserts a segment and everything it turns into; false on failure (error set).
@@ -154,10 +155,10 @@ public:
             if (!written) region_[t] = kGhost;
             kept += written;
         }
-        out.triangles.resize(3 * kept);
-        out.halfedges.resize(out.triangles.size());
-        out.constrained.resize(out.triangles.size());
-        if (regions) out.triangle_region.resize(kept);
+        detail::resize_large(out.triangles, 3 * kept);
+        detail::resize_large(out.halfedges, out.triangles.size());
+        detail::resize_large(out.constrained, out.triangles.size());
+        if (regions) detail::resize_large(out.triangle_region, kept);
         std::uint32_t next = 0;
         for (std::size_t t = 0; t < t_count; ++t) {
             if (region_[t] == kGhost) continue;

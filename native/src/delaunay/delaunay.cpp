@@ -129,9 +129,9 @@ void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector
     const std::size_t n = p.count;
     // Every point's coordinates in curve order (one pass of scattered reads), then all work is
     // sequential. Distinct points are compacted into the front of the same arrays.
-    std::vector<std::uint32_t> order(n);
-    detail::reserve_large(local_xy, 2 * n);
-    local_xy.resize(2 * n);
+    std::vector<std::uint32_t> order;
+    detail::resize_large(order, n);
+    detail::resize_large(local_xy, 2 * n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t i = static_cast<std::uint32_t>(keyed[k]);
         order[k] = i;
@@ -140,10 +140,10 @@ void gather_distinct(PointSpan2 p, const Extent& box, Delaunay& out, std::vector
     }
     // Every point represents itself (a sequential fill) unless the loop below finds it a duplicate:
     // writing each entry there would scatter a write per point across the input-ordered array.
-    out.representative.resize(n);
+    detail::resize_large(out.representative, n);
     std::iota(out.representative.begin(), out.representative.end(), 0u);
     original.clear();
-    original.reserve(n);
+    detail::reserve_populated(original, n, n);
     std::size_t distinct = 0;  // distinct points so far, at the front of local_xy
     auto same_as = [&](std::size_t k, std::size_t j) {  // point at curve position k vs distinct j
         return local_xy[2 * k] == local_xy[2 * j] && local_xy[2 * k + 1] == local_xy[2 * j + 1];
@@ -296,10 +296,8 @@ void write_canonical(const std::vector<std::uint32_t>& local, const std::vector<
     }
     std::vector<std::uint32_t> position(count);
     for (std::size_t q = 0; q < count; ++q) position[slot_of[q]] = static_cast<std::uint32_t>(q);
-    detail::reserve_large(out.triangles, local.size());
-    detail::reserve_large(out.halfedges, local.size());
-    out.triangles.resize(local.size());
-    out.halfedges.resize(local.size());
+    detail::resize_large(out.triangles, local.size());
+    detail::resize_large(out.halfedges, local.size());
     for (std::size_t q = 0; q < count; ++q) {
         const std::size_t t = slot_of[q];
         for (int k = 0; k < 3; ++k) {
@@ -438,10 +436,8 @@ bool write_canonical_mesh(PointSpan2 p, const delaunay_detail::Mesh& mesh,
     // Pass 3: output corner j is mesh corner (low - j) mod 3 (clockwise from the lowest); output
     // half-edge j runs backwards along mesh half-edge (low + 2 - j) mod 3, so a mesh half-edge k of
     // triangle h is output half-edge (low_h + 5 - k) mod 3.
-    detail::reserve_large(out.triangles, 3 * finite);
-    detail::reserve_large(out.halfedges, 3 * finite);
-    out.triangles.resize(3 * finite);
-    out.halfedges.resize(3 * finite);
+    detail::resize_large(out.triangles, 3 * finite);
+    detail::resize_large(out.halfedges, 3 * finite);
     std::uint32_t* tri_out = out.triangles.data();
     std::int32_t* half_out = out.halfedges.data();
     run_both(
@@ -561,10 +557,8 @@ std::vector<std::uint64_t> hilbert_order(PointSpan2 p, const double* lo, const d
     const double width = hi[0] - lo[0], height = hi[1] - lo[1];
     const double sx = width > 0 ? 65535.0 / width : 0.0, sy = height > 0 ? 65535.0 / height : 0.0;
     std::vector<std::uint64_t> keyed, swap;  // on huge pages where they are large (large_array.hpp)
-    detail::reserve_large(keyed, n);
-    detail::reserve_large(swap, n);
-    keyed.resize(n);
-    swap.resize(n);
+    detail::resize_large(keyed, n);
+    detail::resize_large(swap, n);
     for (std::size_t i = 0; i < n; ++i) {
         double fx = (p[i][0] - lo[0]) * sx, fy = (p[i][1] - lo[1]) * sy;
         // A box narrower than 65535 / DBL_MAX makes the scale infinite (0 * inf at the low corner),

@@ -35,9 +35,15 @@ public:
           orient_bound_(detail::orient2d_static_bound(span)),
           lattice_(lattice) {
         const std::size_t capacity = 2 * (points.count + spare_points) + 4;  // finite + ghost triangles
-        detail::reserve_large(vertex_, 3 * capacity);  // on huge pages where large (large_array.hpp)
+        // On huge pages where large, the pages a plain triangulation fills mapped at once where
+        // not (large_array.hpp); the spare points' room stays unmapped until used.
+        const std::size_t filled = 2 * points.count + 4;
+        detail::reserve_large(vertex_, 3 * capacity);
         detail::reserve_large(twin_, 3 * capacity);
-        mark_.reserve(capacity);
+        detail::populate(vertex_.data(), 3 * filled * sizeof(std::uint32_t));
+        detail::populate(twin_.data(), 3 * filled * sizeof(std::uint32_t));
+        detail::reserve_populated(mark_, capacity, filled);
+        detail::reserve_populated(start_of_, points.count + 1, points.count + 1);
         start_of_.assign(points.count + 1, 0);
     }
 

@@ -530,11 +530,12 @@ bool Refiner::refine(const QualityOptions& options, std::vector<double> area2, i
         record.parent = static_cast<std::uint32_t>(parents_.size());
         parents_.push_back({m_.vertex_[e], m_.vertex_[next_edge(e)]});
     }
-    on_segment_.reserve(m_.xy_.capacity() / 2);  // the room the points have (Input::spare_points)
+    // The room the points have (Input::spare_points); the pages of those there are mapped at once.
+    detail::reserve_populated(on_segment_, m_.xy_.capacity() / 2, m_.xy_.size() / 2);
     on_segment_.assign(m_.xy_.size() / 2, kGhost);
     m_.track_ = true;
     m_.touched_.clear();
-    m_.touched_.reserve(m_.vertex_.size() / 3);
+    detail::reserve_populated(m_.touched_, m_.vertex_.size() / 3, m_.vertex_.size() / 3);
     // Room for every triangle in the flawed and bad lists before they reallocate: reserved
     // address space costs nothing until used, where growing by copies touches twice the pages.
     flawed_.reserve(m_.vertex_.size() / 3);

@@ -144,10 +144,8 @@ std::vector<std::uint64_t> hilbert_order(PointSpan p, const double* lo, const do
         scale[axis] = width > 0 ? 1023.0 / width : 0.0;
     }
     std::vector<std::uint64_t> keyed, swap;  // on huge pages where they are large (large_array.hpp)
-    detail::reserve_large(keyed, n);
-    detail::reserve_large(swap, n);
-    keyed.resize(n);
-    swap.resize(n);
+    detail::resize_large(keyed, n);
+    detail::resize_large(swap, n);
     constexpr std::size_t kBlock = std::size_t{1} << 16;
     detail::parallel_for(threads, (n + kBlock - 1) / kBlock, [&](std::size_t block) {
         for (std::size_t i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i) {

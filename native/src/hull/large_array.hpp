@@ -27,8 +27,11 @@
 //
 // How: arrays of at least kLargeArray bytes are mapped on their own (mmap), aligned to 2 MiB,
 // rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE unless turned off) and unmapped when freed;
-// smaller ones come from operator new as usual. Elsewhere (WebAssembly, other systems, sanitizer
-// builds) every array comes from operator new.
+// smaller ones come from operator new as usual; those from kPopulateArray bytes up that are about
+// to be filled have their pages mapped in one call first (populate: on the machine of Dec 2026 a
+// fresh page cost ~9.5 us mapped on first touch, ~4.5 us mapped in advance; the grid of 2500 holes
+// meshed went from 430 page faults to 59 in its first call). Elsewhere (WebAssembly, other
+// systems, sanitizer builds) every array comes from operator new and nothing is mapped in advance.
 //
 // A LargeArray's resize(n) and LargeArray(n) leave the new elements unwritten (the allocator
 // default-initializes them): each such array is written in full by its owner before any read,
@@ -36,6 +39,7 @@
 // thread. Sizing with an explicit value (resize(n, v), LargeArray(n, v), assign) writes it.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -195,6 +199,37 @@ struct Prefault {
     }
 };
 
+/// Arrays from this many bytes up (and below kLargeArray) have their pages mapped in one call
+/// before they are filled: populate().
+inline constexpr std::size_t kPopulateArray = std::size_t{32} << 10;
+
+/// Maps the 4 KiB pages under [memory, memory + bytes) in one call, for an array about to be
+/// written from its start: a fresh page mapped on its first touch costs a fault each (about 10 us
+/// on the benchmark machines of Dec 2026), mapped in advance about half that (MADV_POPULATE_WRITE
+/// writes nothing; pages already mapped stay as they are). Only for arrays of kPopulateArray bytes
+/// up to kLargeArray: smaller ones mostly reuse the heap's pages, larger ones are on huge pages.
+/// Where the system lacks it, nothing happens.
+inline void populate(const void* memory, std::size_t bytes) {
+#if HULLKIT_HUGE_PAGES && defined(MADV_POPULATE_WRITE)
+    if (bytes < kPopulateArray || (bytes >= kLargeArray && huge_pages())) return;
+    constexpr std::uintptr_t kPage = 4096;
+    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(memory) / kPage * kPage;
+    const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(memory) + bytes + kPage - 1) / kPage * kPage;
+    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+    (void)memory;
+    (void)bytes;
+#endif
+}
+
+/// Reserves room for `capacity` elements and maps the pages of the first `used` at once
+/// (populate): for an array that will be filled to about `used` and may grow to `capacity`.
+template <class T, class A>
+void reserve_populated(std::vector<T, A>& v, std::size_t capacity, std::size_t used) {
+    v.reserve(capacity);
+    populate(v.data(), std::min(used, v.capacity()) * sizeof(T));
+}
+
 /// Gives the whole pages inside [begin, end) back to the system (their contents are lost: they
 /// read as zeros when touched again), where the system allows it (Linux); elsewhere nothing. For
 /// an array rewritten in place from its front while its back is read and no longer needed.
@@ -220,6 +255,15 @@ template <class T>
 void reserve_large(std::vector<T>& v, std::size_t n) {
     v.reserve(n);
     advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+/// Sizes a std::vector to n elements (value-initialized), advised onto huge pages when large and
+/// its pages mapped at once when of middle size (populate).
+template <class T>
+void resize_large(std::vector<T>& v, std::size_t n) {
+    reserve_large(v, n);
+    populate(v.data(), n * sizeof(T));
+    v.resize(n);
 }
 
 /// A vector for working arrays that may grow to the size of the input.
