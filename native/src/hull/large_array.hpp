@@ -199,9 +199,10 @@ struct Prefault {
     }
 };
 
-/// Arrays from this many bytes up (and below kLargeArray) have their pages mapped in one call
-/// before they are filled: populate().
-inline constexpr std::size_t kPopulateArray = std::size_t{32} << 10;
+/// Arrays from this many bytes (two pages) up, and below kLargeArray, have their pages mapped in
+/// one call before they are filled: populate(). (From 32 KiB up instead: the grid of 256 holes
+/// meshed took 25 more page faults in its first call, 235 against 210 for the whole process.)
+inline constexpr std::size_t kPopulateArray = std::size_t{8} << 10;
 
 /// Maps the 4 KiB pages under [memory, memory + bytes) in one call, for an array about to be
 /// written from its start: a fresh page mapped on its first touch costs a fault each (about 10 us
