@@ -35,8 +35,9 @@ public:
           orient_bound_(detail::orient2d_static_bound(span)),
           lattice_(lattice) {
         const std::size_t capacity = 2 * (points.count + spare_points) + 4;  // finite + ghost triangles
-        // On huge pages where large, the pages a plain triangulation fills mapped at once where
-        // not (large_array.hpp); the spare points' room stays unmapped until used.
+        // Large arrays go on huge pages; smaller ones have the pages that a triangulation without
+        // added points fills mapped in one call (large_array.hpp). The spare points' room stays
+        // unmapped until used.
         const std::size_t filled = 2 * points.count + 4;
         detail::reserve_large(vertex_, 3 * capacity);
         detail::reserve_large(twin_, 3 * capacity);
