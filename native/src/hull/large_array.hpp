@@ -29,9 +29,10 @@
 // rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE unless turned off) and unmapped when freed;
 // smaller ones come from operator new as usual; those from kPopulateArray bytes up that are about
 // to be filled have their pages mapped in one call first (populate: on the machine of Dec 2026 a
-// fresh page cost ~9.5 us mapped on first touch, ~4.5 us mapped in advance; the grid of 2500 holes
-// meshed went from 430 page faults to 59 in its first call). Elsewhere (WebAssembly, other
-// systems, sanitizer builds) every array comes from operator new and nothing is mapped in advance.
+// fresh page cost ~9.5 us mapped on first touch, ~4.5 us mapped in advance; with arrays from
+// 32 KiB up, the grid of 2500 holes meshed went from 430 page faults to 59 in its first call).
+// Elsewhere (WebAssembly, other systems, sanitizer builds) every array comes from operator new and
+// nothing is mapped in advance.
 //
 // A LargeArray's resize(n) and LargeArray(n) leave the new elements unwritten (the allocator
 // default-initializes them): each such array is written in full by its owner before any read,
@@ -199,16 +200,17 @@ struct Prefault {
     }
 };
 
-/// Arrays from this many bytes (two pages) up, and below kLargeArray, have their pages mapped in
-/// one call before they are filled: populate(). (From 32 KiB up instead: the grid of 256 holes
-/// meshed took 25 more page faults in its first call, 235 against 210 for the whole process.)
+/// Arrays from this many bytes (two pages) up, and below kLargeArray unless huge pages are off,
+/// have their pages mapped in one call before they are filled: populate(). (From 32 KiB up instead, the process meshing the
+/// grid of 256 holes once took 25 more page faults: 235 against 210.)
 inline constexpr std::size_t kPopulateArray = std::size_t{8} << 10;
 
 /// Maps the 4 KiB pages under [memory, memory + bytes) in one call, for an array about to be
 /// written from its start: a fresh page mapped on its first touch costs a fault each (about 10 us
 /// on the benchmark machines of Dec 2026), mapped in advance about half that (MADV_POPULATE_WRITE
 /// writes nothing; pages already mapped stay as they are). Only for arrays of kPopulateArray bytes
-/// up to kLargeArray: smaller ones mostly reuse the heap's pages, larger ones are on huge pages.
+/// and more, and below kLargeArray unless huge pages are off: smaller ones mostly reuse the heap's
+/// pages, larger ones are on huge pages.
 /// Where the system lacks it, nothing happens.
 inline void populate(const void* memory, std::size_t bytes) {
 #if HULLKIT_HUGE_PAGES && defined(MADV_POPULATE_WRITE)
