@@ -3,8 +3,9 @@
 # module (build/wasm) and the page as a static site (build/site). Arguments pick among: native,
 # cli (the library and the hullkit command alone, in build/native), wasm, site (build/site from
 # the wasm build and three.js: scripts/build-site.js, docs/page.md; after wasm), asan (the C++
-# tests under AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan), tsan (the C++ test
-# executables under ThreadSanitizer, in build/tsan; scripts/test.sh runs their "[threads]" tests).
+# tests under AddressSanitizer + UndefinedBehaviorSanitizer, in build/asan), tsan (the test sources
+# with "[threads]" tests in one executable under ThreadSanitizer, build/tsan/tests/
+# hullkit_threads_tests; scripts/test.sh runs those tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=("$@")
@@ -37,18 +38,19 @@ for target in "${targets[@]}"; do
       sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
       asan_cxx=g++ asan_debug=-g1
       command -v clang++ >/dev/null && asan_cxx=clang++ asan_debug=-gline-tables-only
-      cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF \
+      cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF -DHULLKIT_CGAL_TESTS=OFF \
         -DCMAKE_CXX_COMPILER="$asan_cxx" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 $asan_debug -DNDEBUG" \
         -DCMAKE_CXX_FLAGS="$sanitize" -DCMAKE_EXE_LINKER_FLAGS="$sanitize" >/dev/null
       cmake --build build/asan -j "$jobs"
       ;;
     tsan)
-      # clang's ThreadSanitizer on the test executables (the threaded tests run from them).
+      # clang's ThreadSanitizer on one executable of the test sources that hold [threads] tests.
       tsan="-fsanitize=thread -fno-omit-frame-pointer"
-      cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF \
+      cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHULLKIT_BENCH=OFF -DHULLKIT_CGAL_TESTS=OFF \
+        -DHULLKIT_THREADS_TESTS=ON \
         -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
         -DCMAKE_CXX_FLAGS="$tsan" -DCMAKE_EXE_LINKER_FLAGS="$tsan" >/dev/null
-      cmake --build build/tsan -j "$jobs" --target hullkit_tests hullkit_route_tests hullkit_delaunay_tests
+      cmake --build build/tsan -j "$jobs" --target hullkit_threads_tests
       ;;
     *)
       echo "build.sh: unknown target \"$target\" (known: native, cli, wasm, site, asan, tsan)" >&2

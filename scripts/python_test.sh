@@ -17,5 +17,9 @@ venv=build/python-venv
 rm -rf "$venv" python/build python/hullkit.egg-info
 "$python" -m venv --system-site-packages "$venv"
 HULLKIT_BUILD_JOBS=$(nproc) "$venv/bin/pip" install --quiet --no-build-isolation --no-index ./python
-# From outside the source tree, so that `import hullkit` is the installed package.
-(cd build && "../$venv/bin/python" -m pytest -q -p no:cacheprovider ../tests/python)
+# From outside the source tree, so that `import hullkit` is the installed package; on every core
+# with pytest-xdist where it is installed (scripts/setup.sh installs it: the tests are independent
+# of each other, and on 2 cores the suite takes about half the time).
+workers=()
+"$venv/bin/python" -c "import xdist" 2>/dev/null && workers=(-n "$(nproc)")
+(cd build && "../$venv/bin/python" -m pytest -q -p no:cacheprovider "${workers[@]}" ../tests/python)

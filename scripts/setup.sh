@@ -23,6 +23,7 @@ debian_packages=(
   # The Python package (python/, built by pip from the C++ sources; scripts/python_test.sh):
   python3-dev python3-venv python3-numpy python3-pybind11 pybind11-dev python3-setuptools
   python3-pip python3-pytest python3-scipy python3-dask python3-distributed
+  python3-pytest-xdist    # the Python tests on every core (scripts/python_test.sh)
   python3-mypy            # tests/python/test_stubs.py: stubtest and mypy --strict on the type stubs
   python3-matplotlib      # hullkit.spatial's plot helpers (voronoi_plot_2d, ...) and their tests
 )

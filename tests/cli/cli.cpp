@@ -799,7 +799,7 @@ TEST_CASE("cli: a binary file is named as such, without echoing its bytes") {
     for (unsigned char c : piped.err) CHECK((c == '\n' || (c >= 0x20 && c < 0x7f)));
 }
 
-TEST_CASE("cli: a PNG is named as what it is, exit 2, no bytes echoed; a PLY and an ASCII STL on stdin are read") {
+TEST_CASE("cli: a PNG is named as what it is, exit 2, no bytes echoed, a PLY and an ASCII STL on stdin are read") {
     TempDir dir("hullkit-cli");
     // A PNG's signature and the start of its IHDR chunk.
     const std::string png = dir.file("picture.png");

@@ -106,7 +106,7 @@ void require_drawn_and_cleared(const std::string& terminal, const std::string& u
 
 }  // namespace
 
-TEST_CASE("cli progress: hull, delaunay and route draw a progress line on a terminal and clear it; --quiet and files get none",
+TEST_CASE("cli progress: hull, delaunay and route draw a progress line on a terminal and clear it, --quiet and files get none",
           "[cli]") {
     TempDir dir("hullkit-progress");
     const std::string cloud = dir.file("cloud.txt"), plane = dir.file("plane.txt");

@@ -17,6 +17,7 @@
 
 #include "cli_support.hpp"
 #include "hull/hull_checks.hpp"
+#include "sanitized.hpp"
 
 using hullkit_test::Cloud;
 using hullkit_test::read_text;
@@ -71,17 +72,6 @@ long peak_kib(const std::vector<std::string>& args, int* exit_code) {
     REQUIRE(wait4(child, &status, 0, &usage) == child);
     *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
     return usage.ru_maxrss;
-}
-
-bool sanitized() {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-    return true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-    return true;
-#endif
-#endif
-    return false;
 }
 
 }  // namespace
@@ -171,7 +161,7 @@ TEST_CASE("cli stream: a file over the memory limit is hulled with bounded peak 
     REQUIRE(code == 0);
     CHECK(read_text(dir.file("streamed.off")) == read_text(dir.file("whole.off")));
     INFO("peak memory: whole " << whole_kib / 1024 << " MB, streamed under --memory 8: " << streamed_kib / 1024 << " MB");
-    if (!sanitized()) {  // the sanitizers' shadow memory says nothing about ours
+    if (!hullkit_test::kSanitized) {  // the sanitizers' shadow memory says nothing about ours
         CHECK(whole_kib > 48 * 1024);
         CHECK(streamed_kib < 32 * 1024);
     }

@@ -87,7 +87,7 @@ TEST_CASE("hullkit triangulate: .poly removes the exterior unless --convex", "[c
     CHECK(hull_area == mpq_class(7, 2));
 }
 
-TEST_CASE("hullkit triangulate: a bow-tie's crossing is added; every output format", "[cli][constrained]") {
+TEST_CASE("hullkit triangulate: a bow-tie's crossing is added, every output format", "[cli][constrained]") {
     TempDir dir("hullkit-triangulate");
     write_text(dir.file("bowtie.txt"), "0 0\n2 2\n2 0\n0 2\n");
     const RunResult stats = run_cli(dir, {"triangulate", dir.file("bowtie.txt"), "--format", "json", "--stats"});

@@ -296,7 +296,7 @@ TEST_CASE("delaunay: the output stage's second thread gives the same arrays (1 t
     }
 }
 
-TEST_CASE("delaunay: progress counts the distinct points inserted, rising to the total once; arrays unchanged",
+TEST_CASE("delaunay: progress counts the distinct points inserted, rising to the total once, arrays unchanged",
           "[threads]") {
     // 200 000 points with 1000 exact repeats: the total is the number of distinct points.
     std::vector<double> xy = uniform_points(200000, 17);

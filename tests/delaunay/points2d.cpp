@@ -26,7 +26,7 @@ const std::string kNotSupported = " is not supported by the 2D point reader (rea
 
 }  // namespace
 
-TEST_CASE("points2d: commas, a byte-order mark, a header row; no points is no error", "[points2d]") {
+TEST_CASE("points2d: commas, a byte-order mark, a header row, no points is no error", "[points2d]") {
     std::vector<std::size_t> lines;
     const hullkit::Points2Result csv =
         hullkit::parse_points_2d("\xEF\xBB\xBF# exported\n\"x\",\"y\"\n1,2\n3 , 4\n\n5,6,7\n", "p.csv", &lines);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "delaunay_checks.hpp"
+#include "sanitized.hpp"
 
 using delaunay_test::q;
 using hullkit::Delaunay;
@@ -79,7 +80,8 @@ TEST_CASE("delaunay_locate: the lowest-indexed triangle holding each query, bary
     std::mt19937_64 rng(32);
     std::uniform_real_distribution<double> u(-2, 12);
     std::vector<double> queries;
-    for (int i = 0; i < 6000; ++i) {
+    // (A quarter of the queries under the sanitizers: tests/sanitized.hpp.)
+    for (int i = 0; i < (hullkit_test::kSanitized ? 1500 : 6000); ++i) {
         // A third at exact vertices, edge midpoints and cell centres of the grid (on edges, at
         // corners: held by several triangles), a third at input points, a third anywhere.
         if (i % 3 == 0) queries.insert(queries.end(), {0.5 * std::floor(2 * u(rng)), 0.5 * std::floor(2 * u(rng))});
@@ -154,7 +156,7 @@ TEST_CASE("delaunay_locate: the lowest-indexed triangle holding each query, bary
     }
 }
 
-TEST_CASE("delaunay_locate: collinear, one point, none; errors name the query", "[query]") {
+TEST_CASE("delaunay_locate: collinear, one point, none, errors name the query", "[query]") {
     hullkit::DelaunayQueryOptions options;
     options.nearest = options.barycentric = true;
     const std::vector<double> line = {0, 0, 3, 3, 1, 1, 2, 2, 1, 1};
@@ -448,7 +450,8 @@ TEST_CASE("delaunay_voronoi_diagram: vertices per cocircular group, ridges, cell
     std::mt19937_64 rng(77);
     std::uniform_real_distribution<double> u(-1, 1);
     std::vector<double> many;
-    for (int k = 0; k < 40000; ++k) many.insert(many.end(), {u(rng), u(rng)});
+    // (10 000 under the sanitizers, tests/sanitized.hpp: still several chunks of triangles.)
+    for (int k = 0; k < (hullkit_test::kSanitized ? 10000 : 40000); ++k) many.insert(many.end(), {u(rng), u(rng)});
     for (int j = 0; j < 60; ++j)
         for (int i = 0; i < 60; ++i) many.insert(many.end(), {2 + i / 16.0, j / 16.0});  // a grid beside them
     for (std::size_t input = 0; input < inputs.size(); ++input) {

@@ -190,7 +190,7 @@ TEST_CASE("delaunay3 furthest_site: grids and integer points on a sphere (ties),
     }
 }
 
-TEST_CASE("delaunay3 furthest_site: many points on an ellipsoid cross the partitions; the same arrays on any threads",
+TEST_CASE("delaunay3 furthest_site: many points on an ellipsoid cross the partitions, the same arrays on any threads",
           "[delaunay3][furthest][threads]") {
     // 70 000 points on an ellipsoid are all extreme: the last rounds are large enough to be cut
     // into partitions (the threads), whose walks start outside the hull.

@@ -132,7 +132,7 @@ TEST_CASE("insphere: cospherical integer points and their neighbours one ulp awa
     CHECK(counts.stage[2] + counts.stage[3] > 0);      // the 0.1 scale makes differences inexact
 }
 
-TEST_CASE("insphere: points on a sphere up to rounding (stage C decides them; GMP agrees)", "[exact]") {
+TEST_CASE("insphere: points on a sphere up to rounding (stage C decides them, GMP agrees)", "[exact]") {
     // Unit vectors rounded to doubles, at several scales and centres: five of them are cospherical
     // up to the rounding of their coordinates, so the determinant is a few eps times its permanent
     // and the filter cannot decide. Tuples of far-apart points (a Delaunay tetrahedralization of a

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "hull_checks.hpp"
@@ -122,13 +123,12 @@ TEST_CASE("planes: powers of two scale the offsets and leave the normals' bits a
     }
 }
 
-TEST_CASE("planes: a polygon's planes are its own, on the side of Hull::normal; bad corners throw") {
-    // A hexagon in a tilted plane.
+TEST_CASE("planes: a polygon's planes are its own, on the side of Hull::normal, bad corners throw") {
+    // A hexagon in a tilted plane, exactly: z = x / 2 - y / 4 + 2 at integer x and y (a hexagon of
+    // cos and sin values is not coplanar once rounded, and its exact hull is a solid).
     std::vector<double> xyz;
-    for (int k = 0; k < 6; ++k) {
-        const double x = std::cos(k * 1.0471975511965976), y = std::sin(k * 1.0471975511965976);
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}})
         xyz.insert(xyz.end(), {x, y, 0.5 * x - 0.25 * y + 2});
-    }
     const hullkit::Hull hull = hullkit::hull(hullkit::PointSpan(xyz));
     REQUIRE(hull.dimension == 2);
     const std::vector<double> planes = hullkit::plane_equations(hullkit::PointSpan(xyz), hull);

@@ -149,7 +149,7 @@ TEST_CASE("gltf: the node hierarchy's transforms (TRS and matrix) are applied ex
     CHECK(hullkit::read_mesh(embedded("\"scene\": 1,"), "one.gltf").xyz == std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1});
 }
 
-TEST_CASE("gltf: without scenes every mesh is read as it is; unindexed triangles", "[gltf]") {
+TEST_CASE("gltf: without scenes every mesh is read as it is, unindexed triangles", "[gltf]") {
     std::string bin;
     for (float v : {0.5f, 0.0f, 0.0f, 0.0f, 0.25f, 0.0f, 0.0f, 0.0f, -2.0f}) append(&bin, v);
     const std::string json = R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
@@ -285,7 +285,7 @@ TEST_CASE("gltf: errors name the file and what is wrong", "[gltf]") {
     CHECK(error_of(cycle, "cycle.gltf").rfind("cycle.gltf: the node hierarchy has a cycle", 0) == 0);
 }
 
-TEST_CASE("gltf: hullkit hull reads .gltf/.glb and writes .glb; route reads glTF meshes", "[gltf][cli]") {
+TEST_CASE("gltf: hullkit hull reads .gltf/.glb and writes .glb, route reads glTF meshes", "[gltf][cli]") {
     hullkit_test::TempDir dir("hullkit-gltf-cli");
     // A cube's corners and its centre (last), all exact in float.
     std::string obj;

@@ -97,7 +97,7 @@ TEST_CASE("cli route: a cube into a wall, first contact exact", "[cli_route]") {
     require_bracket(report_of(run_scene(dir, cube_scene("[[0,0,0],[5,0,0]]", 0.5)))["legs"][0], 0.3);
 }
 
-TEST_CASE("cli route: clear legs report their clearance; exit 0", "[cli_route]") {
+TEST_CASE("cli route: clear legs report their clearance, exit 0", "[cli_route]") {
     TempDir dir("hullkit-route");
     // Moving along y, 2 away from the wall all the time; then along z, still 2 away.
     RunResult run = run_scene(dir, cube_scene("[[0,0,0],[0,5,0],[0,5,3]]", 0.25));
@@ -201,7 +201,7 @@ TEST_CASE("cli route: a mesh file with unknown OBJ records gives a warning line,
     CHECK(quiet.err.empty());
 }
 
-TEST_CASE("cli route: --threads 1 and --threads 3 print the same report; --quiet", "[cli_route][threads]") {
+TEST_CASE("cli route: --threads 1 and --threads 3 print the same report, --quiet", "[cli_route][threads]") {
     TempDir dir("hullkit-route");
     // 300 legs zigzagging through the wall and beside it (hits, clear legs, start overlaps), so
     // that three threads share the legs; and the crane scene.

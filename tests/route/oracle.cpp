@@ -18,6 +18,7 @@
 
 #include "hullkit/route.hpp"
 #include "random_scenes.hpp"
+#include "sanitized.hpp"
 
 using namespace hullkit;
 
@@ -368,24 +369,12 @@ struct Oracle {
 
 }  // namespace
 
-#if defined(__SANITIZE_ADDRESS__)  // GCC
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)  // clang
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
 TEST_CASE("route: randomized oracle, 10 000 exact static samples per leg") {
     std::mt19937_64 rng(route_test::kRandomSceneSeed);
     int hits = 0, clears = 0, starts = 0, checked_clearances = 0;
-    // Under the sanitizers (about ten times slower) 10 of the 40 scenes: that run looks for memory
-    // errors and undefined behaviour; the plain build checks the answers on all 40.
-    const int scenes = kSanitized ? 10 : 40;
+    // Under the sanitizers 4 of the 40 scenes (tests/sanitized.hpp); the plain build checks the
+    // answers on all 40.
+    const int scenes = hullkit_test::kSanitized ? 4 : 40;
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
         // The oracle draws its rays from the same generator, so each scene follows the oracle's
         // run on the one before.

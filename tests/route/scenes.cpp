@@ -165,7 +165,7 @@ TEST_CASE("route: an obstacle entirely inside the swept hull is a hit") {
     });
 }
 
-TEST_CASE("route: the traverse inside a closed vessel starts overlapping; an open one is clear") {
+TEST_CASE("route: the traverse inside a closed vessel starts overlapping, an open one is clear") {
     // The cube [0,1]^3 inside the vessel [-5,6]^3 moves by (1, 1, 1).
     both_offsets(route_test::vessel_scene(true), [](const RouteReport& r, double) {
         REQUIRE(r.ok());

@@ -161,7 +161,7 @@ Scene crane_scene() {
 
 }  // namespace
 
-TEST_CASE("threads: the report comparison sees one bit and the sign of zero; NaN equals NaN", "[threads]") {
+TEST_CASE("threads: the report comparison sees one bit and the sign of zero, NaN equals NaN", "[threads]") {
     const RouteReport a = check_route(route_test::touching_start_scene(), RouteOptions{});
     REQUIRE(a.legs.size() == 2);
     REQUIRE(std::isnan(a.legs[0].sampled_fraction));  // no samples: NaN

@@ -15,6 +15,7 @@
 #include "hullkit/scene_io.hpp"
 #include "random_scenes.hpp"
 #include "route_support.hpp"
+#include "sanitized.hpp"
 
 using namespace hullkit;
 using Quat = std::array<double, 4>;
@@ -388,18 +389,6 @@ Quat random_turn(std::mt19937_64& rng, const Quat& from) {
             from[0] * t[3] + from[1] * t[2] - from[2] * t[1] + from[3] * t[0]};
 }
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSlowBuild = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-constexpr bool kSlowBuild = true;
-#else
-constexpr bool kSlowBuild = false;
-#endif
-#else
-constexpr bool kSlowBuild = false;
-#endif
-
 }  // namespace
 
 TEST_CASE("turning: the bound: a point stays within r (theta dt)^2 / 8 of its end poses' segment", "[turning]") {
@@ -484,7 +473,7 @@ TEST_CASE("turning: randomized oracle, 20 000 static poses per turning leg", "[t
     constexpr int kPoses = 20000;
     std::mt19937_64 rng(route_test::kRandomSceneSeed + 2);
     int hits = 0, clears = 0, starts = 0, grazes = 0;
-    const int scenes = kSlowBuild ? 8 : 60;
+    const int scenes = hullkit_test::kSanitized ? 8 : 60;
     for (int scene_index = 0; scene_index < scenes; ++scene_index) {
         const route_test::RandomScene random = route_test::random_scene(rng, scene_index);
         Scene scene = random.scene;
