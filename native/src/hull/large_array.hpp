@@ -53,13 +53,7 @@
 
 // Under AddressSanitizer or ThreadSanitizer large arrays come from operator new too, so that the
 // sanitizers see them (they do not watch memory mapped by hand).
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define HULLKIT_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define HULLKIT_SANITIZED 1
-#endif
-#endif
+#include "sanitizer_build.hpp"
 
 #if defined(__linux__) && !defined(__EMSCRIPTEN__) && !defined(HULLKIT_SANITIZED)
 #include <sys/mman.h>
