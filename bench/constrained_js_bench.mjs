@@ -1,7 +1,7 @@
 // Times one JavaScript polygon / constrained triangulation implementation on one input of
 // bench/constrained_inputs.mjs in a fresh Node process, checks what it returned, and prints one JSON line.
 //
-//   node --expose-gc bench/constrained_js_bench.mjs --impl IMPL --input bench/out/constrained/NAME.json [--runs 5] [--budget 60]
+//   node --expose-gc bench/constrained_js_bench.mjs --impl IMPL --input bench/out/constrained/NAME.json [--runs 5] [--budget 60] [--no-check]
 //
 // IMPL, on a polygon (flat coordinates + hole start indices, earcut's arguments):
 //   hullkit        hullkit's WebAssembly build through its public API (wasm/hullkit.js):
@@ -29,7 +29,9 @@
 // After the timed calls, untimed: the first call's triangles are checked (bench/constrained_common.mjs:
 // a triangulation of exactly the polygon, or of the graph's hull keeping every segment) and the line
 // gets "verdict": "ok" | "wrong" (with "reason") | "exception" (a call threw; "error" has the message)
-// | "not available" | "not applicable".
+// | "not available" | "not applicable". --no-check skips the check ("verdict": "unchecked"): the extra
+// fresh processes bench/constrained_run.sh runs for a median of first calls, whose result the
+// first process checked.
 // Output: {"impl", "input", "kind", "n", "first", "runs", "warm", "triangles", "verdict", "reason",
 // "area_error", "t_junctions" (polygons: places where a vertex lies on another triangle's edge; the
 // verdict stays ok, the report marks them), "peak_rss_mb", "detail"}.
@@ -45,7 +47,7 @@ const IMPLS = ['hullkit', 'earcut', 'constrainautor', 'cdt2d', 'poly2tri'];
 
 function usage(message) {
   console.error(`constrained_js_bench: ${message}`);
-  console.error(`usage: node bench/constrained_js_bench.mjs --impl ${IMPLS.join('|')} --input FILE.json [--runs 5] [--budget 60]`);
+  console.error(`usage: node bench/constrained_js_bench.mjs --impl ${IMPLS.join('|')} --input FILE.json [--runs 5] [--budget 60] [--no-check]`);
   process.exit(2);
 }
 
@@ -53,7 +55,10 @@ let values;
 try {
   ({ values } = parseArgs({
     args: process.argv.slice(2),
-    options: { impl: { type: 'string' }, input: { type: 'string' }, runs: { type: 'string', default: '5' }, budget: { type: 'string', default: '60' } },
+    options: {
+      impl: { type: 'string' }, input: { type: 'string' }, runs: { type: 'string', default: '5' }, budget: { type: 'string', default: '60' },
+      'no-check': { type: 'boolean', default: false },
+    },
   }));
 } catch (error) {
   usage(error.message);
@@ -261,6 +266,11 @@ for (let k = 0; k < runs && (k === 0 || total < budget); k++) {
   if (k === 0) firstResult = result;
 }
 const peak = process.resourceUsage().maxRSS / 1024;
+if (values['no-check']) {
+  // One more fresh process for a median of first calls (bench/constrained_run.sh): the result was checked in the first.
+  emit({ first: times[0], runs: times, warm: median(times.slice(1)), verdict: 'unchecked', peak_rss_mb: peak, detail: impls.detail });
+  process.exit(0);
+}
 let check;
 try {
   const { triangles, coords } = impls.triangles(firstResult);

@@ -38,9 +38,12 @@
 #   HULLKIT_BENCH_TIMEOUT=S   stop a process after S seconds (default 600; quick 20); the meshes get
 #                             a fifth of it, at least 10 s (refinement can run away on tiny input angles)
 #   HULLKIT_BENCH_FRESH_ROUNDS=K  fresh processes per quality mesh and refinement, CGAL and hullkit
-#                             taking turns; their headline is the median of the K first calls (default
-#                             3; quick mode 1 unless set). The first process also gives the warm runs
-#                             and the checked mesh.
+#                             taking turns, and per polygon of 10^4 vertices and more for the wasm
+#                             triangulatePolygon and earcut, taking turns; their headline is the median
+#                             of the K first calls (default 7; quick mode 1 unless set). The first
+#                             process also gives the warm runs and the checked result. (Seven, not
+#                             three: a 10^3-vertex mesh takes a millisecond, and one process in three
+#                             meeting a slow moment of this machine moved its ratio from 0.45x to 0.6x.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=bench/out/constrained
@@ -50,7 +53,7 @@ build=${HULLKIT_BENCH_BUILD:-build/bench}
 if [ "$quick" = 1 ]; then timeout_s=${HULLKIT_BENCH_TIMEOUT:-20}; else timeout_s=${HULLKIT_BENCH_TIMEOUT:-600}; fi
 mesh_timeout_s=$((timeout_s / 5 > 10 ? timeout_s / 5 : 10))
 fresh_rounds=${HULLKIT_BENCH_FRESH_ROUNDS:-}
-if [ -z "$fresh_rounds" ]; then if [ "$quick" = 1 ]; then fresh_rounds=1; else fresh_rounds=3; fi; fi
+if [ -z "$fresh_rounds" ]; then if [ "$quick" = 1 ]; then fresh_rounds=1; else fresh_rounds=7; fi; fi
 started=$(date +%s)
 load=$(cut -d " " -f 1 /proc/loadavg 2>/dev/null || echo "")
 say() { printf '%s\n' "$*" >&2; }
@@ -212,7 +215,19 @@ mesh_line() {
 first_of() {
   local line
   line=$(run_line "$1" "$2" "$mesh_timeout_s" "$3" --impl "$1" --input "$out/$2.json" --runs 1 --budget 30)
-  node -e 'const r = JSON.parse(process.argv[1]); if (!r.error && r.first != null) console.log(r.first)' "$line"
+  first_in "$line"
+}
+
+# first_in LINE: the line's first call, or nothing when it has none.
+first_in() {
+  node -e 'const r = JSON.parse(process.argv[1]); if (!r.error && r.first != null) console.log(r.first)' "$1"
+}
+
+# js_command IMPL INPUT RUNS [ARGS...]: the command of one JavaScript process.
+js_command() {
+  local impl=$1 input=$2 runs=$3
+  shift 3
+  echo node --expose-gc --max-old-space-size=8192 bench/constrained_js_bench.mjs --impl "$impl" --input "$out/$input.json" --runs "$runs" --budget 60 "$@"
 }
 
 # with_median_first LINE [FIRST...]: LINE with first_each (its own first call, then the FIRSTs) and,
@@ -274,9 +289,29 @@ done
 say "constrained bench: JavaScript runs (Node $(node --version))"
 for input in "${polygons[@]}" "${graphs[@]}"; do
   case $input in graph-*) impls=(hullkit constrainautor cdt2d) ;; *) impls=(hullkit earcut constrainautor cdt2d poly2tri) ;; esac
+  # The target's pair on the large polygons: more fresh processes, taking turns (FRESH_ROUNDS).
+  case $input in graph-*) paired=0 ;; *-1e4 | *-1e5) paired=1 ;; *) paired=0 ;; esac
+  hullkit_js="" earcut_js=""
   for impl in "${impls[@]}"; do
-    record js "$(run_line "$impl" "$input" "$timeout_s" node --expose-gc --max-old-space-size=8192 bench/constrained_js_bench.mjs --impl "$impl" --input "$out/$input.json" --runs "$(runs_for "$input" js)" --budget 60)"
+    # shellcheck disable=SC2046  # (js_command's words)
+    line=$(run_line "$impl" "$input" "$timeout_s" $(js_command "$impl" "$input" "$(runs_for "$input" js)"))
+    case "$paired:$impl" in
+      1:hullkit) hullkit_js=$line ;;
+      1:earcut) earcut_js=$line ;;
+      *) record js "$line" ;;
+    esac
   done
+  if [ "$paired" = 1 ]; then
+    hullkit_firsts=() earcut_firsts=()
+    for ((round = 1; round < fresh_rounds; round++)); do
+      # shellcheck disable=SC2046
+      earcut_firsts+=("$(first_in "$(run_line earcut "$input" "$timeout_s" $(js_command earcut "$input" 1 --no-check))")")
+      # shellcheck disable=SC2046
+      hullkit_firsts+=("$(first_in "$(run_line hullkit "$input" "$timeout_s" $(js_command hullkit "$input" 1 --no-check))")")
+    done
+    record js "$(with_median_first "$hullkit_js" "${hullkit_firsts[@]}")"
+    record js "$(with_median_first "$earcut_js" "${earcut_firsts[@]}")"
+  fi
 done
 rm -f "$out/last_stderr.log"
 
