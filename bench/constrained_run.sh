@@ -8,8 +8,9 @@
 #   2. writes the inputs to bench/out/constrained/ (bench/constrained_inputs.mjs): polygons with holes
 #      (lakes, building footprints, repeated vertices, a spiky star, a grid of holes) and a planar
 #      straight-line graph (1e6 points, 1e5 segments);
-#   3. runs every implementation x input, one process each, one after the other (never two at once:
-#      the machine has 2 cores), collecting JSON lines in bench/out/constrained/results.jsonl:
+#   3. runs every implementation x input, one process each (the targets' pairs in more, taking turns:
+#      HULLKIT_BENCH_FRESH_ROUNDS below), one after the other (never two at once: the machine has 2
+#      cores), collecting JSON lines in bench/out/constrained/results.jsonl:
 #        native  hullkit (triangulate_polygon / constrained_delaunay), cgal-cdt (CGAL's CDT + nesting
 #                levels); on the graph also hullkit with --threads 1 (kind native-1thread); on the
 #                polygons the quality meshes with CGAL's angle bound (B = 0.125, about 20.7 degrees):
