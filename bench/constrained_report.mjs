@@ -108,15 +108,15 @@ const meshRowsOf = (hullkitImpl, cgalImpl) => polygons.map((input) => {
     `${meshRan(h) ? h.triangles : '–'} | ${meshRan(c) ? c.triangles : '–'} | ${angle(h)} | ${angle(c)} | ${meshCheck(h)} |`;
 });
 const meshRows = meshRowsOf('hullkit-mesh', 'cgal-mesh');
-// How many fresh processes gave each mesh row's first call (bench/constrained_run.sh, FRESH_ROUNDS).
-const meshRounds = Math.max(1, ...results.filter((r) => r.kind_of_run === 'native' && /-(mesh|refine)$/.test(r.impl))
-  .map((r) => r.first_each?.length ?? 1));
+// How many fresh processes gave the first calls of these rows (bench/constrained_run.sh, FRESH_ROUNDS):
+// the mesh rows, and the JavaScript pair on the large polygons.
+const freshRounds = (rows) => Math.max(1, ...rows.map((r) => r.first_each?.length ?? 1));
+const meshRounds = freshRounds(results.filter((r) => r.kind_of_run === 'native' && /-(mesh|refine)$/.test(r.impl)));
+const jsRounds = freshRounds(results.filter((r) => r.kind_of_run === 'js'));
 const meshFirsts = meshRounds > 1
   ? `Times: hullkit and CGAL each in ${meshRounds} fresh processes, taking turns; the headline is the median of their first calls, the warm figure the median of the first process's later calls.`
   : 'Times: one fresh process each; the headline is its first call.';
 const refineRows = meshRowsOf('hullkit-refine', 'cgal-refine');
-// The same for the JavaScript pair on the large polygons.
-const jsRounds = Math.max(1, ...results.filter((r) => r.kind_of_run === 'js').map((r) => r.first_each?.length ?? 1));
 const refineRan = polygons.some((input) => find('native', 'hullkit-refine', input) || find('native', 'cgal-refine', input));
 const graphRows = graphs.map((input) => {
   const hullkit = find('native', 'hullkit', input);
@@ -180,9 +180,7 @@ function polygonTarget(label, set, aggregate) {
     ? `worst of ${usable.length} polygon(s) (${worst}); geometric mean ${ratioText(geomean(ratios))}`
     : `geometric mean over ${usable.length} polygon(s); summed times ${ratioText(sumH / sumE)}, worst ${ratioText(Math.max(...ratios))} (${worst})`;
   const skipped = pairs.length - usable.length;
-  // The large polygons' pair runs in several fresh processes (bench/constrained_run.sh, FRESH_ROUNDS).
-  const rounds = Math.max(1, ...usable.map(({ h }) => h.first_each?.length ?? 1));
-  const firsts = rounds > 1 ? `first calls after loading (on the polygons of 10⁴ vertices and more the medians of ${rounds} fresh processes each, taking turns)` : 'first calls after loading';
+  const firsts = jsRounds > 1 ? `first calls after loading (on the polygons of 10⁴ vertices and more the medians of ${jsRounds} fresh processes each, taking turns)` : 'first calls after loading';
   target(label, value, 0.5, `${how}, ${firsts}${skipped ? `; ${skipped} left out (no time from one side)` : ''}`, blockers);
 }
 polygonTarget(`wasm triangulatePolygon / earcut, every polygon ≥ 1e4 vertices`, large, 'worst');

@@ -224,11 +224,12 @@ first_in() {
   node -e 'const r = JSON.parse(process.argv[1]); if (!r.error && r.first != null) console.log(r.first)' "$1"
 }
 
-# js_command IMPL INPUT RUNS [ARGS...]: the command of one JavaScript process.
-js_command() {
+# js_line IMPL INPUT RUNS [ARGS...]: one JavaScript process (run_line's line).
+js_line() {
   local impl=$1 input=$2 runs=$3
   shift 3
-  echo node --expose-gc --max-old-space-size=8192 bench/constrained_js_bench.mjs --impl "$impl" --input "$out/$input.json" --runs "$runs" --budget 60 "$@"
+  run_line "$impl" "$input" "$timeout_s" node --expose-gc --max-old-space-size=8192 bench/constrained_js_bench.mjs \
+    --impl "$impl" --input "$out/$input.json" --runs "$runs" --budget 60 "$@"
 }
 
 # with_median_first LINE [FIRST...]: LINE with first_each (its own first call, then the FIRSTs) and,
@@ -294,8 +295,7 @@ for input in "${polygons[@]}" "${graphs[@]}"; do
   case $input in graph-*) paired=0 ;; *-1e4 | *-1e5) paired=1 ;; *) paired=0 ;; esac
   hullkit_js="" earcut_js=""
   for impl in "${impls[@]}"; do
-    # shellcheck disable=SC2046  # (js_command's words)
-    line=$(run_line "$impl" "$input" "$timeout_s" $(js_command "$impl" "$input" "$(runs_for "$input" js)"))
+    line=$(js_line "$impl" "$input" "$(runs_for "$input" js)")
     case "$paired:$impl" in
       1:hullkit) hullkit_js=$line ;;
       1:earcut) earcut_js=$line ;;
@@ -305,10 +305,8 @@ for input in "${polygons[@]}" "${graphs[@]}"; do
   if [ "$paired" = 1 ]; then
     hullkit_firsts=() earcut_firsts=()
     for ((round = 1; round < fresh_rounds; round++)); do
-      # shellcheck disable=SC2046
-      earcut_firsts+=("$(first_in "$(run_line earcut "$input" "$timeout_s" $(js_command earcut "$input" 1 --no-check))")")
-      # shellcheck disable=SC2046
-      hullkit_firsts+=("$(first_in "$(run_line hullkit "$input" "$timeout_s" $(js_command hullkit "$input" 1 --no-check))")")
+      earcut_firsts+=("$(first_in "$(js_line earcut "$input" 1 --no-check)")")
+      hullkit_firsts+=("$(first_in "$(js_line hullkit "$input" 1 --no-check)")")
     done
     record js "$(with_median_first "$hullkit_js" "${hullkit_firsts[@]}")"
     record js "$(with_median_first "$earcut_js" "${earcut_firsts[@]}")"
