@@ -69,3 +69,37 @@ TEST_CASE("resize_large and reserve_populated size vectors as resize and reserve
     CHECK(u.capacity() >= 40000);
     CHECK(u.empty());
 }
+
+TEST_CASE("huge pages: the environment decides when set, else the cost of a fresh page", "[large_array]") {
+    using hullkit::detail::huge_pages_rule;
+    using hullkit::detail::kCostlyFreshPage;
+    int measured = 0;
+    const auto costing = [&](double seconds) {
+        return [&measured, seconds] {
+            ++measured;
+            return seconds;
+        };
+    };
+    // Set: "0" is off, anything else on, and nothing is measured.
+    CHECK_FALSE(huge_pages_rule("0", costing(1.0)));
+    CHECK(huge_pages_rule("1", costing(0.0)));
+    CHECK(huge_pages_rule("yes", costing(0.0)));
+    CHECK(measured == 0);
+    // Unset: on from kCostlyFreshPage a page up, measured once.
+    CHECK(huge_pages_rule(nullptr, costing(10e-6)));
+    CHECK(huge_pages_rule(nullptr, costing(kCostlyFreshPage)));
+    CHECK_FALSE(huge_pages_rule(nullptr, costing(1.6e-6)));
+    CHECK_FALSE(huge_pages_rule(nullptr, costing(0.0)));  // where nothing is mapped by hand
+    CHECK(measured == 4);
+}
+
+TEST_CASE("huge pages: a fresh page's first touch is timed on Linux", "[large_array]") {
+    const double seconds = hullkit::detail::fresh_page_seconds();
+#if HULLKIT_HUGE_PAGES
+    // A fault takes some time, and far less than a millisecond on any machine this runs on.
+    CHECK(seconds > 0);
+    CHECK(seconds < 1e-3);
+#else
+    CHECK(seconds == 0);
+#endif
+}

@@ -1,14 +1,14 @@
 // Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers, the
-// 2D and 3D meshes and their outputs): mapped on their own, on transparent huge pages, and given
-// back to the system when freed (or, for std::vectors a caller gets back, advised onto huge pages
+// 2D and 3D meshes and their outputs): mapped on their own, on transparent huge pages where fresh
+// pages are costly, and given back to the system when freed (or, for std::vectors a caller gets back, advised onto huge pages
 // where they are reserved: reserve_large).
 //
 // Why mapped: freed arrays below glibc's (rising) mmap threshold stayed in the heap, so that a
 // process hulling 1e6 points on a sphere five times peaked 80 MB above one that did it once.
 //
-// Why huge pages: a first call touches every page of these arrays for the first time, and what a
-// fresh page costs depends on the machine far more than on the code. Three 2-core benchmark
-// machines so far (Linux, THP in "madvise" mode, virtual):
+// Why huge pages, and where: a first call touches every page of these arrays for the first time,
+// and what a fresh page costs depends on the machine far more than on the code. Four 2-core
+// benchmark machines so far (Linux, THP in "madvise" mode, virtual):
 // - the first: the first hull of 1e6 points on a sphere spent about half its time in page faults
 //   (2.3 s; 1.2 s with MADV_HUGEPAGE);
 // - the second (a host that took free 2 MiB blocks back): huge pages made every first call slower,
@@ -19,11 +19,17 @@
 //   3.53-3.64 s without (117 503 page faults down to 13 400, the same peak memory), on two threads
 //   1.51-1.94 s against 2.19-2.67 s, 1e6 uniform points triangulated in 2D on one thread
 //   0.74-0.77 s against 1.04-1.21 s, the hull of 1e6 points on a sphere 1.01-1.18 s against
-//   1.69-1.77 s (peak memory 7-17 MB higher); warm calls faster too (fewer TLB misses).
-// So they are on. HULLKIT_HUGE_PAGES=0 in the environment turns them off for a process (read once,
-// at the first large array), for machines like the second. On more than one thread the 3D mesh's
-// rows are mapped in advance on the threads (Prefault). Only the memory's placement changes, never
-// a value, so results stay bit-identical either way.
+//   1.69-1.77 s (peak memory 7-17 MB higher); warm calls faster too (fewer TLB misses);
+// - the fourth (7 Dec 2026, about 1.6 us a fresh 4 KiB page: 256 MiB in 0.10 s, on huge pages
+//   0.3-0.55 s; free 2 MiB blocks reported to the host, virtio-balloon): like the second, the 2D
+//   Delaunay triangulation of 1e6 uniform points took 0.70-0.86 s on huge pages against
+//   0.51-0.56 s without, the tetrahedralization on one thread 3.02-3.30 s against 2.71-2.93 s
+//   (each right after a CGAL run, as the benchmarks run them; warm calls alike).
+// So the process decides, at its first large array: it times the first touch of a few fresh
+// 4 KiB pages (fresh_page_seconds) and uses huge pages where one costs kCostlyFreshPage or more.
+// HULLKIT_HUGE_PAGES=0 or =1 in the environment decides instead (read once). On more than one
+// thread the 3D mesh's rows are mapped in advance on the threads (Prefault). Only the memory's
+// placement changes, never a value, so results stay bit-identical either way.
 //
 // How: arrays of at least kLargeArray bytes are mapped on their own (mmap), aligned to 2 MiB,
 // rounded up to whole 2 MiB pages (marked MADV_HUGEPAGE unless turned off) and unmapped when freed;
@@ -41,6 +47,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -69,13 +76,50 @@ namespace hullkit::detail {
 inline constexpr std::size_t kLargeArray = std::size_t{4} << 20;
 inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
-/// Whether large arrays are advised onto transparent huge pages (see the top of this file): yes,
-/// unless the environment has HULLKIT_HUGE_PAGES=0 (read once).
+/// A fresh 4 KiB page's first touch from this many seconds up makes huge pages worth their risk
+/// (see the top of this file): the machines that gained from them took about 10 us a page, the
+/// one where they cost 10-35 % about 1.6 us.
+inline constexpr double kCostlyFreshPage = 4e-6;
+
+/// What the first touch of a fresh 4 KiB page costs this process, in seconds: 32 pages mapped
+/// and touched one at a time, the median of their times (so that a page slowed by something else
+/// does not count). About 0.05-0.3 ms in all, spent once, at the first large array. 0 where large
+/// arrays are not mapped by hand.
+inline double fresh_page_seconds() {
+#if HULLKIT_HUGE_PAGES
+    constexpr std::size_t kPages = 32, kPage = 4096;
+    void* mapped = mmap(nullptr, kPages * kPage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (mapped == MAP_FAILED) return 0;
+    madvise(mapped, kPages * kPage, MADV_NOHUGEPAGE);
+    volatile char* bytes = static_cast<volatile char*>(mapped);
+    double seconds[kPages];
+    for (std::size_t k = 0; k < kPages; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        bytes[k * kPage] = 1;
+        seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    munmap(mapped, kPages * kPage);
+    std::nth_element(seconds, seconds + kPages / 2, seconds + kPages);
+    return seconds[kPages / 2];
+#else
+    return 0;
+#endif
+}
+
+/// The rule huge_pages() applies: HULLKIT_HUGE_PAGES=0 turns them off and any other value on;
+/// unset, they are on where a fresh 4 KiB page costs kCostlyFreshPage or more (the cost is only
+/// measured then: `fresh_page` is called at most once).
+template <class Measure>
+bool huge_pages_rule(const char* environment, Measure&& fresh_page) {
+    if (environment != nullptr) return std::string_view(environment) != "0";
+    return fresh_page() >= kCostlyFreshPage;
+}
+
+/// Whether large arrays are advised onto transparent huge pages (see the top of this file), decided
+/// once per process, at the first large array: huge_pages_rule on the environment's
+/// HULLKIT_HUGE_PAGES and fresh_page_seconds().
 inline bool huge_pages() {
-    static const bool on = [] {
-        const char* value = std::getenv("HULLKIT_HUGE_PAGES");
-        return value == nullptr || std::string_view(value) != "0";
-    }();
+    static const bool on = huge_pages_rule(std::getenv("HULLKIT_HUGE_PAGES"), fresh_page_seconds);
     return on;
 }
 
