@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -104,33 +103,35 @@ public:
         return true;
     }
 
-    /// Marks triangles inside the rings by the fill rule, from the ghosts (outside) inwards.
-    std::vector<std::uint8_t> inside(FillRule fill) const {
-        const std::size_t t_count = vertex_.size() / 3;
-        // 32-bit winding numbers, as each edge's (Record::wind): none exceeds the number of segments.
-        std::vector<std::int32_t> winding(t_count, std::numeric_limits<std::int32_t>::min());
+    /// Sets region_ to `id` on the triangles inside the rings by the fill rule, to 0 elsewhere
+    /// (ghosts, free slots). The winding numbers spread from the ghosts (outside: 0) across edges,
+    /// changed by the segments each edge carries, and are kept in region_ itself meanwhile (as
+    /// 32-bit two's complement, like each edge's Record::wind: none exceeds the number of segments,
+    /// so the lowest value is free to say "not reached yet").
+    void mark_inside(FillRule fill, std::uint32_t id) {
+        constexpr std::uint32_t kUnreached = 0x80000000u;
+        const std::uint32_t t_count = static_cast<std::uint32_t>(vertex_.size() / 3);
+        std::uint32_t* winding = region_.data();
         std::vector<std::uint32_t> stack;
         for (std::uint32_t t = 0; t < t_count; ++t) {
-            if (vertex_[3 * t] != kDead && is_ghost(t)) {
-                winding[t] = 0;
-                stack.push_back(t);
-            }
+            const std::uint32_t* v = &vertex_[3 * t];
+            const bool ghost = v[0] == kGhost || v[1] == kGhost || v[2] == kGhost;
+            winding[t] = ghost || v[0] == kDead ? 0 : kUnreached;
+            if (ghost) stack.push_back(t);
         }
+        const bool even_odd = fill == FillRule::EvenOdd;
         while (!stack.empty()) {
             const std::uint32_t t = stack.back();
             stack.pop_back();
+            const std::uint32_t own = winding[t];
             for (std::uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
                 const std::uint32_t u = twin_[e] / 3;
-                if (winding[u] != std::numeric_limits<std::int32_t>::min()) continue;
-                winding[u] = fill == FillRule::EvenOdd ? (winding[t] ^ static_cast<std::int32_t>(count(e) & 1)) : winding[t] - wind(e);
+                if (winding[u] != kUnreached) continue;
+                winding[u] = even_odd ? own ^ (count(e) & 1u) : own - static_cast<std::uint32_t>(wind(e));
                 stack.push_back(u);
             }
         }
-        std::vector<std::uint8_t> in(t_count, 0);
-        for (std::size_t t = 0; t < t_count; ++t)
-            in[t] = vertex_[3 * t] != kDead && !is_ghost(static_cast<std::uint32_t>(t)) && winding[t] != 0 &&
-                    winding[t] != std::numeric_limits<std::int32_t>::min();
-        return in;
+        for (std::uint32_t t = 0; t < t_count; ++t) winding[t] = winding[t] != 0 && winding[t] != kUnreached ? id : 0;
     }
 
     /// The last step: writes the domain's triangles (those with a region, see Refiner) and the
@@ -306,14 +307,20 @@ private:
     }
 
     /// The half-edge a -> b, or kGhost when a and b are not joined.
+    /// Searches round a both ways at once from out_[a] (two independent chains of loads, each
+    /// half as long as one round), until the two searches meet.
     std::uint32_t find_edge(std::uint32_t a, std::uint32_t b) const {
         const std::uint32_t first = out_[a];
-        std::uint32_t e = first;
-        do {
-            if (vertex_[next_edge(e)] == b) return e;
-            e = twin_[prev_edge(e)];
-        } while (e != first);
-        return kGhost;
+        if (vertex_[next_edge(first)] == b) return first;
+        std::uint32_t one = first, other = first;
+        for (;;) {
+            one = twin_[prev_edge(one)];  // the next half-edge out of a one way round
+            if (one == other) return kGhost;
+            if (vertex_[next_edge(one)] == b) return one;
+            other = next_edge(twin_[other]);  // and the other way
+            if (other == one) return kGhost;
+            if (vertex_[next_edge(other)] == b) return other;
+        }
     }
 
     /// True when vertex v lies on the segment a-b's ray beyond a (v collinear with a and b).

@@ -134,8 +134,7 @@ std::uint32_t Refiner::alive_triangle() const {
 }
 
 void Refiner::mark_polygon(FillRule fill) {
-    const std::vector<std::uint8_t> in = m_.inside(fill);
-    for (std::size_t t = 0; t < in.size(); ++t) m_.region_[t] = in[t] ? kDomain : 0;
+    m_.mark_inside(fill, kDomain);
 }
 
 void Refiner::mark_graph(bool exterior, const std::vector<double>& holes, const std::vector<double>& regions) {
