@@ -1,7 +1,7 @@
 // Working arrays of the size of the input (a hull's faces, the candidates' copy, sort buffers, the
 // 2D and 3D meshes and their outputs): mapped on their own, on transparent huge pages where fresh
-// pages are costly, and given back to the system when freed (or, for std::vectors a caller gets back, advised onto huge pages
-// where they are reserved: reserve_large).
+// pages are costly, and given back to the system when freed (or, for std::vectors a caller gets
+// back, advised onto huge pages where they are reserved: reserve_large).
 //
 // Why mapped: freed arrays below glibc's (rising) mmap threshold stayed in the heap, so that a
 // process hulling 1e6 points on a sphere five times peaked 80 MB above one that did it once.
