@@ -114,9 +114,8 @@ public:
         std::uint32_t* winding = region_.data();
         std::vector<std::uint32_t> stack;
         for (std::uint32_t t = 0; t < t_count; ++t) {
-            const std::uint32_t* v = &vertex_[3 * t];
-            const bool ghost = v[0] == kGhost || v[1] == kGhost || v[2] == kGhost;
-            winding[t] = ghost || v[0] == kDead ? 0 : kUnreached;
+            const bool ghost = is_ghost(t);
+            winding[t] = ghost || vertex_[3 * t] == kDead ? 0 : kUnreached;
             if (ghost) stack.push_back(t);
         }
         const bool even_odd = fill == FillRule::EvenOdd;
