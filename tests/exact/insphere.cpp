@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -53,7 +55,24 @@ struct Counts {
     int stage[4] = {0, 0, 0, 0};
 };
 
+/// The stage A value insphere_stage_a_det returns (packed on x86-64) has the bits of the scalar
+/// formula's, zeros' signs and NaNs included.
+void check_same_bits(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
+    const double got = hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
+    const double want = hullkit::detail::insphere_stage_a_det_scalar(a.data(), b.data(), c.data(), d.data(), e.data());
+    std::uint64_t got_bits = 0, want_bits = 0;
+    std::memcpy(&got_bits, &got, sizeof got);
+    std::memcpy(&want_bits, &want, sizeof want);
+    INFO("stage A " << got << " against the scalar formula's " << want);
+    if (std::isnan(want)) {
+        REQUIRE(std::isnan(got));
+    } else {
+        REQUIRE(got_bits == want_bits);
+    }
+}
+
 void check(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e, Counts* counts = nullptr) {
+    check_same_bits(a, b, c, d, e);
     int stage = -1;
     const int got = hullkit::detail::insphere_traced(a.data(), b.data(), c.data(), d.data(), e.data(), &stage);
     const int want = oracle_insphere(a, b, c, d, e);
@@ -226,4 +245,29 @@ TEST_CASE("compare_distance3d: agrees with rationals, ties included", "[exact]")
         }
         REQUIRE(hullkit::compare_distance3d(a.data(), b.data(), q.data()) == oracle(a, b, q));
     }
+}
+
+TEST_CASE("insphere: stage A evaluated two lanes at a time has the scalar formula's bits", "[exact]") {
+    // Values chosen to round in every product and sum, to cancel to +0 and -0, to underflow to
+    // subnormals and to overflow to infinity (beyond the predicates' range, where only the bits are
+    // compared), and permutations of the same points.
+    std::mt19937_64 rng(71);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double scales[] = {1.0, 0x1p-300, 0x1p-520, 0x1p+200, 0x1p+260, 3.0e-5};
+    for (const double scale : scales) {
+        for (int trial = 0; trial < 2000; ++trial) {
+            P3 p[5];
+            for (auto& q : p)
+                for (double& v : q) v = scale * unit(rng);
+            if (trial % 4 == 1) p[4] = p[trial % 3];                 // e on a corner: zero rows
+            if (trial % 4 == 2) p[1] = P3{-p[0][0], p[0][1], -0.0};  // signed zeros in differences
+            if (trial % 4 == 3)
+                for (auto& q : p) q[2] = p[0][2];  // coplanar: zero z column
+            check_same_bits(p[0], p[1], p[2], p[3], p[4]);
+            check_same_bits(p[3], p[1], p[0], p[2], p[4]);
+        }
+    }
+    const P3 zero{0.0, 0.0, 0.0}, negative_zero{-0.0, -0.0, -0.0}, big{1e300, -1e300, 1e300};
+    check_same_bits(zero, negative_zero, zero, negative_zero, zero);
+    check_same_bits(big, zero, negative_zero, P3{-1e300, 1e300, 0}, zero);  // infinities and NaN
 }

@@ -57,6 +57,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace hullkit {
 
@@ -375,14 +378,67 @@ inline T insphere_formula(const T* x) {
 }
 
 /// insphere's stage A value in floating point: insphere_formula on the rows relative to e.
-inline double insphere_stage_a_det(const double* a, const double* b, const double* c, const double* d,
-                                   const double* e) {
+inline double insphere_stage_a_det_scalar(const double* a, const double* b, const double* c, const double* d,
+                                          const double* e) {
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #endif
     const double x[12] = {a[0] - e[0], a[1] - e[1], a[2] - e[2], b[0] - e[0], b[1] - e[1], b[2] - e[2],
                           c[0] - e[0], c[1] - e[1], c[2] - e[2], d[0] - e[0], d[1] - e[1], d[2] - e[2]};
     return insphere_formula(x);
+}
+
+#if defined(__SSE2__)
+/// The same value two lanes at a time (SSE2, part of every x86-64): every lane performs, in the
+/// same order, exactly the roundings of insphere_formula (a - b is a + (-b) in IEEE arithmetic,
+/// and (-b) c = -(b c) exactly), so the result is the scalar one bit for bit; only the number of
+/// instructions changes (the 3D insertion runs this about 50 times a point).
+inline double insphere_stage_a_det_packed(const double* a, const double* b, const double* c, const double* d,
+                                          const double* e) {
+    const __m128d exy = _mm_loadu_pd(e), ez = _mm_set1_pd(e[2]);
+    const __m128d axy = _mm_sub_pd(_mm_loadu_pd(a), exy), bxy = _mm_sub_pd(_mm_loadu_pd(b), exy);
+    const __m128d cxy = _mm_sub_pd(_mm_loadu_pd(c), exy), dxy = _mm_sub_pd(_mm_loadu_pd(d), exy);
+    const __m128d z_ab = _mm_sub_pd(_mm_loadh_pd(_mm_load_sd(a + 2), b + 2), ez);  // (aez, bez)
+    const __m128d z_cd = _mm_sub_pd(_mm_loadh_pd(_mm_load_sd(c + 2), d + 2), ez);  // (cez, dez)
+    const __m128d x_ab = _mm_unpacklo_pd(axy, bxy), y_ab = _mm_unpackhi_pd(axy, bxy);
+    const __m128d x_cd = _mm_unpacklo_pd(cxy, dxy), y_cd = _mm_unpackhi_pd(cxy, dxy);
+    const __m128d x_ac = _mm_unpacklo_pd(x_ab, x_cd), x_bd = _mm_unpackhi_pd(x_ab, x_cd);
+    const __m128d y_ac = _mm_unpacklo_pd(y_ab, y_cd), y_bd = _mm_unpackhi_pd(y_ab, y_cd);
+    auto swap = [](__m128d v) { return _mm_shuffle_pd(v, v, 1); };
+    // The six 2x2 minors in pairs: (ab, cd), (bc, da), (ac, bd).
+    const __m128d ab_cd = _mm_sub_pd(_mm_mul_pd(x_ac, y_bd), _mm_mul_pd(x_bd, y_ac));
+    const __m128d bc_da = _mm_sub_pd(_mm_mul_pd(x_bd, swap(y_ac)), _mm_mul_pd(swap(x_ac), y_bd));
+    const __m128d ac_bd = _mm_sub_pd(_mm_mul_pd(x_ab, y_cd), _mm_mul_pd(x_cd, y_ab));
+    const __m128d ac_ac = _mm_unpacklo_pd(ac_bd, ac_bd), bd_bd = _mm_unpackhi_pd(ac_bd, ac_bd);
+    const __m128d negate_low = _mm_set_pd(0.0, -0.0);
+    const __m128d z_ac = _mm_unpacklo_pd(z_ab, z_cd), z_bd = _mm_unpackhi_pd(z_ab, z_cd);
+    // (abc, cda) = ((aez bc - bez ac) + cez ab, (cez da + dez ac) + aez cd).
+    const __m128d abc_cda = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(z_ac, bc_da), _mm_mul_pd(_mm_xor_pd(z_bd, negate_low), ac_ac)),
+        _mm_mul_pd(swap(z_ac), ab_cd));
+    // (bcd, dab) = ((bez cd - cez bd) + dez bc, (dez ab + aez bd) + bez da).
+    const __m128d bcd_dab = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(z_bd, swap(ab_cd)), _mm_mul_pd(_mm_xor_pd(swap(z_ac), negate_low), bd_bd)),
+        _mm_mul_pd(swap(z_bd), bc_da));
+    const __m128d lift_ab =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(x_ab, x_ab), _mm_mul_pd(y_ab, y_ab)), _mm_mul_pd(z_ab, z_ab));
+    const __m128d lift_cd =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(x_cd, x_cd), _mm_mul_pd(y_cd, y_cd)), _mm_mul_pd(z_cd, z_cd));
+    // (alift bcd - blift cda, clift dab - dlift abc), then the two added.
+    const __m128d halves = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(lift_ab, lift_cd), bcd_dab),
+                                      _mm_mul_pd(_mm_unpackhi_pd(lift_ab, lift_cd), swap(abc_cda)));
+    return _mm_cvtsd_f64(_mm_add_sd(halves, _mm_unpackhi_pd(halves, halves)));
+}
+#endif
+
+/// insphere's stage A value (the packed evaluation where there is one: the same bits).
+inline double insphere_stage_a_det(const double* a, const double* b, const double* c, const double* d,
+                                   const double* e) {
+#if defined(__SSE2__)
+    return insphere_stage_a_det_packed(a, b, c, d, e);
+#else
+    return insphere_stage_a_det_scalar(a, b, c, d, e);
+#endif
 }
 
 /// insphere's stage A: the value above and its permanent (the determinant's terms in absolute
