@@ -367,45 +367,56 @@ private:
     /// face reads the entry of its edge the other way round. No branch on the data: whether a vertex
     /// was met before goes either way at random, and mispredicted branches were most of the cost.
     void link_small(std::uint32_t* words, std::size_t count) {
+        // Every array through a local pointer: a byte stored may alias anything, and members would
+        // be loaded again after each one.
+        const Boundary* boundary = boundary_.data();
+        const std::uint32_t* slots = slots_.data();
+        std::uint8_t* vertex_id = shared_.vertex_id.data();
+        std::uint8_t* ghost_id = &ghost_id_;
+        std::uint32_t* numbered = numbered_.data();
+        std::uint8_t* local = local_.data();
         std::uint32_t vertices = 0;
-        std::size_t numbered = 0;
+        std::size_t listed = 0;
         for (std::size_t i = 0; i < count; ++i) {
             for (int j = 0; j < 3; ++j) {
-                const std::uint32_t v = boundary_[i].v[j];
-                std::uint8_t& id = v == kGhost ? ghost_id_ : shared_.vertex_id[v];
-                const std::uint32_t fresh = id == 0;
+                const std::uint32_t v = boundary[i].v[j];
+                std::uint8_t* id = v == kGhost ? ghost_id : vertex_id + v;
+                const std::uint32_t before = *id, fresh = before == 0;
                 vertices += fresh;
-                id = static_cast<std::uint8_t>(fresh ? vertices : id);
-                numbered_[numbered] = v;
-                numbered += fresh;
-                local_[3 * i + j] = static_cast<std::uint8_t>((id - 1) & (kSide - 1));
+                const std::uint32_t number = fresh ? vertices : before;
+                *id = static_cast<std::uint8_t>(number);
+                numbered[listed] = v;
+                listed += fresh;
+                local[3 * i + j] = static_cast<std::uint8_t>((number - 1) & (kSide - 1));
             }
         }
-        for (std::size_t k = 0; k < numbered; ++k) {
-            const std::uint32_t v = numbered_[k];
-            (v == kGhost ? ghost_id_ : shared_.vertex_id[v]) = 0;
+        for (std::size_t k = 0; k < listed; ++k) {
+            const std::uint32_t v = numbered[k];
+            *(v == kGhost ? ghost_id : vertex_id + v) = 0;
         }
         // A closed surface of triangles with V vertices has 2V - 4 of them.
         if (2 * std::size_t{vertices} != count + 4) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
         std::uint32_t* table = table_.data();
         for (std::size_t i = 0; i < count; ++i) {
-            const std::uint8_t* id = &local_[3 * i];
-            const std::uint32_t face = link_of(slots_[i], 0);
-            table[id[1] * kSide + id[2]] = face + 1;
-            table[id[2] * kSide + id[0]] = face + 2;
-            table[id[0] * kSide + id[1]] = face + 3;
+            const std::uint32_t id0 = local[3 * i], id1 = local[3 * i + 1], id2 = local[3 * i + 2];
+            const std::uint32_t face = link_of(slots[i], 0);
+            table[id1 * kSide + id2] = face + 1;
+            table[id2 * kSide + id0] = face + 2;
+            table[id0 * kSide + id1] = face + 3;
         }
         for (std::size_t i = 0; i < count; ++i) {
-            const std::uint8_t* id = &local_[3 * i];
-            const std::uint32_t face = link_of(slots_[i], 0);
-            words[face + 1] = table[id[2] * kSide + id[1]];
-            words[face + 2] = table[id[0] * kSide + id[2]];
-            words[face + 3] = table[id[1] * kSide + id[0]];
+            const std::uint32_t id0 = local[3 * i], id1 = local[3 * i + 1], id2 = local[3 * i + 2];
+            const std::uint32_t face = link_of(slots[i], 0);
+            const std::uint32_t across1 = table[id2 * kSide + id1], across2 = table[id0 * kSide + id2];
+            const std::uint32_t across3 = table[id1 * kSide + id0];
+            words[face + 1] = across1;
+            words[face + 2] = across2;
+            words[face + 3] = across3;
         }
         // Every face's neighbour names it back (an entry left from an earlier cavity would not).
         bool paired = true;
         for (std::size_t i = 0; i < count; ++i) {
-            const std::uint32_t face = link_of(slots_[i], 0);
+            const std::uint32_t face = link_of(slots[i], 0);
             for (std::uint32_t j = 1; j < 4; ++j) paired &= words[words[face + j]] == face + j;
         }
         if (!paired) throw std::logic_error("delaunay3: a cavity's boundary is not closed");
