@@ -55,21 +55,40 @@ struct Counts {
     int stage[4] = {0, 0, 0, 0};
 };
 
+double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e);
+bool has_avx2();
+
 /// The stage A value insphere_stage_a_det returns (packed on x86-64) has the bits of the scalar
 /// formula's, zeros' signs and NaNs included.
 void check_same_bits(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
-    const double got = hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
     const double want = hullkit::detail::insphere_stage_a_det_scalar(a.data(), b.data(), c.data(), d.data(), e.data());
-    std::uint64_t got_bits = 0, want_bits = 0;
-    std::memcpy(&got_bits, &got, sizeof got);
-    std::memcpy(&want_bits, &want, sizeof want);
-    INFO("stage A " << got << " against the scalar formula's " << want);
-    if (std::isnan(want)) {
-        REQUIRE(std::isnan(got));
-    } else {
-        REQUIRE(got_bits == want_bits);
-    }
+    auto same_bits = [&](double got) {
+        std::uint64_t got_bits = 0, want_bits = 0;
+        std::memcpy(&got_bits, &got, sizeof got);
+        std::memcpy(&want_bits, &want, sizeof want);
+        INFO("stage A " << got << " against the scalar formula's " << want);
+        if (std::isnan(want)) {
+            REQUIRE(std::isnan(got));
+        } else {
+            REQUIRE(got_bits == want_bits);
+        }
+    };
+    same_bits(hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data()));
+    if (has_avx2()) same_bits(stage_a_avx2(a, b, c, d, e));
 }
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+/// The same in AVX2's encoding (the 3D insertion's conflict tests run so where the processor has it).
+__attribute__((target("avx2"))) double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
+    return hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
+}
+bool has_avx2() { return __builtin_cpu_supports("avx2"); }
+#else
+double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
+    return hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
+}
+bool has_avx2() { return false; }
+#endif
 
 void check(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e, Counts* counts = nullptr) {
     check_same_bits(a, b, c, d, e);

@@ -246,7 +246,8 @@ private:
     /// Collects the cavity (marked kInCavity) from t0 and its boundary faces, each with the other
     /// corners of its new tetrahedron (after p) and the neighbour outside.
     /// False (marks undone) when the cavity reaches a tetrahedron this worker does not own.
-    bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
+    /// (Two versions, AVX2 and baseline: the in-sphere tests inline here are most of its work.)
+    HULLKIT_AVX2_CLONE bool grow_cavity(std::uint32_t t0, std::uint32_t p) {
         std::uint32_t* words = shared_.mesh.data();
         cavity_.clear();
         entered_.clear();
