@@ -3,10 +3,12 @@
 // delaunay3.hpp.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
 
 #include "delaunay3_internal.hpp"
 #include "hull/large_array.hpp"
@@ -408,31 +410,70 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
                 if (is_kept(t)) rewrite(words + kRow * t);
         });
     }
-    // Then, in one pass in slot order, the corners appended to the tetrahedra and the links moved
-    // down to the front of the mesh's own array (position(t) <= t: the front is read before it is
-    // written), which becomes the neighbours. The pages between the two fronts, read and not yet
-    // written, are given back as the pass goes, so the memory peaks no higher than the mesh.
+    // Then, in slot order, the corners appended to the tetrahedra and the links moved down to the
+    // front of the mesh's own array (position(t) <= t: the front is read before it is written),
+    // which becomes the neighbours. The pages between the two fronts, read and not yet written,
+    // are given back as the pass goes, so the memory peaks no higher than the mesh.
     std::vector<std::uint32_t>& tetrahedra = out.tetrahedra;
     detail::reserve_large(tetrahedra, 4 * std::size_t{finite});
+    constexpr std::size_t kReleaseEvery = std::size_t{1} << 20;  // words (4 MiB: whole huge pages)
+    // Corners appended to the tetrahedra (grown a chunk at a time: their pages are touched as they
+    // are filled).
+    std::size_t corners_front = 0;
+    auto append = [&](const std::uint32_t* corners) {
+        if (corners_front == tetrahedra.size())
+            tetrahedra.resize(std::min(4 * std::size_t{finite}, corners_front + kReleaseEvery));
+        std::copy(corners, corners + 4, tetrahedra.data() + corners_front);
+        corners_front += 4;
+    };
+    auto append_corners = [&](std::size_t from, std::size_t to) {
+        for (std::size_t t = from; t < to; ++t)
+            if (is_kept(t)) append(words + kRow * t);
+    };
+    // The links of the kept slots in [from, to) moved down, and the pages read behind them given
+    // back (with `corners`, each row rewritten and its corners appended first: all on one thread).
     std::size_t front = 0;     // words of neighbours written (4 per tetrahedron so far)
     std::size_t released = 0;  // the pages between the fronts are given back up to here
-    constexpr std::size_t kReleaseEvery = std::size_t{1} << 20;  // words (4 MiB: whole huge pages)
-    for (std::size_t t = 0; t < slots; ++t) {
-        if (is_kept(t)) {
-            std::uint32_t row[kRow];
-            std::copy(words + kRow * t, words + kRow * (t + 1), row);
-            if (!rewritten) rewrite(row);
-            // (Grown a chunk at a time: its pages are touched as they are filled.)
-            if (front == tetrahedra.size()) tetrahedra.resize(std::min(4 * std::size_t{finite}, front + kReleaseEvery));
-            std::copy(row, row + 4, tetrahedra.data() + front);
-            std::copy(row + 4, row + 8, words + front);
-            front += 4;
+    auto move_links = [&](std::size_t from, std::size_t to, bool corners) {
+        for (std::size_t t = from; t < to; ++t) {
+            if (is_kept(t)) {
+                std::uint32_t row[kRow];
+                std::copy(words + kRow * t, words + kRow * (t + 1), row);
+                if (corners) {
+                    rewrite(row);
+                    append(row);
+                }
+                std::copy(row + 4, row + kRow, words + front);
+                front += 4;
+            }
+            const std::size_t read = kRow * (t + 1), behind = std::max(front, released);
+            if (read >= behind + kReleaseEvery || t + 1 == slots) {
+                released = static_cast<std::size_t>(
+                    static_cast<std::uint32_t*>(detail::release_pages(words + behind, words + read)) - words);
+            }
         }
-        const std::size_t read = kRow * (t + 1), from = std::max(front, released);
-        if (read >= from + kReleaseEvery || t + 1 == slots) {
-            released = static_cast<std::size_t>(
-                static_cast<std::uint32_t*>(detail::release_pages(words + from, words + read)) - words);
-        }
+    };
+    if (!rewritten) {
+        move_links(0, slots, true);
+    } else {
+        // Two tasks at once: one appends the corners (the tetrahedra's fresh pages are mapped on
+        // its thread), the other moves the links behind it, never past the slots whose corners
+        // are appended (the rows it overwrites and the pages it gives back are read by then). The
+        // first never waits, so the two finish on one thread too, one after the other.
+        constexpr std::size_t kStep = std::size_t{1} << 14;  // slots
+        std::atomic<std::size_t> appended{0};
+        detail::parallel_for(threads, 2, [&](std::size_t task) {
+            for (std::size_t from = 0; from < slots; from += kStep) {
+                const std::size_t to = std::min(slots, from + kStep);
+                if (task == 0) {
+                    append_corners(from, to);
+                    appended.store(to, std::memory_order_release);
+                } else {
+                    while (appended.load(std::memory_order_acquire) < to) std::this_thread::yield();
+                    move_links(from, to, false);
+                }
+            }
+        });
     }
     mesh.words.resize(4 * std::size_t{finite});
     out.neighbors = std::move(mesh.words);
