@@ -458,19 +458,26 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     } else {
         // Two tasks at once: one appends the corners (the tetrahedra's fresh pages are mapped on
         // its thread), the other moves the links behind it, never past the slots whose corners
-        // are appended (the rows it overwrites and the pages it gives back are read by then). The
-        // first never waits, so the two finish on one thread too, one after the other.
-        constexpr std::size_t kStep = std::size_t{1} << 14;  // slots
-        std::atomic<std::size_t> appended{0};
+        // are appended (the rows it overwrites and the pages it gives back are read by then). Once
+        // the second has started, the first keeps at most kAhead slots ahead of it (the pages the
+        // first maps and the second has not given back yet: the memory's peak); before that it
+        // does not wait, so one thread also finishes both, one after the other.
+        constexpr std::size_t kStep = std::size_t{1} << 14, kAhead = 4 * kStep;  // slots
+        std::atomic<std::size_t> appended{0}, moved{0};
+        std::atomic<bool> moving{false};
         detail::parallel_for(threads, 2, [&](std::size_t task) {
+            if (task == 1) moving.store(true, std::memory_order_release);
             for (std::size_t from = 0; from < slots; from += kStep) {
                 const std::size_t to = std::min(slots, from + kStep);
                 if (task == 0) {
+                    while (moving.load(std::memory_order_acquire) && moved.load(std::memory_order_acquire) + kAhead < to)
+                        std::this_thread::yield();
                     append_corners(from, to);
                     appended.store(to, std::memory_order_release);
                 } else {
                     while (appended.load(std::memory_order_acquire) < to) std::this_thread::yield();
                     move_links(from, to, false);
+                    moved.store(to, std::memory_order_release);
                 }
             }
         });
