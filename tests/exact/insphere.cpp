@@ -55,8 +55,17 @@ struct Counts {
     int stage[4] = {0, 0, 0, 0};
 };
 
-double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e);
-bool has_avx2();
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define AVX2_ENCODED __attribute__((target("avx2")))
+bool has_avx2() { return __builtin_cpu_supports("avx2"); }
+#else
+#define AVX2_ENCODED
+bool has_avx2() { return false; }
+#endif
+/// Stage A in AVX2's encoding (the 3D insertion's conflict tests run so where the processor has it).
+AVX2_ENCODED double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
+    return hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
+}
 
 /// The stage A value insphere_stage_a_det returns (packed on x86-64) has the bits of the scalar
 /// formula's, zeros' signs and NaNs included.
@@ -76,19 +85,6 @@ void check_same_bits(const P3& a, const P3& b, const P3& c, const P3& d, const P
     same_bits(hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data()));
     if (has_avx2()) same_bits(stage_a_avx2(a, b, c, d, e));
 }
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-/// The same in AVX2's encoding (the 3D insertion's conflict tests run so where the processor has it).
-__attribute__((target("avx2"))) double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
-    return hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
-}
-bool has_avx2() { return __builtin_cpu_supports("avx2"); }
-#else
-double stage_a_avx2(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e) {
-    return hullkit::detail::insphere_stage_a_det(a.data(), b.data(), c.data(), d.data(), e.data());
-}
-bool has_avx2() { return false; }
-#endif
 
 void check(const P3& a, const P3& b, const P3& c, const P3& d, const P3& e, Counts* counts = nullptr) {
     check_same_bits(a, b, c, d, e);

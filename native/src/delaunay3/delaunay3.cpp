@@ -461,7 +461,8 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         // are appended (the rows it overwrites and the pages it gives back are read by then). Once
         // the second has started, the first keeps at most kAhead slots ahead of it (the pages the
         // first maps and the second has not given back yet: the memory's peak); before that it
-        // does not wait, so one thread also finishes both, one after the other.
+        // does not wait, so one thread also finishes both, one after the other. (Neither can
+        // throw and leave the other waiting: the tetrahedra's room is reserved whole above.)
         constexpr std::size_t kStep = std::size_t{1} << 14, kAhead = 4 * kStep;  // slots
         std::atomic<std::size_t> appended{0}, moved{0};
         std::atomic<bool> moving{false};

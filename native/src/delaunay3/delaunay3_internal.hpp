@@ -15,17 +15,10 @@
 // baseline, the one for the machine chosen when the library is loaded (GCC's and clang's
 // target_clones, an ifunc). Only the encoding changes (three-operand VEX forms, no register copies
 // for the packed insphere): no FMA (the build keeps -ffp-contract=off, and AVX2 does not include
-// FMA), so every value, and so every mesh, has the same bits on either. Not under ThreadSanitizer,
-// whose run time is not ready when ifunc resolvers run.
-#if defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-#define HULLKIT_NO_IFUNC 1
-#endif
-#endif
-#if defined(__SANITIZE_THREAD__)
-#define HULLKIT_NO_IFUNC 1
-#endif
-#if defined(__x86_64__) && defined(__ELF__) && (defined(__GNUC__) || defined(__clang__)) && !defined(HULLKIT_NO_IFUNC)
+// FMA), so every value, and so every mesh, has the same bits on either. Not in sanitizer builds
+// (ThreadSanitizer's run time is not ready when ifunc resolvers run).
+#include "hull/sanitizer_build.hpp"
+#if defined(__x86_64__) && defined(__ELF__) && (defined(__GNUC__) || defined(__clang__)) && !defined(HULLKIT_SANITIZED)
 #define HULLKIT_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
 #else
 #define HULLKIT_AVX2_CLONE
