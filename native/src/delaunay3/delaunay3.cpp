@@ -345,6 +345,33 @@ inline std::uint32_t ones(std::uint64_t v) {
     return static_cast<std::uint32_t>((v * 0x0101010101010101ull) >> 56);
 }
 
+/// Rewrites the kept rows among slots [from, to) where they are (kept[t / 64] has bit t % 64 set;
+/// before[b]: the kept slots before block b of 64): the corners as original indices in canonical
+/// order, the links as the neighbours' positions among the kept slots (-1 across the hull). Two
+/// versions on x86-64, as grow_cavity: the AVX2 one counts the bits with POPCNT (every AVX2
+/// machine has it; the baseline's is a library call).
+HULLKIT_AVX2_CLONE void rewrite_rows(std::uint32_t* words, std::size_t from, std::size_t to,
+                                     const std::uint32_t* original, const std::uint64_t* kept,
+                                     const std::uint32_t* before) {
+    using delaunay3_detail::kRow;
+    constexpr std::uint32_t kNone = 0xffffffffu;
+    auto position = [&](std::uint32_t t) -> std::uint32_t {
+        const std::uint64_t word = kept[t >> 6], bit = std::uint64_t{1} << (t & 63);
+        if (!(word & bit)) return kNone;
+        return before[t >> 6] + static_cast<std::uint32_t>(__builtin_popcountll(word & (bit - 1)));
+    };
+    for (std::size_t t = from; t < to; ++t) {
+        if (!((kept[t >> 6] >> (t & 63)) & 1u)) continue;
+        std::uint32_t* row = words + kRow * t;
+        const std::uint32_t orig[4] = {original[row[0]], original[row[1]], original[row[2]], original[row[3]]};
+        const std::uint32_t r = canonical_rotation(orig);
+        std::uint32_t n[4];
+        for (int j = 0; j < 4; ++j) n[j] = position(row[4 + ((r >> (2 * j)) & 3u)] >> 3);
+        for (int j = 0; j < 4; ++j) row[j] = orig[(r >> (2 * j)) & 3u];
+        std::copy(n, n + 4, row + 4);
+    }
+}
+
 /// Writes the tetrahedra into the mesh's own arrays and moves them into `out` (the output costs no
 /// second copy of the mesh): the finite tetrahedra in slot order (the insertion's order, the same
 /// for every thread count), each row rewritten as original indices in canonical corner order and
@@ -355,7 +382,6 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     std::uint32_t* words = mesh.data();
     const std::uint32_t* original = points.original.data();
     points.xyz = detail::LargeArray<double>();  // the coordinates are not needed any more: room for the rest
-    constexpr std::uint32_t kNone = 0xffffffffu;  // -1 as a neighbour
     // Each slot's new position, as a bit per slot (kept or not) and the count of kept slots before
     // each block of 64: 0.56 bytes a slot instead of 4, and small enough to stay in the caches for
     // the random lookups of the neighbours' positions.
@@ -382,32 +408,20 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
     for (const auto& list : faces) hull.insert(hull.end(), list.begin(), list.end());
     for (std::size_t b = 0; b < blocks; ++b) before[b + 1] = before[b] + ones(kept[b]);
     const std::uint32_t finite = before[blocks];
-    auto position = [&](std::uint32_t t) -> std::uint32_t {
-        const std::uint64_t word = kept[t >> 6], bit = std::uint64_t{1} << (t & 63);
-        if (!(word & bit)) return kNone;
-        return before[t >> 6] + ones(word & (bit - 1));
-    };
     std::sort(hull.begin(), hull.end());
     out.hull.reserve(3 * hull.size());
     for (const auto& f : hull) out.hull.insert(out.hull.end(), f.begin(), f.end());
     auto is_kept = [&](std::size_t t) { return (kept[t >> 6] >> (t & 63)) & 1u; };
-    // A kept row rewritten: its corners as original indices in canonical order, its links as the
-    // neighbours' positions.
-    auto rewrite = [&](std::uint32_t* row) {
-        const std::uint32_t orig[4] = {original[row[0]], original[row[1]], original[row[2]], original[row[3]]};
-        const std::uint32_t r = canonical_rotation(orig);
-        std::uint32_t n[4];
-        for (int j = 0; j < 4; ++j) n[j] = position(row[4 + ((r >> (2 * j)) & 3u)] >> 3);  // kNone (-1) across the hull
-        for (int j = 0; j < 4; ++j) row[j] = orig[(r >> (2 * j)) & 3u];
-        std::copy(n, n + 4, row + 4);
+    auto rewrite = [&](std::size_t from, std::size_t to) {
+        rewrite_rows(words, from, to, original, kept.data(), before.data());
     };
-    // On more threads, first each kept row rewritten where it is (a row reads only itself and the
-    // shared positions); on one, in the pass below.
+    // On more threads, first every kept row rewritten where it is (a row reads only itself and the
+    // shared positions); on one, a step at a time in the pass below.
+    constexpr std::size_t kStep = std::size_t{1} << 14;  // slots
     const bool rewritten = detail::resolve_threads(threads) > 1;
     if (rewritten) {
         detail::parallel_for(threads, chunks, [&](std::size_t block) {
-            for (std::size_t t = block * kRows; t < std::min(slots, (block + 1) * kRows); ++t)
-                if (is_kept(t)) rewrite(words + kRow * t);
+            rewrite(block * kRows, std::min(slots, (block + 1) * kRows));
         });
     }
     // Then, in slot order, the corners appended to the tetrahedra and the links moved down to the
@@ -439,10 +453,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
             if (is_kept(t)) {
                 std::uint32_t row[kRow];
                 std::copy(words + kRow * t, words + kRow * (t + 1), row);
-                if (corners) {
-                    rewrite(row);
-                    append(row);
-                }
+                if (corners) append(row);
                 std::copy(row + 4, row + kRow, words + front);
                 front += 4;
             }
@@ -454,7 +465,11 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         }
     };
     if (!rewritten) {
-        move_links(0, slots, true);
+        for (std::size_t from = 0; from < slots; from += kStep) {
+            const std::size_t to = std::min(slots, from + kStep);
+            rewrite(from, to);
+            move_links(from, to, true);
+        }
     } else {
         // Two tasks at once: one appends the corners (the tetrahedra's fresh pages are mapped on
         // its thread), the other moves the links behind it, never past the slots whose corners
@@ -463,7 +478,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         // first maps and the second has not given back yet: the memory's peak); before that it
         // does not wait, so one thread also finishes both, one after the other. (Neither can
         // throw and leave the other waiting: the tetrahedra's room is reserved whole above.)
-        constexpr std::size_t kStep = std::size_t{1} << 14, kAhead = 4 * kStep;  // slots
+        constexpr std::size_t kAhead = 4 * kStep;  // slots
         std::atomic<std::size_t> appended{0}, moved{0};
         std::atomic<bool> moving{false};
         detail::parallel_for(threads, 2, [&](std::size_t task) {

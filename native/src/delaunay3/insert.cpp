@@ -276,16 +276,17 @@ private:
                 const std::uint32_t across = next[k];
                 const std::uint32_t u = across >> 3;
                 // A neighbour of an owned tetrahedron is owned by this worker or by none, and only
-                // its owner ever marks it: its mark can be read before its ownership is known.
+                // its owner ever marks it: its mark can be read before its ownership is known, and
+                // its conflict tested (reading only its row and points). Its ownership matters only
+                // in conflict (most neighbours are not): one owned by no partition is never marked
+                // (another partition may look at it) and would have to change, so p waits for a
+                // later pass.
                 if (words[kRow * u] & kInCavity) continue;
-                if (restricted_ && !owns(u)) {
-                    // Owned by no partition: never marked (another partition may look at it); in
-                    // conflict it would have to change, so p waits for a later pass.
-                    if (shared_.predicates.conflict(words + kRow * u, p)) {
+                if (shared_.predicates.conflict(words + kRow * u, p)) {
+                    if (restricted_ && !owns(u)) {
                         unmark();
                         return false;
                     }
-                } else if (shared_.predicates.conflict(words + kRow * u, p)) {
                     words[kRow * u] |= kInCavity;
                     cavity_.push_back(u);
                     entered_.push_back(static_cast<std::uint8_t>(across & 3u));
