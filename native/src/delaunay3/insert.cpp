@@ -52,6 +52,9 @@ constexpr int kOtherThree[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 /// All four, in increasing order (the faces the cavity's first tetrahedron grows across).
 constexpr int kAllFour[4] = {0, 1, 2, 3};
 
+/// The lowest bit set in a nonzero 4-bit number.
+constexpr std::uint8_t kLowestBit[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+
 /// kFaceCorners for a ghost (the vertex at infinity is corner 3): the same faces, rotated so that
 /// corner 3 comes last (a rotation keeps the orientation).
 constexpr int kGhostFaceCorners[4][3] = {{1, 2, 3}, {2, 0, 3}, {0, 1, 3}, {0, 2, 1}};
@@ -181,34 +184,50 @@ public:
         std::uint32_t entered = 4;  // the face we came in by
         for (;;) {
             const std::uint32_t* c = words + kRow * t;
-            // The corners relative to p, once: the orientation with corner k replaced by p is then
-            // the determinant of the other three, signed (k = 0: +[1 2 3], 1: -[0 2 3], 2: +[0 1 3],
-            // 3: -[0 1 2]), with orient3d's static bound (the same roundings as its filter).
-            double d[4][3];
+            // The orientation with corner k replaced by p, for all four k at once and without a
+            // branch (which face the walk leaves by is a coin toss: branches on it were
+            // mispredicted half the time): the determinant of the other three corners relative to
+            // p, signed (k = 0: +[1 2 3], 1: -[0 2 3], 2: +[0 1 3], 3: -[0 1 2]), each expanded by
+            // its z column from the six 2x2 minors of the x, y columns, which the four share.
+            // Every face decided by orient3d's static bound (a determinant of three differences
+            // of the points, whatever its order of expansion) has the exact sign, so the walk
+            // takes the same faces as one evaluation by one.
+            double x[4], y[4], z[4];
             for (int i = 0; i < 4; ++i) {
                 const double* v = predicates.p(c[i]);
-                d[i][0] = v[0] - q[0], d[i][1] = v[1] - q[1], d[i][2] = v[2] - q[2];
+                x[i] = v[0] - q[0], y[i] = v[1] - q[1], z[i] = v[2] - q[2];
             }
+            const double m01 = x[0] * y[1] - x[1] * y[0], m02 = x[0] * y[2] - x[2] * y[0];
+            const double m03 = x[0] * y[3] - x[3] * y[0], m12 = x[1] * y[2] - x[2] * y[1];
+            const double m13 = x[1] * y[3] - x[3] * y[1], m23 = x[2] * y[3] - x[3] * y[2];
+            const double det[4] = {(z[1] * m23 - z[2] * m13) + z[3] * m12, -((z[0] * m23 - z[2] * m03) + z[3] * m02),
+                                   (z[0] * m13 - z[1] * m03) + z[3] * m01, -((z[0] * m12 - z[1] * m02) + z[2] * m01)};
+            // Faces beyond which p lies for certain, and faces the bound cannot decide (none when
+            // the values are exact: 0 is not beyond); never back across the face we came in by.
+            const std::uint32_t open = 15u & ~(1u << entered);
+            std::uint32_t beyond = 0, unsure = 0;
+            for (std::uint32_t k = 0; k < 4; ++k) {
+                beyond |= static_cast<std::uint32_t>(det[k] < -bound) << k;
+                unsure |= static_cast<std::uint32_t>(!(det[k] < -bound) & !(det[k] > bound)) << k;
+            }
+            beyond &= open;
+            unsure &= exact_in_doubles ? 0u : open;
+            // The first face beyond, in the order first, first + 1, ... (mod 4).
             const std::uint32_t first = next_random() & 3u;
             std::uint32_t exit = 4;
-            for (std::uint32_t i = 0; i < 4; ++i) {
-                const std::uint32_t k = (first + i) & 3u;
-                if (k == entered) continue;
-                const double* a = d[kOtherThree[k][0]];
-                const double* b = d[kOtherThree[k][1]];
-                const double* e = d[kOtherThree[k][2]];
-                double det = a[0] * (b[1] * e[2] - b[2] * e[1]) + a[1] * (b[2] * e[0] - b[0] * e[2]) +
-                             a[2] * (b[0] * e[1] - b[1] * e[0]);
-                if (k & 1u) det = -det;
-                bool beyond = det < -bound;
-                if (!beyond && !(det > bound) && !exact_in_doubles) {  // (exact: 0 is not beyond)
-                    std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
-                    w[k] = p;
-                    beyond = orient3d(predicates.p(w[0]), predicates.p(w[1]), predicates.p(w[2]), predicates.p(w[3])) < 0;
-                }
-                if (beyond) {
-                    exit = k;
-                    break;
+            if (unsure == 0) {
+                const std::uint32_t rotated = ((beyond | beyond << 4) >> first) & 15u;
+                if (rotated != 0) exit = (first + kLowestBit[rotated]) & 3u;
+            } else {
+                for (std::uint32_t i = 0; i < 4 && exit == 4; ++i) {
+                    const std::uint32_t k = (first + i) & 3u;
+                    bool out = (beyond >> k) & 1u;
+                    if (!out && ((unsure >> k) & 1u)) {
+                        std::uint32_t w[4] = {c[0], c[1], c[2], c[3]};
+                        w[k] = p;
+                        out = orient3d(predicates.p(w[0]), predicates.p(w[1]), predicates.p(w[2]), predicates.p(w[3])) < 0;
+                    }
+                    if (out) exit = k;
                 }
             }
             if (exit == 4) return t;
