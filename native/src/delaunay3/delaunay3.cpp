@@ -444,17 +444,14 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         for (std::size_t t = from; t < to; ++t)
             if (is_kept(t)) append(words + kRow * t);
     };
-    // The links of the kept slots in [from, to) moved down, and the pages read behind them given
-    // back (with `corners`, each row rewritten and its corners appended first: all on one thread).
+    // The links of the kept slots in [from, to) moved down (after their corners are appended), and
+    // the pages read behind them given back. (The front is at most 4 t, before row t's links.)
     std::size_t front = 0;     // words of neighbours written (4 per tetrahedron so far)
     std::size_t released = 0;  // the pages between the fronts are given back up to here
-    auto move_links = [&](std::size_t from, std::size_t to, bool corners) {
+    auto move_links = [&](std::size_t from, std::size_t to) {
         for (std::size_t t = from; t < to; ++t) {
             if (is_kept(t)) {
-                std::uint32_t row[kRow];
-                std::copy(words + kRow * t, words + kRow * (t + 1), row);
-                if (corners) append(row);
-                std::copy(row + 4, row + kRow, words + front);
+                std::copy(words + kRow * t + 4, words + kRow * (t + 1), words + front);
                 front += 4;
             }
             const std::size_t read = kRow * (t + 1), behind = std::max(front, released);
@@ -468,7 +465,8 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
         for (std::size_t from = 0; from < slots; from += kStep) {
             const std::size_t to = std::min(slots, from + kStep);
             rewrite(from, to);
-            move_links(from, to, true);
+            append_corners(from, to);
+            move_links(from, to);
         }
     } else {
         // Two tasks at once: one appends the corners (the tetrahedra's fresh pages are mapped on
@@ -492,7 +490,7 @@ void write_tetrahedra(Mesh& mesh, Points& points, unsigned threads, Delaunay3& o
                     appended.store(to, std::memory_order_release);
                 } else {
                     while (appended.load(std::memory_order_acquire) < to) std::this_thread::yield();
-                    move_links(from, to, false);
+                    move_links(from, to);
                     moved.store(to, std::memory_order_release);
                 }
             }
